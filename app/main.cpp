@@ -1,1 +1,99 @@
-int main() { return 0; }
+// grainbridge: the command-line front end. Argument parsing (CLI11) and dispatch only; every
+// piece of behaviour lives in the modules. Exit codes: 0 success, 1 a stage failed or was
+// interrupted, 2 usage or config error.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "workflows/commands/Commands.hpp"
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/json/Diagnostics.hpp"
+#include "core/parallel/Communicator.hpp"
+
+namespace gb = grainbridge;
+
+int main(int argc, char** argv) {
+  gb::core::parallel::initialize(&argc, &argv);
+  const int rank = gb::core::parallel::worldRank();
+
+  CLI::App app{"grainbridge: multiscale workflows for granular and gas-solid flows (DEM -> closures -> continuum)"};
+  app.require_subcommand(1);
+  bool verbose = false;
+  bool quiet = false;
+  app.add_flag("-v,--verbose", verbose, "more log output (debug level)");
+  app.add_flag("-q,--quiet", quiet, "warnings and errors only");
+  gb::workflows::commands::CommandOptions opt;
+
+  auto* run = app.add_subcommand("run", "run a workflow: every stage instance not already done (under mpirun, spread over ranks)");
+  run->add_option("config", opt.config, "workflow config (JSON)")->required();
+  run->add_flag("--force", opt.force, "rerun stage instances even when a valid cached result exists");
+  run->add_flag("--keep-going", opt.keepGoing, "after a failure, still run every instance that does not depend on it");
+  run->add_option("--workdir", opt.workDir, "folder holding results/ (default: current folder)");
+
+  auto* status = app.add_subcommand("status", "show which stage instances are done, running, failed or pending");
+  status->add_option("config", opt.config, "workflow config (JSON)")->required();
+  status->add_option("--why", opt.why, "explain what changed since STAGE last ran");
+  status->add_option("--workdir", opt.workDir, "folder holding results/ (default: current folder)");
+
+  auto* check = app.add_subcommand("check", "validate a workflow config without running anything");
+  check->add_option("config", opt.config, "workflow config (JSON)")->required();
+
+  auto* stages = app.add_subcommand("stages", "list stage types and their parameters");
+  stages->add_flag("--markdown", opt.markdown, "print the reference as Markdown (docs/stages.md)");
+
+  auto* report = app.add_subcommand("report", "write the HTML report of a workflow's completed stages");
+  report->add_option("config", opt.config, "workflow config (JSON)")->required();
+  report->add_option("--workdir", opt.workDir, "folder holding results/ (default: current folder)");
+
+  auto* dbCmd = app.add_subcommand("db", "inspect the database (runs, provenance, integrity)");
+  dbCmd->require_subcommand(1);
+  auto addDbSource = [&opt](CLI::App* c) {
+    c->add_option("--db", opt.database, "database file");
+    c->add_option("--config", opt.config, "workflow config whose database to use");
+    c->add_option("--workdir", opt.workDir, "folder holding results/ (default: current folder)");
+  };
+  auto* dbRuns = dbCmd->add_subcommand("runs", "list stage runs");
+  addDbSource(dbRuns);
+  dbRuns->add_option("--workflow", opt.workflowFilter, "only runs of this workflow");
+  dbRuns->add_option("--format", opt.format, "table | csv | json")->check(CLI::IsMember({"table", "csv", "json"}));
+  auto* dbShow = dbCmd->add_subcommand("show", "the full provenance of one run: config, parameters, code, artifacts, upstream runs");
+  addDbSource(dbShow);
+  dbShow->add_option("run", opt.runId, "run id (from db runs)")->required();
+  auto* dbIntegrity = dbCmd->add_subcommand("integrity", "run SQLite's integrity check");
+  addDbSource(dbIntegrity);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help or the usage error
+    gb::core::parallel::finalize();
+    return code == 0 ? 0 : 2;
+  }
+  gb::core::initLogging(quiet ? gb::core::Verbosity::Quiet : verbose ? gb::core::Verbosity::Verbose : gb::core::Verbosity::Normal, rank);
+
+  int code = 0;
+  try {
+    if (*run) code = gb::workflows::commands::commandRun(opt);
+    else if (rank != 0) code = 0;  // only `run` uses worker ranks
+    else if (*status) code = gb::workflows::commands::commandStatus(opt);
+    else if (*check) code = gb::workflows::commands::commandCheck(opt);
+    else if (*stages) code = gb::workflows::commands::commandStages(opt);
+    else if (*report) code = gb::workflows::commands::commandReport(opt);
+    else if (*dbRuns) code = gb::workflows::commands::commandDbRuns(opt);
+    else if (*dbShow) code = gb::workflows::commands::commandDbShow(opt);
+    else if (*dbIntegrity) code = gb::workflows::commands::commandDbIntegrity(opt);
+  } catch (const gb::core::json::InputError& e) {
+    if (rank == 0) std::fprintf(stderr, "%s\n", e.what());
+    code = 2;
+  } catch (const gb::workflows::commands::UsageError& e) {
+    if (rank == 0) std::fprintf(stderr, "grainbridge: %s\n", e.what());
+    code = 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "grainbridge: error: %s\n", e.what());
+    code = 1;
+  }
+  gb::core::parallel::finalize();
+  return code;
+}

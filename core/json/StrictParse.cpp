@@ -69,7 +69,11 @@ public:
     std::string msg = ex.what();
     const auto pos = msg.find("] ");
     if (pos != std::string::npos) msg = msg.substr(pos + 2);
-    diagnostics_.add(locationOf(msg), msg);
+    const std::string where = locationOf(msg);
+    // "parse error at line 4, column 36: syntax error ..." -> the location goes in `where`.
+    const auto colon = msg.find(": ");
+    if (!where.empty() && colon != std::string::npos) msg = msg.substr(colon + 2);
+    diagnostics_.add(where, msg);
     syntaxError_ = true;
     return false;
   }

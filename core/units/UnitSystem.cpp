@@ -26,4 +26,10 @@ nlohmann::json UnitSystem::toJson() const {
   return {{"system", "reduced"}, {"d0", d0_}, {"m0", m0_}, {"t0", t0_}};
 }
 
+UnitSystem UnitSystem::fromJson(const nlohmann::json& j) {
+  if (j.at("system") == "SI") return si();
+  const double t0 = j.at("t0").get<double>();
+  return reduced(j.at("d0").get<double>(), j.at("m0").get<double>(), j.at("d0").get<double>() / (t0 * t0));
+}
+
 }  // namespace grainbridge::core::units

@@ -21,6 +21,8 @@ public:
   [[nodiscard]] double m0() const { return m0_; }
   [[nodiscard]] double t0() const { return t0_; }
   [[nodiscard]] nlohmann::json toJson() const;
+  // Inverse of toJson (used to hand a stage's unit system to an MPI worker).
+  static UnitSystem fromJson(const nlohmann::json& j);
 
 private:
   bool reduced_ = false;

@@ -1,0 +1,128 @@
+#include "core/io/FieldFrameWriter.hpp"
+
+#include <sstream>
+#include <string>
+
+#include "core/Error.hpp"
+#include "core/Files.hpp"
+#include "core/io/FrameFiles.hpp"
+#include "core/io/H5OutputFile.hpp"
+#include "core/io/XdmfText.hpp"
+
+namespace grainbridge::core::io {
+
+FieldFrameWriter::FieldFrameWriter(std::filesystem::path directory, ArtifactStamp stamp, int deflateLevel)
+    : directory_(std::move(directory)), stamp_(std::move(stamp)), deflateLevel_(deflateLevel) {
+  std::error_code ec;
+  std::filesystem::create_directories(directory_ / "frames", ec);
+  if (ec) throw Error("cannot create output folder '" + (directory_ / "frames").string() + "': " + ec.message());
+  removeStaleFrameTemporaries(directory_, "fields");
+  for (const auto& path : listFieldFrames(directory_)) {
+    try {
+      FieldFrameSummary s = readFieldFrameSummary(path);
+      frames_[s.step] = std::move(s);
+    } catch (const Error& e) {
+      throw e.withContext("while rescanning the frames of a restarted run");
+    }
+  }
+  if (!frames_.empty()) writeXdmf();
+}
+
+std::filesystem::path FieldFrameWriter::write(const data::FieldFrame& frame) {
+  frame.validate();
+  if (frame.step < 0) throw Error("field frame step " + std::to_string(frame.step) + " is negative");
+  const std::filesystem::path path = directory_ / "frames" / frameFileName("fields", frame.step);
+  const std::filesystem::path temporary = path.string() + ".tmp";
+  try {
+    writeFile(temporary, frame);
+    publishFile(temporary, path);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(temporary, ec);
+    throw;
+  }
+  FieldFrameSummary s{path, frame.step, frame.time, frame.grid, {}};
+  for (const auto& phase : frame.solids) s.solidsPhases.push_back(phase.name);
+  frames_[frame.step] = std::move(s);
+  writeXdmf();
+  return path;
+}
+
+void FieldFrameWriter::writeFile(const std::filesystem::path& path, const data::FieldFrame& frame) const {
+  const data::GridGeometry& g = frame.grid;
+  const std::vector<hsize_t> scalar{static_cast<hsize_t>(g.cells[2]), static_cast<hsize_t>(g.cells[1]),
+                                    static_cast<hsize_t>(g.cells[0])};
+  const std::vector<hsize_t> vector{scalar[0], scalar[1], scalar[2], 3};
+
+  H5OutputFile f(path, deflateLevel_);
+  writeFrameAttributes(f, stamp_, kFieldFormatVersion, frame.time, frame.step, frame.units);
+  f.createGroup("/grid");
+  f.writeAttribute("/grid", "origin", std::array<double, 3>{g.origin.x(), g.origin.y(), g.origin.z()});
+  f.writeAttribute("/grid", "spacing", std::array<double, 3>{g.spacing.x(), g.spacing.y(), g.spacing.z()});
+  f.writeAttribute("/grid", "cells", std::array<std::int32_t, 3>{g.cells[0], g.cells[1], g.cells[2]});
+  f.writeDataset("/ep_g", std::span<const double>(frame.ep_g), scalar);
+  f.writeDataset("/p_g", std::span<const double>(frame.p_g), scalar);
+  f.writeDataset("/u_g", flatView(frame.u_g), vector);
+  f.createGroup("/solids");
+  for (std::size_t k = 0; k < frame.solids.size(); ++k) {
+    const data::SolidsPhaseFields& phase = frame.solids[k];
+    const std::string group = "/solids/" + phase.name;
+    f.createGroup(group);
+    // HDF5 lists members by name; the index keeps the engine's phase order.
+    f.writeAttribute(group, "index", static_cast<std::int32_t>(k));
+    f.writeDataset(group + "/ep_s", std::span<const double>(phase.ep_s), scalar);
+    f.writeDataset(group + "/u_s", flatView(phase.u_s), vector);
+    f.writeDataset(group + "/theta", std::span<const double>(phase.theta), scalar);
+  }
+  f.close();
+}
+
+void FieldFrameWriter::writeXdmf() const {
+  // 3DCoRectMesh takes NODE counts and origin / spacing all ordered z y x; the cell arrays
+  // are [nz][ny][nx], so Center="Cell" attributes map onto the mesh without reordering.
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" ?>\n"
+       "<Xdmf Version=\"2.0\">\n"
+       " <Domain>\n"
+       "  <Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const auto& [step, s] : frames_) {
+    const data::GridGeometry& g = s.grid;
+    const std::string file = "frames/" + s.file.filename().string() + ":";
+    const std::string cells =
+        std::to_string(g.cells[2]) + " " + std::to_string(g.cells[1]) + " " + std::to_string(g.cells[0]);
+    const std::string nodes =
+        std::to_string(g.cells[2] + 1) + " " + std::to_string(g.cells[1] + 1) + " " + std::to_string(g.cells[0] + 1);
+    const auto zyx = [](const Vec3& v) { return formatReal(v.z()) + " " + formatReal(v.y()) + " " + formatReal(v.x()); };
+    const auto scalar = [&](const std::string& name, const std::string& dataset) {
+      return xdmfAttribute(name, "Scalar", "Cell", xdmfHdfItem(cells, "Float", 8, file + dataset));
+    };
+    const auto vector = [&](const std::string& name, const std::string& dataset) {
+      return xdmfAttribute(name, "Vector", "Cell", xdmfHdfItem(cells + " 3", "Float", 8, file + dataset));
+    };
+    x << "   <Grid Name=\"step_" << step << "\" GridType=\"Uniform\">\n"
+      << "    <Time Value=\"" << formatReal(s.time) << "\"/>\n"
+      << "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
+      << "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+      << "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << zyx(g.origin)
+      << "</DataItem>\n"
+      << "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << zyx(g.spacing)
+      << "</DataItem>\n"
+      << "    </Geometry>\n"
+      << "    " << scalar("ep_g", "/ep_g") << "\n"
+      << "    " << scalar("p_g", "/p_g") << "\n"
+      << "    " << vector("u_g", "/u_g") << "\n";
+    for (const std::string& phase : s.solidsPhases) {
+      // Phase names are plain identifiers (FieldFrame::validate), safe in XML and HDF5.
+      x << "    " << scalar("ep_s_" + phase, "/solids/" + phase + "/ep_s") << "\n"
+        << "    " << vector("u_s_" + phase, "/solids/" + phase + "/u_s") << "\n"
+        << "    " << scalar("theta_" + phase, "/solids/" + phase + "/theta") << "\n";
+    }
+    x << "   </Grid>\n";
+  }
+  x << "  </Grid>\n"
+       " </Domain>\n"
+       "</Xdmf>\n";
+  writeFileAtomically(xdmfPath(), x.str());
+}
+
+}  // namespace grainbridge::core::io

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# One command from a fresh Debian 12 machine to the quickstart workflow's report: installs
+# missing packages, builds grainbridge (release), runs configs/quickstart.json.
+# Idempotent: a second call rebuilds nothing and finds the workflow cached.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/install-deps.sh
+if [[ ! -f build-release/CMakeCache.txt ]]; then
+  cmake --preset release >/dev/null
+fi
+cmake --build build-release -j"$(nproc)" --target grainbridge
+
+status=0
+build-release/bin/grainbridge run configs/quickstart.json || status=$?
+report=$(build-release/bin/grainbridge report configs/quickstart.json)
+echo
+echo "Report:   $report"
+echo "Database: results/quickstart/grainbridge.sqlite   (sqlite3 results/quickstart/grainbridge.sqlite '.tables')"
+echo "Frames:   results/quickstart/gas/*/particles.xmf   (open in ParaView)"
+exit $status

@@ -1,0 +1,76 @@
+#pragma once
+// Helpers for tests that drive the grainbridge binary the way a user does: run a command line,
+// capture its output and exit status, work in a fresh temporary folder.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace grainbridge::testing {
+
+struct CommandResult {
+  int exitCode = -1;  // exit status, or 128 + signal number if killed by a signal
+  std::string output; // stdout and stderr interleaved
+};
+
+inline CommandResult runCommand(const std::string& command) {
+  CommandResult r;
+  FILE* p = ::popen((command + " 2>&1").c_str(), "r");
+  if (p == nullptr) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+  const int status = ::pclose(p);
+  // popen runs /bin/sh -c, which reports a child killed by signal s as exit 128 + s.
+  if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
+  else if (WIFSIGNALED(status)) r.exitCode = 128 + WTERMSIG(status);
+  return r;
+}
+
+inline std::string grainbridgeBinary() { return GRAINBRIDGE_BINARY; }
+inline std::filesystem::path sourceDir() { return GRAINBRIDGE_SOURCE_DIR; }
+
+// A fresh folder under the system temp dir, removed when the object goes out of scope.
+class TempDir {
+public:
+  explicit TempDir(const std::string& prefix = "gb-test") {
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() / (prefix + "-" + std::to_string(rd()) + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+private:
+  std::filesystem::path path_;
+};
+
+inline void writeText(const std::filesystem::path& p, const std::string& text) {
+  std::filesystem::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+}
+
+inline std::string readText(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Runs `grainbridge <args>` with `workdir` as the current folder.
+inline CommandResult runGrainbridge(const std::filesystem::path& workdir, const std::string& args,
+                                 const std::string& env = "") {
+  return runCommand("cd '" + workdir.string() + "' && " + env + (env.empty() ? "" : " ") + grainbridgeBinary() + " " + args);
+}
+
+}  // namespace grainbridge::testing

@@ -1,0 +1,77 @@
+// Every bad config in bad_configs/ must make `grainbridge check` exit 2 before any work, and
+// print every line of its .expect file (the JSON pointer or line/column, what was expected and
+// what was found). One data file per case, one generic driver (STYLE.md 10).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/support/Cli.hpp"
+
+namespace fs = std::filesystem;
+using namespace grainbridge::testing;
+
+namespace {
+
+std::vector<std::string> badConfigCases() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(sourceDir() / "tests/workflows/bad_configs")) {
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class BadConfig : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BadConfig, ExitsTwoAndNamesEveryProblem) {
+  const fs::path dir = sourceDir() / "tests/workflows/bad_configs";
+  TempDir work;
+  const auto r = runGrainbridge(work.path(), "check '" + (dir / (GetParam() + ".json")).string() + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  std::istringstream expected(readText(dir / (GetParam() + ".expect")));
+  std::string line;
+  int lines = 0;
+  while (std::getline(expected, line)) {
+    if (line.empty()) continue;
+    ++lines;
+    EXPECT_NE(r.output.find(line), std::string::npos) << "missing: " << line << "\noutput:\n" << r.output;
+  }
+  EXPECT_GT(lines, 0) << "case without expectations";
+  // Nothing was started: no results folder, no database.
+  EXPECT_FALSE(fs::exists(work.path() / "results"));
+}
+
+INSTANTIATE_TEST_SUITE_P(AllCases, BadConfig, ::testing::ValuesIn(badConfigCases()),
+                         [](const auto& p) { return p.param; });
+
+TEST(BadConfigFile, MissingFileIsAConfigError) {
+  TempDir work;
+  const auto r = runGrainbridge(work.path(), "check does-not-exist.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("does-not-exist.json: (document root): config file does not exist"), std::string::npos) << r.output;
+}
+
+TEST(BadConfigFile, DirectoryIsAConfigError) {
+  TempDir work;
+  fs::create_directories(work.path() / "cfg.json");
+  const auto r = runGrainbridge(work.path(), "check cfg.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("cfg.json: (document root): is a directory"), std::string::npos) << r.output;
+}
+
+TEST(BadConfigFile, RunRefusesBadConfigBeforeAnyWork) {
+  TempDir work;
+  writeText(work.path() / "cfg.json", readText(sourceDir() / "tests/workflows/bad_configs/many_errors.json"));
+  const auto r = runGrainbridge(work.path(), "run cfg.json");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_FALSE(fs::exists(work.path() / "results"));
+}
+
+TEST(Cli, UsageErrorExitsTwo) {
+  TempDir work;
+  EXPECT_EQ(runGrainbridge(work.path(), "frobnicate").exitCode, 2);
+  EXPECT_EQ(runGrainbridge(work.path(), "run").exitCode, 2);
+  EXPECT_EQ(runGrainbridge(work.path(), "run --help").exitCode, 0);
+}
+
+}  // namespace

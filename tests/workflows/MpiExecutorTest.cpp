@@ -1,0 +1,90 @@
+// The MPI executor (rank 0 schedules and is the only database writer, rank 1.. run instances)
+// must leave the same database rows as the serial executor, host, pid, rank, rank-count and
+// time columns aside (DESIGN.md, executors).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "db/Database.hpp"
+#include "db/Statement.hpp"
+#include "tests/support/Cli.hpp"
+
+namespace fs = std::filesystem;
+using namespace grainbridge;
+using namespace grainbridge::testing;
+
+namespace {
+
+const char* kWorkflow = R"({
+  "name": "wf",
+  "stages": {
+    "gas": {"type": "particle_gas", "params": {"n_particles": 400, "progress": false},
+            "sweep": {"solid_fraction": [0.05, 0.1, 0.2], "seed": [1, 2]}},
+    "rep": {"type": "report", "from": "gas"}
+  }
+})";
+
+// Rows of every table as sorted text, with per-process columns left out.
+std::multiset<std::string> rows(const fs::path& dbFile) {
+  auto database = db::Database::openReadOnly(dbFile);
+  std::multiset<std::string> out;
+  auto collect = [&](const std::string& table, const std::string& sql, int columns) {
+    auto st = database.prepare(sql);
+    while (st.step()) {
+      std::string row = table;
+      for (int c = 0; c < columns; ++c) row += "|" + (st.columnIsNull(c) ? std::string("NULL") : st.columnText(c));
+      out.insert(row);
+    }
+  };
+  collect("runs", "SELECT workflow, stage, stage_type, impl_version, key, params_json, instance_dir, code_version, code_dirty, status, error, summary_json FROM runs", 12);
+  collect("run_inputs", "SELECT r.key, i.upstream_key FROM run_inputs i JOIN runs r ON r.id = i.run_id", 2);
+  collect("artifacts", "SELECT key, path, kind, sha256, bytes FROM artifacts", 5);
+  collect("stage_cache", "SELECT key, workflow, stage, instance_dir FROM stage_cache", 4);
+  collect("leases", "SELECT key FROM leases", 1);
+  collect("invocations", "SELECT workflow, config_json, code_version, code_dirty, status FROM invocations", 5);
+  return out;
+}
+
+TEST(MpiExecutor, TwoRanksGiveTheSameRowsAsSerial) {
+  TempDir serial;
+  TempDir parallel;
+  writeText(serial.path() / "wf.json", kWorkflow);
+  writeText(parallel.path() / "wf.json", kWorkflow);
+  auto s = runGrainbridge(serial.path(), "run wf.json");
+  ASSERT_EQ(s.exitCode, 0) << s.output;
+  auto p = runCommand("cd '" + parallel.path().string() +
+                      "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
+                      "mpirun -np 2 --oversubscribe " + grainbridgeBinary() + " run wf.json");
+  ASSERT_EQ(p.exitCode, 0) << p.output;
+
+  const auto a = rows(serial.path() / "results/wf/grainbridge.sqlite");
+  const auto b = rows(parallel.path() / "results/wf/grainbridge.sqlite");
+  EXPECT_GT(a.size(), 7u + 6u + 6u * 2 + 7u + 1u);  // runs, run_inputs, gas artifacts, cache, invocation, + rep's artifacts
+  EXPECT_EQ(a, b);
+
+  // The ranks column says who ran it: rank 0 serially, a worker under MPI.
+  auto database = db::Database::openReadOnly(parallel.path() / "results/wf/grainbridge.sqlite");
+  auto st = database.prepare("SELECT COUNT(*) FROM runs WHERE rank = 0");
+  ASSERT_TRUE(st.step());
+  EXPECT_EQ(st.columnInt64(0), 0);
+
+  // A second MPI run finds everything cached.
+  auto again = runCommand("cd '" + parallel.path().string() +
+                          "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 --oversubscribe " +
+                          grainbridgeBinary() + " run wf.json");
+  ASSERT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_NE(again.output.find("nothing to do"), std::string::npos) << again.output;
+}
+
+TEST(MpiExecutor, BadConfigMakesEveryRankExitTwo) {
+  TempDir work;
+  writeText(work.path() / "wf.json", R"({"name": "wf", "stages": {"g": {"type": "nope"}}})");
+  auto r = runCommand("cd '" + work.path().string() +
+                      "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 --oversubscribe " +
+                      grainbridgeBinary() + " run wf.json");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_FALSE(fs::exists(work.path() / "results"));
+}
+
+}  // namespace

@@ -1,0 +1,70 @@
+// Stage keys (DESIGN.md): hash of type, impl_version, canonical resolved params and upstream
+// keys. Equal content gives equal keys however it is written; any physics change, or an
+// upstream change, gives a new key downstream.
+#include <gtest/gtest.h>
+
+#include "core/json/StrictParse.hpp"
+#include "workflows/plan/Plan.hpp"
+
+using namespace grainbridge::workflows;
+using nlohmann::json;
+
+namespace {
+plan::Plan planOf(const std::string& text) {
+  grainbridge::core::json::Diagnostics d;
+  auto doc = grainbridge::core::json::parseStrict(text, d);
+  EXPECT_TRUE(doc.has_value()) << d.format("t");
+  return plan::makePlan(config::parseWorkflow(*doc, "t", stages::StageRegistry::builtin()));
+}
+
+const plan::StageInstance& only(const plan::Plan& p, const std::string& stage, std::size_t i = 0) {
+  return p.instances.at(p.byStage.at(stage).at(i));
+}
+
+const char* kBase = R"({"name": "w", "stages": {
+  "gas": {"type": "particle_gas", "params": {"n_particles": 100, "solid_fraction": 0.1, "diameter": "1 mm"}},
+  "rep": {"type": "report", "from": "gas"}}})";
+}  // namespace
+
+TEST(Plan, SweepIsCartesianProductInGivenOrder) {
+  auto p = planOf(R"({"name": "w", "stages": {
+    "gas": {"type": "particle_gas", "params": {"n_particles": 10},
+            "sweep": {"solid_fraction": [0.1, 0.2, 0.3], "seed": [1, 2]}},
+    "rep": {"type": "report", "from": "gas"}}})");
+  ASSERT_EQ(p.byStage.at("gas").size(), 6u);
+  ASSERT_EQ(p.byStage.at("rep").size(), 1u);
+  EXPECT_EQ(only(p, "rep").upstream.size(), 6u);
+  std::set<std::string> keys;
+  for (auto i : p.byStage.at("gas")) keys.insert(p.instances[i].key);
+  EXPECT_EQ(keys.size(), 6u);
+  EXPECT_EQ(only(p, "gas", 0).label(), "gas[seed=1,solid_fraction=0.1]");
+}
+
+TEST(Plan, KeyIgnoresKeyOrderUnitSpellingAndNonResultParams) {
+  const auto a = planOf(kBase);
+  const auto b = planOf(R"({"stages": {
+    "rep": {"from": ["gas"], "type": "report", "params": {"title": "x"}},
+    "gas": {"params": {"diameter": 0.001, "solid_fraction": 0.1, "progress": false, "n_particles": 100, "seed": 1},
+            "type": "particle_gas"}}, "name": "w"})");
+  EXPECT_EQ(only(a, "gas").key, only(b, "gas").key);
+  EXPECT_EQ(only(a, "rep").key, only(b, "rep").key);
+}
+
+TEST(Plan, PhysicsChangeChangesKeyAndEveryDownstreamKey) {
+  const auto a = planOf(kBase);
+  std::string changed = kBase;
+  changed.replace(changed.find("0.1"), 3, "0.2");
+  const auto b = planOf(changed);
+  EXPECT_NE(only(a, "gas").key, only(b, "gas").key);
+  EXPECT_NE(only(a, "rep").key, only(b, "rep").key);
+}
+
+TEST(Plan, KeyMaterialHasNoPathsHostsOrVersions) {
+  const auto p = planOf(kBase);
+  const auto& gas = only(p, "gas");
+  const json m = plan::keyMaterial(*gas.type, gas.params, {});
+  EXPECT_EQ(m.size(), 4u);
+  for (const char* k : {"type", "impl_version", "params", "upstream"}) EXPECT_TRUE(m.contains(k)) << k;
+  EXPECT_EQ(plan::stageKey(m), gas.key);
+  EXPECT_EQ(gas.key.size(), 64u);
+}

@@ -1,0 +1,236 @@
+#include "workflows/commands/Commands.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <set>
+
+#include "core/Log.hpp"
+#include "core/parallel/Communicator.hpp"
+#include "db/Database.hpp"
+#include "db/ProvenanceStore.hpp"
+#include "db/Statement.hpp"
+#include "workflows/config/WorkflowConfig.hpp"
+#include "workflows/exec/CacheCheck.hpp"
+#include "workflows/exec/InstanceRunner.hpp"
+#include "workflows/exec/MpiDispatcher.hpp"
+#include "workflows/exec/Scheduler.hpp"
+#include "workflows/exec/SerialDispatcher.hpp"
+#include "workflows/exec/StopSignal.hpp"
+#include "workflows/plan/Plan.hpp"
+#include "workflows/report/HtmlReport.hpp"
+#include "workflows/stages/StageRegistry.hpp"
+#include "workflows/status/WorkflowStatus.hpp"
+
+namespace grainbridge::workflows::commands {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const stages::StageRegistry& registry() { return stages::StageRegistry::builtin(); }
+
+config::WorkflowConfig load(const CommandOptions& opt) { return config::loadWorkflow(opt.config, registry()); }
+
+fs::path databaseOf(const CommandOptions& opt) {
+  if (!opt.database.empty()) return opt.database;
+  if (!opt.config.empty()) return exec::databasePath(load(opt), opt.workDir);
+  throw UsageError("say which database: --db FILE or --config WORKFLOW.json");
+}
+
+db::Database openExisting(const fs::path& path) {
+  if (!fs::exists(path)) throw UsageError("no database at '" + path.string() + "' (has the workflow been run?)");
+  return db::Database::openReadOnly(path);
+}
+
+}  // namespace
+
+int commandCheck(const CommandOptions& opt) {
+  const auto cfg = load(opt);
+  const auto plan = plan::makePlan(cfg);
+  std::printf("%s: ok: workflow '%s', %zu stage(s), %zu stage instance(s)\n", opt.config.c_str(), cfg.name.c_str(),
+              cfg.stages.size(), plan.instances.size());
+  return 0;
+}
+
+int commandRun(const CommandOptions& opt) {
+  // Every rank validates the config (deterministically the same verdict), so a bad config
+  // makes all ranks exit 2 together before any work starts.
+  const auto cfg = load(opt);
+  const auto plan = plan::makePlan(cfg);
+  exec::installStopHandlers();
+  exec::RunOptions runOptions;
+  runOptions.force = opt.force;
+  runOptions.keepGoing = opt.keepGoing;
+  runOptions.workDir = opt.workDir;
+  const int worldSize = core::parallel::worldSize();
+  if (core::parallel::worldRank() != 0) {
+    exec::runMpiWorker(registry(), exec::resultsRoot(opt.workDir));
+    return 0;
+  }
+  if (worldSize > 1) {
+    exec::MpiDispatcher dispatcher;
+    return exec::runWorkflow(cfg, plan, runOptions, dispatcher, worldSize).exitCode();
+  }
+  exec::SerialDispatcher dispatcher(registry(), exec::resultsRoot(opt.workDir), exec::stopFlag());
+  return exec::runWorkflow(cfg, plan, runOptions, dispatcher, 1).exitCode();
+}
+
+int commandStatus(const CommandOptions& opt) {
+  const auto cfg = load(opt);
+  const auto plan = plan::makePlan(cfg);
+  if (!opt.why.empty()) {
+    if (cfg.findStage(opt.why) == nullptr) throw UsageError("no stage named '" + opt.why + "' in workflow " + cfg.name);
+    for (const auto& line : status::explainStage(cfg, plan, opt.why, opt.workDir)) std::printf("%s\n", line.c_str());
+    return 0;
+  }
+  std::map<std::string, int> counts;
+  for (const auto& s : status::workflowStatus(cfg, plan, opt.workDir, std::chrono::seconds(120))) {
+    ++counts[s.state];
+    std::printf("%-8s %-40s %s%s%s\n", s.state.c_str(), s.label.c_str(), s.key.substr(0, 12).c_str(),
+                s.detail.empty() ? "" : "  ", s.detail.c_str());
+  }
+  std::printf("%s: %zu instance(s):", cfg.name.c_str(), plan.instances.size());
+  for (const auto& [state, n] : counts) std::printf(" %d %s", n, state.c_str());
+  std::printf("\n");
+  return 0;
+}
+
+int commandStages(const CommandOptions& opt) {
+  for (const auto& type : registry().all()) {
+    if (opt.markdown) {
+      std::printf("## `%s` (impl_version %d)\n\n%s.\n\n| parameter | type | default | range | affects key | description |\n|---|---|---|---|---|---|\n",
+                  type->name().c_str(), type->implVersion(), type->summary().c_str());
+    } else {
+      std::printf("%s (impl_version %d): %s\n", type->name().c_str(), type->implVersion(), type->summary().c_str());
+    }
+    for (const auto& p : type->params().specs()) {
+      const std::string def = p.isRequired() ? "required" : p.defaultJson() ? p.defaultJson()->dump() : "-";
+      if (opt.markdown) {
+        std::printf("| `%s` | %s | %s | %s | %s | %s |\n", p.name().c_str(), p.typeDescription().c_str(), def.c_str(),
+                    p.rangeDescription().c_str(), p.affectsResults() ? "yes" : "no", p.docText().c_str());
+      } else {
+        std::printf("  %-22s %-28s %-14s %-18s %s%s\n", p.name().c_str(), p.typeDescription().c_str(), def.c_str(),
+                    p.rangeDescription().c_str(), p.docText().c_str(), p.affectsResults() ? "" : " (not in the stage key)");
+      }
+    }
+    std::printf("\n");
+  }
+  return 0;
+}
+
+int commandReport(const CommandOptions& opt) {
+  const auto cfg = load(opt);
+  const auto plan = plan::makePlan(cfg);
+  auto database = openExisting(exec::databasePath(cfg, opt.workDir));
+  const fs::path root = fs::absolute(exec::resultsRoot(opt.workDir)).lexically_normal();
+  std::vector<stages::UpstreamInstance> done;
+  std::size_t missing = 0;
+  for (const auto& inst : plan.instances) {
+    auto entry = exec::validCacheEntry(database, root, inst.key);
+    if (!entry) {
+      ++missing;
+      continue;
+    }
+    const fs::path dir = root / entry->instanceDir;
+    done.push_back({inst.stage, inst.type->name(), inst.key, dir, exec::readManifest(dir)});
+  }
+  const fs::path out = root / cfg.name / "report";
+  fs::create_directories(out);
+  report::writeHtmlReport("grainbridge report: " + cfg.name, done, out, out);
+  std::printf("%s\n", (out / "report.html").c_str());
+  if (missing > 0) spdlog::warn("{} of {} stage instance(s) are not complete and are not in the report", missing, plan.instances.size());
+  return 0;
+}
+
+int commandDbRuns(const CommandOptions& opt) {
+  auto database = openExisting(databaseOf(opt));
+  db::ProvenanceStore store(database);
+  const auto runs = store.runs(opt.workflowFilter);
+  if (opt.format == "json") {
+    json out = json::array();
+    for (const auto& r : runs) {
+      out.push_back({{"id", r.id}, {"workflow", r.workflow}, {"stage", r.stage}, {"stage_type", r.stageType},
+                     {"key", r.key}, {"status", r.status}, {"started_at", r.startedAt}, {"ended_at", r.endedAt},
+                     {"host", r.host}, {"code_version", r.codeVersion}, {"error", r.error}});
+    }
+    std::printf("%s\n", out.dump(2).c_str());
+  } else if (opt.format == "csv") {
+    std::printf("id,workflow,stage,stage_type,key,status,started_at,ended_at,host,code_version\n");
+    for (const auto& r : runs) {
+      std::printf("%lld,%s,%s,%s,%s,%s,%s,%s,%s,%s\n", static_cast<long long>(r.id), r.workflow.c_str(), r.stage.c_str(),
+                  r.stageType.c_str(), r.key.c_str(), r.status.c_str(), r.startedAt.c_str(), r.endedAt.c_str(),
+                  r.host.c_str(), r.codeVersion.c_str());
+    }
+  } else {
+    std::printf("%5s  %-16s %-14s %-8s %-12s %-24s %s\n", "id", "workflow", "stage", "status", "key", "started", "error");
+    for (const auto& r : runs) {
+      std::printf("%5lld  %-16s %-14s %-8s %-12s %-24s %s\n", static_cast<long long>(r.id), r.workflow.c_str(),
+                  r.stage.c_str(), r.status.c_str(), r.key.substr(0, 12).c_str(), r.startedAt.c_str(), r.error.c_str());
+    }
+  }
+  return 0;
+}
+
+int commandDbShow(const CommandOptions& opt) {
+  auto database = openExisting(databaseOf(opt));
+  db::ProvenanceStore store(database);
+  // Walk from the run up through the runs that produced its inputs: the provenance chain.
+  std::vector<std::int64_t> queue{opt.runId};
+  std::set<std::int64_t> seen;
+  bool first = true;
+  while (!queue.empty()) {
+    const auto id = queue.front();
+    queue.erase(queue.begin());
+    if (!seen.insert(id).second) continue;
+    auto run = store.run(id);
+    if (!run) {
+      if (first) throw UsageError("no run with id " + std::to_string(id));
+      continue;
+    }
+    std::printf("%srun %lld: %s/%s (%s, impl_version %d) %s\n", first ? "" : "\n", static_cast<long long>(run->id),
+                run->workflow.c_str(), run->stage.c_str(), run->stageType.c_str(), run->implVersion, run->status.c_str());
+    std::printf("  key        %s\n  folder     results/%s\n  code       %s%s\n  host       %s pid %lld rank %d of %d\n",
+                run->key.c_str(), run->instanceDir.c_str(), run->codeVersion.c_str(), run->codeDirty ? " (dirty)" : "",
+                run->host.c_str(), static_cast<long long>(run->pid), run->rank, run->ranks);
+    std::printf("  time       %s -> %s\n  params     %s\n", run->startedAt.c_str(), run->endedAt.c_str(), run->paramsJson.c_str());
+    if (!run->summaryJson.empty()) std::printf("  summary    %s\n", run->summaryJson.c_str());
+    if (!run->error.empty()) std::printf("  error      %s\n", run->error.c_str());
+    for (const auto& a : store.artifactsOfRun(run->id)) {
+      std::printf("  artifact   %-14s %s  sha256 %s  %lld bytes\n", a.kind.c_str(), a.path.c_str(), a.sha256.c_str(),
+                  static_cast<long long>(a.bytes));
+    }
+    for (const auto& up : run->upstreamKeys) {
+      const auto producers = store.runsOfKey(up);
+      std::int64_t producer = 0;
+      for (const auto& p : producers) {
+        if (p.status == "done") producer = p.id;
+      }
+      std::printf("  input      key %s%s\n", up.substr(0, 12).c_str(),
+                  producer ? (" from run " + std::to_string(producer)).c_str() : " (no completed run recorded)");
+      if (producer) queue.push_back(producer);
+    }
+    if (first) {
+      for (const auto& inv : store.invocations(run->workflow)) {
+        if (inv.id == run->invocationId) {
+          std::printf("  invocation %lld: config %s, %d rank(s), started %s\n", static_cast<long long>(inv.id),
+                      inv.configPath.c_str(), inv.ranks, inv.startedAt.c_str());
+          std::printf("  config     %s\n", inv.configJson.c_str());
+        }
+      }
+    }
+    first = false;
+  }
+  return 0;
+}
+
+int commandDbIntegrity(const CommandOptions& opt) {
+  auto database = openExisting(databaseOf(opt));
+  const std::string result = database.integrityCheck();
+  std::printf("%s\n", result.c_str());
+  return result == "ok" ? 0 : 1;
+}
+
+}  // namespace grainbridge::workflows::commands

@@ -1,0 +1,38 @@
+#pragma once
+// One function per CLI subcommand: app/main.cpp only parses arguments and dispatches here.
+#include <cstdint>
+#include <string>
+
+#include "core/Error.hpp"
+
+namespace grainbridge::workflows::commands {
+
+struct CommandOptions {
+  std::string config;
+  std::string workDir = ".";
+  bool force = false;
+  bool keepGoing = false;
+  std::string why;
+  bool markdown = false;
+  std::string database;
+  std::string workflowFilter;
+  std::string format = "table";
+  std::int64_t runId = 0;
+};
+
+// A usage problem the parser could not catch (e.g. neither --db nor --config): exit code 2.
+class UsageError : public Error {
+public:
+  using Error::Error;
+};
+
+int commandRun(const CommandOptions& opt);
+int commandStatus(const CommandOptions& opt);
+int commandCheck(const CommandOptions& opt);
+int commandStages(const CommandOptions& opt);
+int commandReport(const CommandOptions& opt);
+int commandDbRuns(const CommandOptions& opt);
+int commandDbShow(const CommandOptions& opt);
+int commandDbIntegrity(const CommandOptions& opt);
+
+}  // namespace grainbridge::workflows::commands

@@ -1,0 +1,180 @@
+#include "workflows/params/ParamSchema.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "core/json/StrictParse.hpp"
+#include "core/units/Quantity.hpp"
+
+namespace grainbridge::workflows::params {
+
+using nlohmann::json;
+namespace cj = core::json;
+
+ParamSchema& ParamSchema::add(ParamSpec spec) {
+  GB_ASSERT(find(spec.name()) == nullptr, "parameter '" + spec.name() + "' declared twice");
+  if (spec.defaultJson()) {
+    // A default must itself be valid: catching a bad declaration here beats a confusing
+    // error in every config that relies on it.
+    cj::Diagnostics d;
+    resolveValue(spec, *spec.defaultJson(), core::units::UnitSystem::si(), "default of " + spec.name(), d);
+    GB_ASSERT(d.empty(), d.format("parameter declaration"));
+  }
+  specs_.push_back(std::move(spec));
+  return *this;
+}
+
+const ParamSpec* ParamSchema::find(const std::string& name) const {
+  for (const auto& s : specs_) {
+    if (s.name() == name) return &s;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> ParamSchema::names() const {
+  std::vector<std::string> out;
+  for (const auto& s : specs_) out.push_back(s.name());
+  return out;
+}
+
+namespace {
+
+std::string found(const json& value) { return cj::describeFound(value.dump(), value.type_name()); }
+
+bool checkRange(const ParamSpec& spec, double v, const std::string& pointer, cj::Diagnostics& diagnostics) {
+  const auto& lo = spec.lower();
+  const auto& hi = spec.upper();
+  const bool belowMin = lo && (lo->inclusive ? v < lo->value : v <= lo->value);
+  const bool aboveMax = hi && (hi->inclusive ? v > hi->value : v >= hi->value);
+  if (!belowMin && !aboveMax) return true;
+  std::ostringstream msg;
+  msg << "expected " << spec.name() << " " << spec.rangeDescription();
+  if (!spec.dimension().isNone()) msg << " (SI, " << spec.dimension().siUnit() << ")";
+  msg << ", found " << v;
+  diagnostics.add(pointer, msg.str());
+  return false;
+}
+
+std::optional<double> resolveQuantity(const ParamSpec& spec, const json& value, const core::units::UnitSystem& units,
+                                      const std::string& pointer, cj::Diagnostics& diagnostics) {
+  auto r = core::units::parseQuantity(value, spec.dimension(), units);
+  if (auto* err = std::get_if<std::string>(&r)) {
+    diagnostics.add(pointer, *err);
+    return std::nullopt;
+  }
+  const double v = std::get<double>(r);
+  if (!checkRange(spec, v, pointer, diagnostics)) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json& value,
+                                              const core::units::UnitSystem& units, const std::string& pointer,
+                                              cj::Diagnostics& diagnostics) const {
+  switch (spec.kind()) {
+    case ParamKind::Quantity: {
+      auto v = resolveQuantity(spec, value, units, pointer, diagnostics);
+      if (!v) return std::nullopt;
+      return json(*v);
+    }
+    case ParamKind::Integer: {
+      // 3.0 is accepted as 3 (JSON writers differ), 3.5 is not.
+      const bool integral = value.is_number_integer() ||
+                            (value.is_number_float() && std::isfinite(value.get<double>()) &&
+                             value.get<double>() == std::floor(value.get<double>()) &&
+                             std::abs(value.get<double>()) < 9.0e15);
+      if (!integral) {
+        diagnostics.add(pointer, "expected an integer, found " + found(value));
+        return std::nullopt;
+      }
+      const auto v = value.is_number_integer() ? value.get<std::int64_t>() : static_cast<std::int64_t>(value.get<double>());
+      if (!checkRange(spec, static_cast<double>(v), pointer, diagnostics)) return std::nullopt;
+      return json(v);
+    }
+    case ParamKind::Boolean:
+      if (!value.is_boolean()) {
+        diagnostics.add(pointer, "expected true or false, found " + found(value));
+        return std::nullopt;
+      }
+      return value;
+    case ParamKind::String: {
+      if (!value.is_string()) {
+        diagnostics.add(pointer, "expected a string, found " + found(value));
+        return std::nullopt;
+      }
+      const auto& allowed = spec.allowed();
+      const auto s = value.get<std::string>();
+      if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), s) == allowed.end()) {
+        std::string msg = "expected " + spec.typeDescription() + ", found \"" + s + "\"";
+        const auto hint = cj::closestMatch(s, allowed);
+        if (!hint.empty()) msg += " (did you mean \"" + hint + "\"?)";
+        diagnostics.add(pointer, msg);
+        return std::nullopt;
+      }
+      return value;
+    }
+    case ParamKind::QuantityList: {
+      if (!value.is_array() || static_cast<int>(value.size()) != spec.listLength()) {
+        diagnostics.add(pointer, "expected a " + spec.typeDescription() + ", found " + found(value));
+        return std::nullopt;
+      }
+      json out = json::array();
+      bool ok = true;
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        auto v = resolveQuantity(spec, value[i], units, pointer + "/" + std::to_string(i), diagnostics);
+        if (v) out.push_back(*v);
+        else ok = false;
+      }
+      if (!ok) return std::nullopt;
+      return out;
+    }
+  }
+  return std::nullopt;
+}
+
+json ParamSchema::resolve(const json& params, const std::set<std::string>& providedElsewhere,
+                          const core::units::UnitSystem& units, const std::string& pointer,
+                          cj::Diagnostics& diagnostics) const {
+  json resolved = json::object();
+  if (!params.is_object()) {
+    diagnostics.add(pointer, "expected an object of parameters, found " + found(params));
+    return resolved;
+  }
+  const auto known = names();
+  for (const auto& [key, value] : params.items()) {
+    const std::string where = pointer + "/" + cj::pointerToken(key);
+    const ParamSpec* spec = find(key);
+    if (spec == nullptr) {
+      std::string msg = "unknown parameter \"" + key + "\"";
+      const auto hint = cj::closestMatch(key, known);
+      msg += hint.empty() ? " (see `grainbridge stages` for the parameters of each stage type)" : " (did you mean \"" + hint + "\"?)";
+      diagnostics.add(where, msg);
+      continue;
+    }
+    if (auto v = resolveValue(*spec, value, units, where, diagnostics)) resolved[key] = *v;
+  }
+  for (const auto& spec : specs_) {
+    if (params.contains(spec.name()) || providedElsewhere.count(spec.name()) != 0) continue;
+    if (spec.isRequired()) {
+      diagnostics.add(pointer, "missing required parameter \"" + spec.name() + "\" (" + spec.typeDescription() + ": " + spec.docText() + ")");
+    } else if (spec.defaultJson()) {
+      cj::Diagnostics ignored;  // defaults were validated at declaration
+      if (auto v = resolveValue(spec, *spec.defaultJson(), core::units::UnitSystem::si(), pointer, ignored)) resolved[spec.name()] = *v;
+    }
+  }
+  return resolved;
+}
+
+json ParamSchema::keyParams(const json& resolved) const {
+  json out = json::object();
+  for (const auto& [key, value] : resolved.items()) {
+    const ParamSpec* spec = find(key);
+    if (spec == nullptr || spec->affectsResults()) out[key] = value;
+  }
+  return out;
+}
+
+}  // namespace grainbridge::workflows::params

@@ -1,0 +1,75 @@
+#pragma once
+// One declaration per stage parameter (STYLE.md 5): type, unit dimension, default or required,
+// allowed range or values, whether it affects results, and a one-line doc. Validation,
+// `grainbridge stages` and docs/stages.md are all derived from these declarations.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/units/Dimension.hpp"
+
+namespace grainbridge::workflows::params {
+
+enum class ParamKind { Quantity, Integer, Boolean, String, QuantityList };
+
+struct Bound {
+  double value;
+  bool inclusive;
+};
+
+class ParamSpec {
+public:
+  // A real number with a physical dimension (accepts "<number> <unit>" strings).
+  static ParamSpec quantity(std::string name, core::units::Dimension dim);
+  static ParamSpec number(std::string name) { return quantity(std::move(name), core::units::Dimension::none()); }
+  static ParamSpec integer(std::string name);
+  static ParamSpec boolean(std::string name);
+  static ParamSpec string(std::string name);
+  // A fixed-length list of quantities, e.g. gravity [0, 0, "-9.81 m/s2"].
+  static ParamSpec quantityList(std::string name, core::units::Dimension dim, int length);
+
+  ParamSpec& required();
+  ParamSpec& defaultValue(nlohmann::json value);  // in the same forms a config accepts
+  ParamSpec& min(double value, bool inclusive = true);
+  ParamSpec& max(double value, bool inclusive = true);
+  ParamSpec& positive() { return min(0.0, false); }
+  ParamSpec& options(std::vector<std::string> allowed);
+  ParamSpec& doc(std::string text);
+  // Plot styling, progress output: left out of the stage key (DESIGN.md, workflow semantics).
+  ParamSpec& doesNotAffectResults();
+
+  [[nodiscard]] const std::string& name() const { return name_; }
+  [[nodiscard]] ParamKind kind() const { return kind_; }
+  [[nodiscard]] const core::units::Dimension& dimension() const { return dim_; }
+  [[nodiscard]] bool isRequired() const { return required_; }
+  [[nodiscard]] const std::optional<nlohmann::json>& defaultJson() const { return default_; }
+  [[nodiscard]] const std::optional<Bound>& lower() const { return min_; }
+  [[nodiscard]] const std::optional<Bound>& upper() const { return max_; }
+  [[nodiscard]] const std::vector<std::string>& allowed() const { return options_; }
+  [[nodiscard]] const std::string& docText() const { return doc_; }
+  [[nodiscard]] bool affectsResults() const { return affectsResults_; }
+  [[nodiscard]] int listLength() const { return listLength_; }
+
+  // "quantity [m]", "integer", "string: one of a|b", ...
+  [[nodiscard]] std::string typeDescription() const;
+  // "> 0", "in [0, 1]", "" when unbounded.
+  [[nodiscard]] std::string rangeDescription() const;
+
+private:
+  ParamSpec(std::string name, ParamKind kind, core::units::Dimension dim);
+
+  std::string name_;
+  ParamKind kind_;
+  core::units::Dimension dim_;
+  bool required_ = false;
+  std::optional<nlohmann::json> default_;
+  std::optional<Bound> min_;
+  std::optional<Bound> max_;
+  std::vector<std::string> options_;
+  std::string doc_;
+  bool affectsResults_ = true;
+  int listLength_ = 0;
+};
+
+}  // namespace grainbridge::workflows::params

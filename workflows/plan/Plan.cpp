@@ -1,0 +1,118 @@
+#include "workflows/plan/Plan.hpp"
+
+#include <algorithm>
+
+#include "core/Error.hpp"
+#include "core/Sha256.hpp"
+
+namespace grainbridge::workflows::plan {
+
+using nlohmann::json;
+
+std::string StageInstance::label() const {
+  if (sweepPoint.empty()) return stage;
+  std::string s = stage + "[";
+  bool first = true;
+  for (const auto& [k, v] : sweepPoint.items()) {
+    s += (first ? "" : ",") + k + "=" + v.dump();
+    first = false;
+  }
+  return s + "]";
+}
+
+std::string StageInstance::relativeDir(const std::string& workflow) const {
+  return workflow + "/" + stage + "/" + key;
+}
+
+json keyMaterial(const stages::StageType& type, const json& resolvedParams, const std::vector<std::string>& upstreamKeys) {
+  return json{{"type", type.name()},
+              {"impl_version", type.implVersion()},
+              {"params", type.params().keyParams(resolvedParams)},
+              {"upstream", upstreamKeys}};
+}
+
+std::string stageKey(const json& material) {
+  // nlohmann::json objects keep keys sorted and dump doubles in shortest round-trip form,
+  // so equal content always gives equal text.
+  return core::sha256Hex(material.dump());
+}
+
+namespace {
+
+// Cartesian product of the sweep axes, first axis slowest.
+std::vector<json> sweepPoints(const std::vector<config::SweepAxis>& axes) {
+  std::vector<json> points{json::object()};
+  for (const auto& axis : axes) {
+    std::vector<json> next;
+    for (const auto& p : points) {
+      for (const auto& v : axis.values) {
+        json q = p;
+        q[axis.param] = v;
+        next.push_back(std::move(q));
+      }
+    }
+    points = std::move(next);
+  }
+  return points;
+}
+
+// Combinations of upstream instances a per-instance stage runs over (one from each `from`).
+std::vector<std::vector<std::size_t>> upstreamCombinations(const config::StageConfig& stage, const Plan& plan) {
+  std::vector<std::vector<std::size_t>> combos{{}};
+  for (const auto& up : stage.from) {
+    std::vector<std::vector<std::size_t>> next;
+    for (const auto& c : combos) {
+      for (auto idx : plan.byStage.at(up)) {
+        auto d = c;
+        d.push_back(idx);
+        next.push_back(std::move(d));
+      }
+    }
+    combos = std::move(next);
+  }
+  return combos;
+}
+
+}  // namespace
+
+Plan makePlan(const config::WorkflowConfig& config) {
+  Plan plan;
+  plan.workflow = config.name;
+  for (const auto& stage : config.stages) {
+    std::vector<std::vector<std::size_t>> inputSets;
+    if (stage.type->inputMode() == stages::InputMode::PerInstance) {
+      inputSets = upstreamCombinations(stage, plan);
+    } else {
+      std::vector<std::size_t> all;
+      for (const auto& up : stage.from) {
+        const auto& v = plan.byStage.at(up);
+        all.insert(all.end(), v.begin(), v.end());
+      }
+      inputSets.push_back(std::move(all));
+    }
+    for (const auto& inputs : inputSets) {
+      for (const auto& point : sweepPoints(stage.sweep)) {
+        StageInstance inst;
+        inst.index = plan.instances.size();
+        inst.stage = stage.name;
+        inst.type = stage.type;
+        inst.params = stage.params;
+        for (const auto& [k, v] : point.items()) inst.params[k] = v;
+        inst.sweepPoint = point;
+        inst.upstream = inputs;
+        inst.ranks = stage.ranksPerInstance;
+        std::vector<std::string> upKeys;
+        for (auto i : inputs) upKeys.push_back(plan.instances[i].key);
+        // A gathering stage does not care in which order its inputs were listed.
+        if (stage.type->inputMode() == stages::InputMode::Gather) std::sort(upKeys.begin(), upKeys.end());
+        inst.key = stageKey(keyMaterial(*stage.type, inst.params, upKeys));
+        plan.byStage[stage.name].push_back(inst.index);
+        plan.instances.push_back(std::move(inst));
+      }
+    }
+    if (plan.byStage.find(stage.name) == plan.byStage.end()) plan.byStage[stage.name] = {};
+  }
+  return plan;
+}
+
+}  // namespace grainbridge::workflows::plan

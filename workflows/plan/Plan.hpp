@@ -1,0 +1,46 @@
+#pragma once
+// Expands a workflow's stages into stage instances (one per sweep point and, for per-instance
+// stages, per upstream instance) and gives each its stage key (DESIGN.md, workflow semantics):
+//   key = sha256(type, impl_version, canonical resolved params, upstream keys)
+// Canonical params are SI values with defaults filled in, keys sorted, floats in shortest
+// round-trip text, parameters declared not to affect results left out. Paths, hosts, git SHA
+// and rank counts never enter, so a docs-only commit or a moved project invalidates nothing.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "workflows/config/WorkflowConfig.hpp"
+
+namespace grainbridge::workflows::plan {
+
+struct StageInstance {
+  std::size_t index = 0;  // position in Plan::instances
+  std::string stage;
+  const stages::StageType* type = nullptr;
+  nlohmann::json params;      // resolved, sweep point merged in
+  nlohmann::json sweepPoint;  // {param: value} of this instance ({} without a sweep)
+  std::string key;
+  std::vector<std::size_t> upstream;  // indices of the instances it consumes
+  int ranks = 1;
+
+  // "gas" or "gas[solid_fraction=0.1]", for logs and status.
+  [[nodiscard]] std::string label() const;
+  // <workflow>/<stage>/<key>: the instance folder relative to the results root.
+  [[nodiscard]] std::string relativeDir(const std::string& workflow) const;
+};
+
+struct Plan {
+  std::string workflow;
+  std::vector<StageInstance> instances;  // topological order
+  std::map<std::string, std::vector<std::size_t>> byStage;
+};
+
+Plan makePlan(const config::WorkflowConfig& config);
+
+// The canonical text that is hashed into a stage key (exposed for `status --why` and tests).
+nlohmann::json keyMaterial(const stages::StageType& type, const nlohmann::json& resolvedParams,
+                           const std::vector<std::string>& upstreamKeys);
+std::string stageKey(const nlohmann::json& keyMaterial);
+
+}  // namespace grainbridge::workflows::plan

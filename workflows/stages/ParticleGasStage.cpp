@@ -1,0 +1,179 @@
+#include "workflows/stages/ParticleGasStage.hpp"
+
+#include <cmath>
+#include <random>
+
+#include "core/Error.hpp"
+#include "core/FailPoint.hpp"
+#include "core/Progress.hpp"
+#include "core/data/ParticleFrame.hpp"
+#include "core/io/ParticleFrameWriter.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using core::units::Dimension;
+using params::ParamSpec;
+
+ParticleGasStage::ParticleGasStage() {
+  schema_.add(ParamSpec::integer("n_particles").required().min(1).max(5e7).doc("number of spheres"))
+      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).defaultValue("1 mm").positive().doc("sphere diameter d"))
+      .add(ParamSpec::quantity("density", Dimension::density()).defaultValue("2500 kg/m3").positive().doc("material density rho_p"))
+      // pi/sqrt(18) is the densest packing of equal spheres; random insertion jams far below it
+      // (about 0.38) and then fails with a message saying so.
+      .add(ParamSpec::number("solid_fraction").required().min(0.0, false).max(M_PI / std::sqrt(18.0)).doc("solid volume fraction of the box"))
+      .add(ParamSpec::quantity("granular_temperature", Dimension::granularTemperature()).defaultValue("1e-4 m2/s2").min(0.0).doc("granular temperature T = <C^2>/3 (Eq. 3.38)"))
+      .add(ParamSpec::integer("seed").defaultValue(1).min(0).doc("random seed (positions and velocities)"))
+      .add(ParamSpec::integer("max_attempts").defaultValue(100000).min(1).doc("insertion attempts per particle before giving up"))
+      .add(ParamSpec::boolean("progress").defaultValue(true).doesNotAffectResults().doc("report progress while inserting"));
+}
+
+namespace {
+
+// Uniform grid over the periodic cube with cells no smaller than one diameter, so an overlap
+// test only needs the 27 surrounding cells.
+class InsertionGrid {
+public:
+  InsertionGrid(double box, double diameter) : box_(box), d2_(diameter * diameter) {
+    cells_ = std::max(1, static_cast<int>(std::floor(box / diameter)));
+    cellSize_ = box / cells_;
+    heads_.assign(static_cast<std::size_t>(cells_) * cells_ * cells_, -1);
+  }
+  bool overlaps(const Vec3& p, const std::vector<Vec3>& pos) const {
+    const Vec3i c = cellOf(p);
+    const int reach = cells_ >= 3 ? 1 : 0;  // with fewer than 3 cells every cell is a neighbour
+    for (int dz = -reach; dz <= reach; ++dz)
+      for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx) {
+          if (reach == 0) return overlapsAny(p, pos);
+          for (int j = heads_[index(c + Vec3i(dx, dy, dz))]; j >= 0; j = next_[static_cast<std::size_t>(j)]) {
+            Vec3 r = p - pos[static_cast<std::size_t>(j)];
+            for (int a = 0; a < 3; ++a) r[a] -= box_ * std::round(r[a] / box_);  // periodic image
+            if (r.squaredNorm() < d2_) return true;
+          }
+        }
+    return false;
+  }
+  void insert(const Vec3& p, int id) {
+    const std::size_t cell = index(cellOf(p));
+    next_.push_back(heads_[cell]);
+    heads_[cell] = id;
+  }
+
+private:
+  bool overlapsAny(const Vec3& p, const std::vector<Vec3>& pos) const {
+    for (const auto& q : pos) {
+      Vec3 r = p - q;
+      for (int a = 0; a < 3; ++a) r[a] -= box_ * std::round(r[a] / box_);
+      if (r.squaredNorm() < d2_) return true;
+    }
+    return false;
+  }
+  Vec3i cellOf(const Vec3& p) const {
+    Vec3i c;
+    for (int a = 0; a < 3; ++a) c[a] = std::min(cells_ - 1, static_cast<int>(p[a] / cellSize_));
+    return c;
+  }
+  std::size_t index(Vec3i c) const {
+    for (int a = 0; a < 3; ++a) c[a] = ((c[a] % cells_) + cells_) % cells_;
+    return static_cast<std::size_t>((c[2] * cells_ + c[1]) * cells_ + c[0]);
+  }
+  double box_;
+  double d2_;
+  int cells_;
+  double cellSize_;
+  std::vector<int> heads_;
+  std::vector<int> next_;
+};
+
+}  // namespace
+
+void ParticleGasStage::run(StageContext& ctx) const {
+  const auto& p = ctx.params();
+  const auto n = p.at("n_particles").get<std::int64_t>();
+  const double d = p.at("diameter");
+  const double rho = p.at("density");
+  const double phi = p.at("solid_fraction");
+  const double temperature = p.at("granular_temperature");
+  const auto maxAttempts = p.at("max_attempts").get<std::int64_t>();
+  const double volume = M_PI * d * d * d / 6.0;
+  const double box = std::cbrt(static_cast<double>(n) * volume / phi);
+
+  std::mt19937_64 rng(p.at("seed").get<std::uint64_t>());
+  std::uniform_real_distribution<double> uniform(0.0, box);
+
+  core::data::ParticleFrame frame;
+  frame.time = 0.0;
+  frame.step = 0;
+  frame.units = "SI";
+  frame.domain.lo = Vec3::Zero();
+  frame.domain.hi = Vec3::Constant(box);
+  frame.domain.periodic = {true, true, true};
+  frame.position.reserve(static_cast<std::size_t>(n));
+
+  InsertionGrid grid(box, d);
+  std::optional<core::Progress> progress;
+  if (p.at("progress").get<bool>()) progress.emplace(ctx.stage() + ": inserting", static_cast<double>(n), "particles");
+  for (std::int64_t i = 0; i < n; ++i) {
+    bool placed = false;
+    for (std::int64_t attempt = 0; attempt < maxAttempts && !placed; ++attempt) {
+      const Vec3 candidate(uniform(rng), uniform(rng), uniform(rng));
+      if (!grid.overlaps(candidate, frame.position)) {
+        grid.insert(candidate, static_cast<int>(i));
+        frame.position.push_back(candidate);
+        placed = true;
+      }
+    }
+    if (!placed) {
+      throw Error("particle_gas: could not insert particle " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                  " without overlap after " + std::to_string(maxAttempts) + " attempts; random insertion jams near solid fraction 0.38, " +
+                  "and solid_fraction is " + std::to_string(phi) + " (lower it, or raise max_attempts)");
+    }
+    if ((i & 1023) == 0) {
+      if (ctx.stopRequested()) throw StageInterrupted{};
+      if (progress) progress->update(static_cast<double>(i));
+    }
+  }
+  if (progress) progress->finish();
+  core::failPoint("particle_gas.after_insert");
+
+  // Maxwellian velocities; the mean is removed and the spread rescaled so the frame has exactly
+  // zero momentum and granular temperature T = <C^2>/3 (Eq. 3.38).
+  std::normal_distribution<double> normal(0.0, 1.0);
+  frame.velocity.resize(static_cast<std::size_t>(n));
+  Vec3 mean = Vec3::Zero();
+  for (auto& v : frame.velocity) {
+    v = Vec3(normal(rng), normal(rng), normal(rng));
+    mean += v;
+  }
+  mean /= static_cast<double>(n);
+  double sumC2 = 0.0;
+  for (auto& v : frame.velocity) {
+    v -= mean;
+    sumC2 += v.squaredNorm();
+  }
+  const double scale = (n > 1 && sumC2 > 0) ? std::sqrt(3.0 * static_cast<double>(n) * temperature / sumC2) : 0.0;
+  for (auto& v : frame.velocity) v *= scale;
+
+  frame.id.resize(static_cast<std::size_t>(n));
+  for (std::int64_t i = 0; i < n; ++i) frame.id[static_cast<std::size_t>(i)] = i;
+  frame.species.assign(static_cast<std::size_t>(n), 0);
+  frame.radius.assign(static_cast<std::size_t>(n), 0.5 * d);
+  frame.mass.assign(static_cast<std::size_t>(n), rho * volume);
+  frame.angularVelocity.assign(static_cast<std::size_t>(n), Vec3::Zero());
+
+  core::io::ParticleFrameWriter writer(ctx.outputDir(), core::io::ArtifactStamp{ctx.key()});
+  const auto framePath = writer.write(frame);
+  ctx.addArtifact(framePath.lexically_relative(ctx.outputDir()).string(), "particle_frame");
+  ctx.addArtifact("particles.xmf", "xdmf");
+
+  double measuredT = 0.0;
+  for (const auto& v : frame.velocity) measuredT += v.squaredNorm();
+  measuredT /= 3.0 * static_cast<double>(n);
+  ctx.setSummary({{"n_particles", n},
+                  {"box_length", box},
+                  {"solid_fraction", static_cast<double>(n) * volume / (box * box * box)},
+                  {"granular_temperature", measuredT},
+                  {"number_density", static_cast<double>(n) / (box * box * box)}});
+}
+
+}  // namespace grainbridge::workflows::stages

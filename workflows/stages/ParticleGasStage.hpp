@@ -1,0 +1,27 @@
+#pragma once
+// `particle_gas`: a gas of non-overlapping monodisperse spheres at a given solid fraction in a
+// periodic cube, with Maxwellian velocities at a given granular temperature (Eq. 3.38:
+// T = <C^2>/3). It is the initial state of the homogeneous-cooling and elastic-gas checks and
+// the test input of the kinetic stress of Eq. 2.3 (n m T I), and it exercises the whole
+// pipeline (params, sweep, frames, database, report) before the DEM engine lands.
+#include "workflows/stages/StageType.hpp"
+
+namespace grainbridge::workflows::stages {
+
+class ParticleGasStage final : public StageType {
+public:
+  ParticleGasStage();
+  [[nodiscard]] std::string name() const override { return "particle_gas"; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::string summary() const override {
+    return "random non-overlapping spheres in a periodic cube with Maxwellian velocities (one particle frame)";
+  }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] InputMode inputMode() const override { return InputMode::None; }
+  void run(StageContext& ctx) const override;
+
+private:
+  params::ParamSchema schema_;
+};
+
+}  // namespace grainbridge::workflows::stages

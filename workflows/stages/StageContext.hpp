@@ -1,0 +1,95 @@
+#pragma once
+// What a stage instance sees while it runs: its resolved parameters (SI), the folder it writes
+// into (the instance's `<key>.partial/`, renamed into place by the executor only when the stage
+// returns), its upstream instances, a communicator, and a way to report artifacts and a
+// summary. A stage never touches the database: the executor records what it reports, so the
+// same stage code runs under the serial and the MPI executor.
+#include <atomic>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/parallel/Communicator.hpp"
+#include "core/units/UnitSystem.hpp"
+
+namespace grainbridge::workflows::stages {
+
+struct UpstreamInstance {
+  std::string stage;
+  std::string stageType;
+  std::string key;
+  std::filesystem::path dir;  // absolute path of the completed instance folder
+  nlohmann::json manifest;    // its manifest.json (params, artifacts, summary)
+};
+
+struct ArtifactEntry {
+  std::string path;  // relative to the instance folder
+  std::string kind;  // "particle_frames", "xdmf", "report_html", "csv", "svg", ...
+};
+
+// Thrown by a stage that saw stopRequested() (SIGTERM, SIGINT) and stopped cleanly.
+struct StageInterrupted {};
+
+class StageContext {
+public:
+  StageContext(std::string workflow, std::string stage, std::string key, nlohmann::json params,
+               std::filesystem::path outputDir, std::vector<UpstreamInstance> inputs,
+               core::parallel::Communicator& comm, core::units::UnitSystem units,
+               const std::atomic<bool>& stopFlag)
+      : workflow_(std::move(workflow)),
+        stage_(std::move(stage)),
+        key_(std::move(key)),
+        params_(std::move(params)),
+        outputDir_(std::move(outputDir)),
+        inputs_(std::move(inputs)),
+        comm_(comm),
+        units_(units),
+        stopFlag_(stopFlag) {}
+
+  [[nodiscard]] const std::string& workflow() const { return workflow_; }
+  [[nodiscard]] const std::string& stage() const { return stage_; }
+  [[nodiscard]] const std::string& key() const { return key_; }
+  [[nodiscard]] const nlohmann::json& params() const { return params_; }
+  [[nodiscard]] const std::filesystem::path& outputDir() const { return outputDir_; }
+  // Where outputDir() is renamed to once the stage completes (for relative links).
+  [[nodiscard]] std::filesystem::path publishedDir() const {
+    std::string s = outputDir_.string();
+    if (s.size() > kPartialSuffix.size() && s.ends_with(kPartialSuffix)) s.resize(s.size() - kPartialSuffix.size());
+    return s;
+  }
+  static constexpr std::string_view kPartialSuffix = ".partial";
+  [[nodiscard]] const std::vector<UpstreamInstance>& inputs() const { return inputs_; }
+  [[nodiscard]] core::parallel::Communicator& comm() { return comm_; }
+  [[nodiscard]] const core::units::UnitSystem& units() const { return units_; }
+
+  // Long stages poll this between steps; when true they write a checkpoint and throw
+  // StageInterrupted, as a batch system's SIGTERM before a time limit asks.
+  [[nodiscard]] bool stopRequested() const { return stopFlag_.load(std::memory_order_relaxed); }
+
+  // Registers a file (relative to outputDir) as an artifact; the executor hashes it.
+  void addArtifact(std::string relativePath, std::string kind) {
+    artifacts_.push_back({std::move(relativePath), std::move(kind)});
+  }
+  // Deterministic results worth showing in status and reports (no timings, no hosts).
+  void setSummary(nlohmann::json summary) { summary_ = std::move(summary); }
+
+  [[nodiscard]] const std::vector<ArtifactEntry>& artifacts() const { return artifacts_; }
+  [[nodiscard]] const nlohmann::json& summary() const { return summary_; }
+
+private:
+  std::string workflow_;
+  std::string stage_;
+  std::string key_;
+  nlohmann::json params_;
+  std::filesystem::path outputDir_;
+  std::vector<UpstreamInstance> inputs_;
+  core::parallel::Communicator& comm_;
+  core::units::UnitSystem units_;
+  const std::atomic<bool>& stopFlag_;
+  std::vector<ArtifactEntry> artifacts_;
+  nlohmann::json summary_ = nlohmann::json::object();
+};
+
+}  // namespace grainbridge::workflows::stages

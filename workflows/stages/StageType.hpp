@@ -1,0 +1,33 @@
+#pragma once
+// A stage type (dem, extract, tabulate, report, ...): its name, impl_version, declared
+// parameters and how it consumes upstream stages. Virtual dispatch happens once per stage
+// instance, never in a hot loop.
+#include <string>
+
+#include "workflows/params/ParamSchema.hpp"
+#include "workflows/stages/StageContext.hpp"
+
+namespace grainbridge::workflows::stages {
+
+enum class InputMode {
+  None,         // takes no `from`
+  PerInstance,  // one instance per combination of upstream instances (dem sweep -> extract each)
+  Gather,       // one instance consuming every upstream instance (extract -> tabulate, report)
+};
+
+class StageType {
+public:
+  virtual ~StageType() = default;
+  [[nodiscard]] virtual std::string name() const = 0;
+  // Bump whenever what the stage computes changes: it is part of every stage key, so cached
+  // results of the old code are not reused.
+  [[nodiscard]] virtual int implVersion() const = 0;
+  [[nodiscard]] virtual std::string summary() const = 0;  // one-line description
+  [[nodiscard]] virtual const params::ParamSchema& params() const = 0;
+  [[nodiscard]] virtual InputMode inputMode() const = 0;
+  // Runs one instance. Throws grainbridge::Error on failure (the instance is then recorded
+  // failed and never cached) or StageInterrupted after a clean stop.
+  virtual void run(StageContext& ctx) const = 0;
+};
+
+}  // namespace grainbridge::workflows::stages
