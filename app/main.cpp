@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <iostream>
 
-#include "workflows/commands/Commands.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/json/Diagnostics.hpp"
 #include "core/parallel/Communicator.hpp"
+#include "workflows/commands/Commands.hpp"
 
 namespace gb = grainbridge;
 
@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "warnings and errors only");
   gb::workflows::commands::CommandOptions opt;
 
-  auto* run = app.add_subcommand("run", "run a workflow: every stage instance not already done (under mpirun, spread over ranks)");
+  auto* run = app.add_subcommand(
+      "run", "run a workflow: every stage instance not already done (under mpirun, spread over ranks)");
   run->add_option("config", opt.config, "workflow config (JSON)")->required();
   run->add_flag("--force", opt.force, "rerun stage instances even when a valid cached result exists");
   run->add_flag("--keep-going", opt.keepGoing, "after a failure, still run every instance that does not depend on it");
@@ -58,7 +59,8 @@ int main(int argc, char** argv) {
   addDbSource(dbRuns);
   dbRuns->add_option("--workflow", opt.workflowFilter, "only runs of this workflow");
   dbRuns->add_option("--format", opt.format, "table | csv | json")->check(CLI::IsMember({"table", "csv", "json"}));
-  auto* dbShow = dbCmd->add_subcommand("show", "the full provenance of one run: config, parameters, code, artifacts, upstream runs");
+  auto* dbShow = dbCmd->add_subcommand(
+      "show", "the full provenance of one run: config, parameters, code, artifacts, upstream runs");
   addDbSource(dbShow);
   dbShow->add_option("run", opt.runId, "run id (from db runs)")->required();
   auto* dbIntegrity = dbCmd->add_subcommand("integrity", "run SQLite's integrity check");
@@ -71,19 +73,31 @@ int main(int argc, char** argv) {
     gb::core::parallel::finalize();
     return code == 0 ? 0 : 2;
   }
-  gb::core::initLogging(quiet ? gb::core::Verbosity::Quiet : verbose ? gb::core::Verbosity::Verbose : gb::core::Verbosity::Normal, rank);
+  gb::core::initLogging(quiet     ? gb::core::Verbosity::Quiet
+                        : verbose ? gb::core::Verbosity::Verbose
+                                  : gb::core::Verbosity::Normal,
+                        rank);
 
   int code = 0;
   try {
-    if (*run) code = gb::workflows::commands::commandRun(opt);
-    else if (rank != 0) code = 0;  // only `run` uses worker ranks
-    else if (*status) code = gb::workflows::commands::commandStatus(opt);
-    else if (*check) code = gb::workflows::commands::commandCheck(opt);
-    else if (*stages) code = gb::workflows::commands::commandStages(opt);
-    else if (*report) code = gb::workflows::commands::commandReport(opt);
-    else if (*dbRuns) code = gb::workflows::commands::commandDbRuns(opt);
-    else if (*dbShow) code = gb::workflows::commands::commandDbShow(opt);
-    else if (*dbIntegrity) code = gb::workflows::commands::commandDbIntegrity(opt);
+    if (*run)
+      code = gb::workflows::commands::commandRun(opt);
+    else if (rank != 0)
+      code = 0;  // only `run` uses worker ranks
+    else if (*status)
+      code = gb::workflows::commands::commandStatus(opt);
+    else if (*check)
+      code = gb::workflows::commands::commandCheck(opt);
+    else if (*stages)
+      code = gb::workflows::commands::commandStages(opt);
+    else if (*report)
+      code = gb::workflows::commands::commandReport(opt);
+    else if (*dbRuns)
+      code = gb::workflows::commands::commandDbRuns(opt);
+    else if (*dbShow)
+      code = gb::workflows::commands::commandDbShow(opt);
+    else if (*dbIntegrity)
+      code = gb::workflows::commands::commandDbIntegrity(opt);
   } catch (const gb::core::json::InputError& e) {
     if (rank == 0) std::fprintf(stderr, "%s\n", e.what());
     code = 2;

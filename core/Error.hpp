@@ -10,12 +10,10 @@
 namespace grainbridge {
 
 class Error : public std::runtime_error {
-public:
+ public:
   explicit Error(const std::string& what) : std::runtime_error(what) {}
   // Returns a copy whose message is "<context>: <original message>".
-  [[nodiscard]] Error withContext(const std::string& context) const {
-    return Error(context + ": " + what());
-  }
+  [[nodiscard]] Error withContext(const std::string& context) const { return Error(context + ": " + what()); }
 };
 
 namespace detail {
@@ -23,7 +21,7 @@ namespace detail {
 }
 }  // namespace grainbridge
 
-#define GB_ASSERT(cond, msg)                                                          \
-  do {                                                                                \
+#define GB_ASSERT(cond, msg)                                                               \
+  do {                                                                                     \
     if (!(cond)) ::grainbridge::detail::assertionFailed(#cond, __FILE__, __LINE__, (msg)); \
   } while (false)

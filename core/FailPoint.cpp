@@ -1,10 +1,10 @@
 #include "core/FailPoint.hpp"
 
+#include <unistd.h>
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
 #include <string>
-#include <unistd.h>
 
 namespace grainbridge::core {
 

@@ -10,9 +10,15 @@ void initLogging(Verbosity verbosity, int rank) {
   const std::string rankTag = rank > 0 ? "[rank " + std::to_string(rank) + "] " : "";
   spdlog::set_pattern("[%H:%M:%S] [%^%l%$] " + rankTag + "%v");
   switch (verbosity) {
-    case Verbosity::Quiet: spdlog::set_level(spdlog::level::warn); break;
-    case Verbosity::Normal: spdlog::set_level(spdlog::level::info); break;
-    case Verbosity::Verbose: spdlog::set_level(spdlog::level::debug); break;
+    case Verbosity::Quiet:
+      spdlog::set_level(spdlog::level::warn);
+      break;
+    case Verbosity::Normal:
+      spdlog::set_level(spdlog::level::info);
+      break;
+    case Verbosity::Verbose:
+      spdlog::set_level(spdlog::level::debug);
+      break;
   }
 }
 }  // namespace grainbridge::core

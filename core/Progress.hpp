@@ -8,13 +8,13 @@
 namespace grainbridge::core {
 
 class Progress {
-public:
+ public:
   // `unit` names what is counted ("steps", "frames").
   Progress(std::string label, double total, std::string unit, double logIntervalSeconds = 10.0);
   void update(double done);
   void finish();
 
-private:
+ private:
   std::string line(double done, double elapsed) const;
 
   std::string label_;

@@ -18,7 +18,7 @@ struct MdCtxDeleter {
 };
 
 class Hasher {
-public:
+ public:
   Hasher() : ctx_(EVP_MD_CTX_new()) {
     GB_ASSERT(ctx_ && EVP_DigestInit_ex(ctx_.get(), EVP_sha256(), nullptr) == 1, "EVP sha256 init failed");
   }
@@ -36,7 +36,7 @@ public:
     return out;
   }
 
-private:
+ private:
   std::unique_ptr<EVP_MD_CTX, MdCtxDeleter> ctx_;
 };
 }  // namespace

@@ -10,7 +10,7 @@
 namespace grainbridge::db {
 
 class BusyError : public grainbridge::Error {
-public:
+ public:
   explicit BusyError(const std::string& what);
 };
 

@@ -1,11 +1,11 @@
 #include "db/Database.hpp"
 
+#include <sqlite3.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <random>
-#include <sqlite3.h>
 #include <thread>
-#include <unistd.h>
 
 #include "core/FailPoint.hpp"
 #include "core/Log.hpp"
@@ -36,16 +36,16 @@ std::string lowerCase(std::string text) {
 // Backoff between BEGIN IMMEDIATE attempts once a full busy timeout has already expired:
 // doubling, capped, with jitter so processes that gave up together do not retry in lockstep.
 std::chrono::milliseconds backoff(int attempt) {
-  thread_local std::minstd_rand random(static_cast<unsigned>(::getpid()) ^
-                                       static_cast<unsigned>(std::chrono::steady_clock::now().time_since_epoch().count()));
+  thread_local std::minstd_rand random(
+      static_cast<unsigned>(::getpid()) ^
+      static_cast<unsigned>(std::chrono::steady_clock::now().time_since_epoch().count()));
   const long base = std::min(50L << std::min(attempt, 10), 2000L);
   return std::chrono::milliseconds(base + static_cast<long>(random() % static_cast<unsigned long>(base / 2 + 1)));
 }
 
 }  // namespace
 
-Database::Database(sqlite3* connection, std::filesystem::path path)
-    : connection_(connection), path_(std::move(path)) {}
+Database::Database(sqlite3* connection, std::filesystem::path path) : connection_(connection), path_(std::move(path)) {}
 
 Database::~Database() { close(); }
 
@@ -189,8 +189,8 @@ Statement Database::prepare(const std::string& sql) {
     throwError(rc, "cannot prepare SQL \"" + abbreviated(sql) + "\"");
   }
   // A second statement after the first would be silently ignored: that is a bug in our SQL.
-  const bool onlyWhitespaceLeft = std::all_of(tail, sql.data() + sql.size(),
-                                              [](unsigned char c) { return std::isspace(c) != 0; });
+  const bool onlyWhitespaceLeft =
+      std::all_of(tail, sql.data() + sql.size(), [](unsigned char c) { return std::isspace(c) != 0; });
   if (stmt == nullptr || !onlyWhitespaceLeft) sqlite3_finalize(stmt);
   GB_ASSERT(stmt != nullptr, "prepare() of empty SQL");
   GB_ASSERT(onlyWhitespaceLeft, "prepare() takes one statement (use exec for several): " + sql);
@@ -257,8 +257,7 @@ void Database::rollbackTransaction() noexcept {
   // a second ROLLBACK would then fail with "no transaction is active".
   if (connection_ == nullptr || sqlite3_get_autocommit(connection_) != 0) return;
   const int rc = sqlite3_exec(connection_, "ROLLBACK", nullptr, nullptr, nullptr);
-  if (rc != SQLITE_OK)
-    spdlog::error("database {}: ROLLBACK failed: {}", path_.string(), sqlite3_errmsg(connection_));
+  if (rc != SQLITE_OK) spdlog::error("database {}: ROLLBACK failed: {}", path_.string(), sqlite3_errmsg(connection_));
 }
 
 }  // namespace grainbridge::db

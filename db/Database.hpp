@@ -21,7 +21,7 @@ struct sqlite3;
 namespace grainbridge::db {
 
 class Database {
-public:
+ public:
   // Opens or creates the file (creating missing parent folders), configures the connection
   // and migrates the schema to latestSchemaVersion() in one transaction. Throws Error if the
   // file cannot be opened or its schema is newer than this build knows.
@@ -51,7 +51,7 @@ public:
   static int latestSchemaVersion();
   std::string integrityCheck();  // PRAGMA integrity_check: "ok" or the problems, one per line
   std::int64_t lastInsertRowId();
-  int changes();             // rows changed by the last INSERT/UPDATE/DELETE
+  int changes();              // rows changed by the last INSERT/UPDATE/DELETE
   std::string journalMode();  // "wal" or "delete" (lower case, as SQLite reports it)
   bool inTransaction() const { return inTransaction_; }
   const std::filesystem::path& path() const { return path_; }  // absolute
@@ -61,7 +61,7 @@ public:
   void setBusyTimeout(std::chrono::milliseconds timeout);
   void setBusyRetries(int retries);
 
-private:
+ private:
   Database(sqlite3* connection, std::filesystem::path path);
   void configureForWriting();
   void checkSchemaNotNewer();

@@ -1,7 +1,7 @@
 #include "db/FileSystemKind.hpp"
 
-#include <array>
 #include <sys/vfs.h>
+#include <array>
 
 namespace grainbridge::db {
 

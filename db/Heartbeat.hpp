@@ -21,7 +21,7 @@
 namespace grainbridge::db {
 
 class Heartbeat {
-public:
+ public:
   // Opens its own connection to `dbPath` (throws Error if that fails) and starts the thread;
   // the first beat is one period after construction (claim() has just set the heartbeat).
   Heartbeat(const std::filesystem::path& dbPath, LeaseHolder me,
@@ -34,7 +34,7 @@ public:
   void remove(const std::string& key);
   std::uint64_t beats() const { return beats_.load(); }  // successful beats so far (for tests)
 
-private:
+ private:
   void run();
   void beat(const std::set<std::string>& keys);
 

@@ -1,8 +1,8 @@
 #include "db/Leases.hpp"
 
+#include <unistd.h>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
@@ -93,8 +93,8 @@ Leases::ClaimResult Leases::claim(const std::string& key, const LeaseHolder& me,
 
     if (current.sameProcess(me)) {
       // Claiming again what we hold (e.g. to attach the run id) just refreshes it.
-      Statement refresh = db_.prepare(std::string("UPDATE leases SET heartbeat_at=?, run_id=COALESCE(?, run_id) WHERE ") +
-                                      kIsMine);
+      Statement refresh =
+          db_.prepare(std::string("UPDATE leases SET heartbeat_at=?, run_id=COALESCE(?, run_id) WHERE ") + kIsMine);
       refresh.bind(1, now);
       bindRunId(refresh, 2, me.runId);
       bindIdentity(refresh, 3, key, me);
@@ -156,7 +156,8 @@ std::vector<std::pair<std::string, LeaseHolder>> Leases::deadLeases(std::chrono:
   std::vector<std::pair<std::string, LeaseHolder>> dead;
   while (read.step()) {
     LeaseHolder holder{read.columnText(1), read.columnInt64(2), read.columnText(3), read.columnInt64(4)};
-    if (!isHolderAlive(holder, read.columnText(5), staleAfter)) dead.emplace_back(read.columnText(0), std::move(holder));
+    if (!isHolderAlive(holder, read.columnText(5), staleAfter))
+      dead.emplace_back(read.columnText(0), std::move(holder));
   }
   return dead;
 }

@@ -30,7 +30,7 @@ LeaseHolder currentProcessHolder(std::int64_t runId);
 bool isHolderAlive(const LeaseHolder& holder, const std::string& heartbeatAt, std::chrono::seconds staleAfter);
 
 class Leases {
-public:
+ public:
   struct ClaimResult {
     bool claimed = false;
     std::optional<LeaseHolder> liveHolder;  // set when someone alive holds it
@@ -50,7 +50,7 @@ public:
   std::optional<LeaseHolder> holder(const std::string& key);
   std::vector<std::pair<std::string, LeaseHolder>> deadLeases(std::chrono::seconds staleAfter);
 
-private:
+ private:
   Database& db_;
 };
 

@@ -119,8 +119,7 @@ void ProvenanceStore::finishRun(std::int64_t runId, const std::string& status, c
 }
 
 void ProvenanceStore::addArtifact(const ArtifactRecord& artifact) {
-  Statement insert =
-      db_.prepare("INSERT INTO artifacts(run_id, key, path, kind, sha256, bytes) VALUES(?,?,?,?,?,?)");
+  Statement insert = db_.prepare("INSERT INTO artifacts(run_id, key, path, kind, sha256, bytes) VALUES(?,?,?,?,?,?)");
   insert.bind(1, artifact.runId)
       .bind(2, artifact.key)
       .bind(3, artifact.path)
@@ -228,8 +227,8 @@ int ProvenanceStore::markOrphanedRunsKilled(std::chrono::seconds staleAfter) {
     }
     if (!alive) orphans.push_back({query.columnInt64(0), query.columnText(1), query.columnInt64(2)});
   }
-  Statement update = db_.prepare(
-      "UPDATE runs SET status='killed', ended_at=?, error=? WHERE id=? AND status='running'");
+  Statement update =
+      db_.prepare("UPDATE runs SET status='killed', ended_at=?, error=? WHERE id=? AND status='running'");
   int marked = 0;
   for (const Candidate& orphan : orphans) {
     update.bind(1, nowUtc())

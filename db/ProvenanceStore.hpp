@@ -15,7 +15,7 @@ namespace grainbridge::db {
 class Database;
 
 class ProvenanceStore {
-public:
+ public:
   explicit ProvenanceStore(Database& db);
 
   // Empty status -> "running", empty startedAt -> now. Returns the new id.
@@ -33,8 +33,8 @@ public:
   std::vector<ArtifactRecord> artifactsOfRun(std::int64_t runId);
 
   std::optional<RunRecord> run(std::int64_t id);
-  std::vector<RunRecord> runs(const std::string& workflow);  // "" = all workflows; by id
-  std::vector<RunRecord> runsOfKey(const std::string& key);  // by id (oldest first)
+  std::vector<RunRecord> runs(const std::string& workflow);                // "" = all workflows; by id
+  std::vector<RunRecord> runsOfKey(const std::string& key);                // by id (oldest first)
   std::vector<InvocationRecord> invocations(const std::string& workflow);  // "" = all; by id
 
   // Marks runs still 'running' whose lease is gone or whose lease holder is dead (see
@@ -43,7 +43,7 @@ public:
   // key, host and pid. Returns how many runs were marked.
   int markOrphanedRunsKilled(std::chrono::seconds staleAfter);
 
-private:
+ private:
   std::vector<std::string> upstreamKeysOf(std::int64_t runId);
   std::vector<RunRecord> queryRuns(const std::string& where, const std::string& argument);
 

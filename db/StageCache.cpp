@@ -10,7 +10,7 @@ constexpr const char* kColumns = "key, run_id, workflow, stage, instance_dir, co
 
 CacheEntry readEntry(const Statement& row) {
   return CacheEntry{row.columnText(0), row.columnInt64(1), row.columnText(2),
-                    row.columnText(3), row.columnText(4), row.columnText(5)};
+                    row.columnText(3), row.columnText(4),  row.columnText(5)};
 }
 }  // namespace
 
@@ -24,8 +24,8 @@ std::optional<CacheEntry> StageCache::lookup(const std::string& key) {
 }
 
 void StageCache::record(const CacheEntry& entry) {
-  Statement insert = db_.prepare(std::string("INSERT OR REPLACE INTO stage_cache(") + kColumns +
-                                 ") VALUES(?,?,?,?,?,?)");
+  Statement insert =
+      db_.prepare(std::string("INSERT OR REPLACE INTO stage_cache(") + kColumns + ") VALUES(?,?,?,?,?,?)");
   insert.bind(1, entry.key)
       .bind(2, entry.runId)
       .bind(3, entry.workflow)

@@ -14,16 +14,16 @@ namespace grainbridge::db {
 class Database;
 
 class StageCache {
-public:
+ public:
   explicit StageCache(Database& db);
 
   std::optional<CacheEntry> lookup(const std::string& key);
   // Insert or replace (a forced rerun supersedes the old entry). Empty completedAt -> now.
   void record(const CacheEntry& entry);
-  void invalidate(const std::string& key);  // no-op if absent
+  void invalidate(const std::string& key);                       // no-op if absent
   std::vector<CacheEntry> entries(const std::string& workflow);  // "" = all; by workflow, stage, key
 
-private:
+ private:
   Database& db_;
 };
 

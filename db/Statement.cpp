@@ -43,8 +43,7 @@ Statement& Statement::operator=(Statement&& other) noexcept {
 void Statement::checkBind(int rc, int index) const {
   if (rc == SQLITE_OK) return;
   // A wrong index or a bind on a running statement is a bug in our SQL or code, not input.
-  GB_ASSERT(rc != SQLITE_RANGE && rc != SQLITE_MISUSE,
-            "bad bind index " + std::to_string(index) + " for SQL: " + sql_);
+  GB_ASSERT(rc != SQLITE_RANGE && rc != SQLITE_MISUSE, "bad bind index " + std::to_string(index) + " for SQL: " + sql_);
   throw Error("database " + dbPath_.string() + ": cannot bind parameter " + std::to_string(index) + " of SQL \"" +
               sql_ + "\": " + sqlite3_errstr(rc));
 }
@@ -84,8 +83,8 @@ bool Statement::step() {
   const int rc = sqlite3_step(stmt_);
   if (rc == SQLITE_ROW) return true;
   if (rc == SQLITE_DONE) return false;
-  const std::string message = "database " + dbPath_.string() + ": SQL \"" + sql_ + "\" failed: " +
-                              sqlite3_errmsg(connection_) + " (" + sqlite3_errstr(rc) + ")";
+  const std::string message = "database " + dbPath_.string() + ": SQL \"" + sql_ +
+                              "\" failed: " + sqlite3_errmsg(connection_) + " (" + sqlite3_errstr(rc) + ")";
   // Rewind now so the statement is reusable after the caller handles the error.
   sqlite3_reset(stmt_);
   if ((rc & 0xFF) == SQLITE_BUSY) throw BusyError(message);

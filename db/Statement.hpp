@@ -13,7 +13,7 @@ struct sqlite3_stmt;
 namespace grainbridge::db {
 
 class Statement {
-public:
+ public:
   // Called by Database::prepare; `stmt` is owned from here on.
   Statement(sqlite3* connection, sqlite3_stmt* stmt, std::string sql, std::filesystem::path dbPath);
   ~Statement();
@@ -44,7 +44,7 @@ public:
   int columnCount() const;
   const std::string& sql() const { return sql_; }
 
-private:
+ private:
   void checkBind(int rc, int index) const;
   void checkColumn(int index) const;
 

@@ -10,8 +10,8 @@ namespace {
 template <class T>
 void checkLength(const std::vector<T>& v, const char* name, std::size_t expected) {
   if (v.size() != expected) {
-    throw Error("contact array '" + std::string(name) + "' has " + std::to_string(v.size()) +
-                " entries, expected " + std::to_string(expected) + " (the length of 'i')");
+    throw Error("contact array '" + std::string(name) + "' has " + std::to_string(v.size()) + " entries, expected " +
+                std::to_string(expected) + " (the length of 'i')");
   }
 }
 }  // namespace

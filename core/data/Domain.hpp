@@ -12,11 +12,11 @@
 namespace grainbridge::core::data {
 
 struct Wall {
-  std::string kind;  // "plane" or "cylinder"
-  Vec3 origin = Vec3::Zero();     // current point on the plane, or on the cylinder axis
-  Vec3 direction = Vec3::UnitZ(); // plane normal, or cylinder axis (unit vector)
-  double radius = 0.0;            // cylinder only; 0 for a plane
-  Vec3 velocity = Vec3::Zero();   // current wall velocity
+  std::string kind;                // "plane" or "cylinder"
+  Vec3 origin = Vec3::Zero();      // current point on the plane, or on the cylinder axis
+  Vec3 direction = Vec3::UnitZ();  // plane normal, or cylinder axis (unit vector)
+  double radius = 0.0;             // cylinder only; 0 for a plane
+  Vec3 velocity = Vec3::Zero();    // current wall velocity
 
   bool operator==(const Wall&) const = default;
 };

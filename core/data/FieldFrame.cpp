@@ -8,8 +8,7 @@
 namespace grainbridge::core::data {
 
 std::size_t GridGeometry::cellCount() const {
-  return static_cast<std::size_t>(cells[0]) * static_cast<std::size_t>(cells[1]) *
-         static_cast<std::size_t>(cells[2]);
+  return static_cast<std::size_t>(cells[0]) * static_cast<std::size_t>(cells[1]) * static_cast<std::size_t>(cells[2]);
 }
 
 namespace {
@@ -51,7 +50,8 @@ void FieldFrame::validate() const {
     for (const SolidsPhaseFields& phase : solids) {
       // The name becomes an HDF5 path component and an XDMF attribute name.
       if (!isPlainName(phase.name)) {
-        throw Error("solids phase name '" + phase.name + "' must be non-empty and use only letters, digits, '_' or '-'");
+        throw Error("solids phase name '" + phase.name +
+                    "' must be non-empty and use only letters, digits, '_' or '-'");
       }
       if (!names.insert(phase.name).second) throw Error("solids phase name '" + phase.name + "' is repeated");
       checkLength(phase.ep_s, "solids/" + phase.name + "/ep_s", n);

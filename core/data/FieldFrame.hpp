@@ -13,8 +13,8 @@
 namespace grainbridge::core::data {
 
 struct GridGeometry {
-  Vec3 origin = Vec3::Zero();   // lower corner of cell (0,0,0)
-  Vec3 spacing = Vec3::Ones();  // cell size dx, dy, dz
+  Vec3 origin = Vec3::Zero();         // lower corner of cell (0,0,0)
+  Vec3 spacing = Vec3::Ones();        // cell size dx, dy, dz
   std::array<int, 3> cells{0, 0, 0};  // nx, ny, nz
 
   [[nodiscard]] std::size_t cellCount() const;
@@ -31,9 +31,9 @@ struct GridGeometry {
 struct SolidsPhaseFields {
   // Used as an HDF5 group and XDMF attribute name: letters, digits, '_' and '-' only.
   std::string name;
-  std::vector<double> ep_s;  // solids volume fraction
-  std::vector<Vec3> u_s;     // solids velocity
-  std::vector<double> theta; // granular temperature
+  std::vector<double> ep_s;   // solids volume fraction
+  std::vector<Vec3> u_s;      // solids velocity
+  std::vector<double> theta;  // granular temperature
 
   bool operator==(const SolidsPhaseFields&) const = default;
 };

@@ -10,8 +10,8 @@ namespace {
 template <class T>
 void checkLength(const std::vector<T>& v, const char* name, std::size_t expected) {
   if (v.size() != expected) {
-    throw Error("particle array '" + std::string(name) + "' has " + std::to_string(v.size()) +
-                " entries, expected " + std::to_string(expected) + " (the length of 'id')");
+    throw Error("particle array '" + std::string(name) + "' has " + std::to_string(v.size()) + " entries, expected " +
+                std::to_string(expected) + " (the length of 'id')");
   }
 }
 }  // namespace
@@ -29,8 +29,7 @@ void ParticleFrame::validate() const {
     for (std::size_t w = 0; w < domain.walls.size(); ++w) {
       const Wall& wall = domain.walls[w];
       if (wall.kind != "plane" && wall.kind != "cylinder") {
-        throw Error("wall " + std::to_string(w) + " has kind '" + wall.kind +
-                    "', expected 'plane' or 'cylinder'");
+        throw Error("wall " + std::to_string(w) + " has kind '" + wall.kind + "', expected 'plane' or 'cylinder'");
       }
     }
     contacts.validate();

@@ -18,8 +18,8 @@ data::GridGeometry readGrid(const H5InputFile& f) {
   const auto cells = f.readInt3Attribute("/grid", "cells");
   for (std::size_t a = 0; a < 3; ++a) {
     if (cells[a] < 1 || cells[a] > std::numeric_limits<int>::max()) {
-      throw f.error("attribute", "/grid/@cells", "axis " + std::to_string(a) + " has " + std::to_string(cells[a]) +
-                                                     " cells, expected at least 1");
+      throw f.error("attribute", "/grid/@cells",
+                    "axis " + std::to_string(a) + " has " + std::to_string(cells[a]) + " cells, expected at least 1");
     }
     g.origin[static_cast<int>(a)] = origin[a];
     g.spacing[static_cast<int>(a)] = spacing[a];

@@ -92,7 +92,9 @@ void FieldFrameWriter::writeXdmf() const {
         std::to_string(g.cells[2]) + " " + std::to_string(g.cells[1]) + " " + std::to_string(g.cells[0]);
     const std::string nodes =
         std::to_string(g.cells[2] + 1) + " " + std::to_string(g.cells[1] + 1) + " " + std::to_string(g.cells[0] + 1);
-    const auto zyx = [](const Vec3& v) { return formatReal(v.z()) + " " + formatReal(v.y()) + " " + formatReal(v.x()); };
+    const auto zyx = [](const Vec3& v) {
+      return formatReal(v.z()) + " " + formatReal(v.y()) + " " + formatReal(v.x());
+    };
     const auto scalar = [&](const std::string& name, const std::string& dataset) {
       return xdmfAttribute(name, "Scalar", "Cell", xdmfHdfItem(cells, "Float", 8, file + dataset));
     };

@@ -21,7 +21,7 @@
 namespace grainbridge::core::io {
 
 class FieldFrameWriter {
-public:
+ public:
   // Same contract as ParticleFrameWriter: creates `directory`/frames, and on a restarted
   // run rescans existing frames into the collection.
   FieldFrameWriter(std::filesystem::path directory, ArtifactStamp stamp, int deflateLevel = 0);
@@ -34,7 +34,7 @@ public:
   [[nodiscard]] std::filesystem::path xdmfPath() const { return directory_ / "fields.xmf"; }
   [[nodiscard]] std::size_t frameCount() const { return frames_.size(); }
 
-private:
+ private:
   void writeFile(const std::filesystem::path& path, const data::FieldFrame& frame) const;
   void writeXdmf() const;
 

@@ -75,8 +75,8 @@ void publishFile(const std::filesystem::path& temporary, const std::filesystem::
   }
   ::close(fd);
   if (::rename(temporary.c_str(), destination.c_str()) != 0) {
-    throw Error("cannot rename '" + temporary.string() + "' to '" + destination.string() + "': " +
-                std::strerror(errno));
+    throw Error("cannot rename '" + temporary.string() + "' to '" + destination.string() +
+                "': " + std::strerror(errno));
   }
   syncDirectory(destination.parent_path());
 }

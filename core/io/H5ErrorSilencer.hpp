@@ -8,7 +8,7 @@
 namespace grainbridge::core::io {
 
 class H5ErrorSilencer {
-public:
+ public:
   H5ErrorSilencer() {
     H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
@@ -17,7 +17,7 @@ public:
   H5ErrorSilencer(const H5ErrorSilencer&) = delete;
   H5ErrorSilencer& operator=(const H5ErrorSilencer&) = delete;
 
-private:
+ private:
   H5E_auto2_t func_ = nullptr;
   void* data_ = nullptr;
 };

@@ -10,7 +10,7 @@
 namespace grainbridge::core::io {
 
 class H5Handle {
-public:
+ public:
   using Closer = herr_t (*)(hid_t);
 
   H5Handle() = default;
@@ -44,7 +44,7 @@ public:
   }
   void reset() { static_cast<void>(close()); }
 
-private:
+ private:
   hid_t id_ = H5I_INVALID_HID;
   Closer closer_ = nullptr;
 };

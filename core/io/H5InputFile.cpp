@@ -22,10 +22,14 @@ std::string shapeText(const H5InputFile::Shape& dims) {
 
 const char* className(H5T_class_t cls) {
   switch (cls) {
-    case H5T_FLOAT: return "floating point";
-    case H5T_INTEGER: return "integer";
-    case H5T_STRING: return "string";
-    default: return "other";
+    case H5T_FLOAT:
+      return "floating point";
+    case H5T_INTEGER:
+      return "integer";
+    case H5T_STRING:
+      return "string";
+    default:
+      return "other";
   }
 }
 }  // namespace
@@ -156,8 +160,7 @@ std::vector<Vec3> H5InputFile::readVec3s(const std::string& dataset, Shape leadi
 
 bool H5InputFile::hasAttribute(const std::string& objectPath, const std::string& name) const {
   const H5ErrorSilencer silence;
-  return exists(objectPath) &&
-         H5Aexists_by_name(file_.get(), objectPath.c_str(), name.c_str(), H5P_DEFAULT) > 0;
+  return exists(objectPath) && H5Aexists_by_name(file_.get(), objectPath.c_str(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
 H5Handle H5InputFile::openAttribute(const std::string& objectPath, const std::string& name) const {

@@ -18,7 +18,7 @@
 namespace grainbridge::core::io {
 
 class H5InputFile {
-public:
+ public:
   // Throws if the file does not exist or is not HDF5.
   explicit H5InputFile(std::filesystem::path path);
 
@@ -41,7 +41,8 @@ public:
   [[nodiscard]] double readDoubleAttribute(const std::string& objectPath, const std::string& name) const;
   [[nodiscard]] std::int64_t readIntAttribute(const std::string& objectPath, const std::string& name) const;
   [[nodiscard]] std::string readStringAttribute(const std::string& objectPath, const std::string& name) const;
-  [[nodiscard]] std::array<double, 3> readDouble3Attribute(const std::string& objectPath, const std::string& name) const;
+  [[nodiscard]] std::array<double, 3> readDouble3Attribute(const std::string& objectPath,
+                                                           const std::string& name) const;
   [[nodiscard]] std::array<std::int64_t, 3> readInt3Attribute(const std::string& objectPath,
                                                               const std::string& name) const;
 
@@ -51,7 +52,7 @@ public:
   // "file '<path>': <kind> '<object>': <what>" — the one message format readers use.
   [[nodiscard]] Error error(const std::string& kind, const std::string& object, const std::string& what) const;
 
-private:
+ private:
   // Opens `dataset`, checks its type class and shape, and returns it with its element count.
   H5Handle openChecked(const std::string& dataset, const Shape& expectedShape, H5T_class_t cls,
                        std::size_t& count) const;

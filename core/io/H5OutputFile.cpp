@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 #include "core/Error.hpp"
 #include "core/io/H5ErrorSilencer.hpp"
@@ -56,8 +57,8 @@ void H5OutputFile::createGroup(const std::string& path) {
   if (!gcpl || !group) fail(path, "cannot create group");
 }
 
-void H5OutputFile::writeRaw(const std::string& path, hid_t memType, hid_t fileType, const void* data,
-                            std::size_t count, const std::vector<hsize_t>& dims) {
+void H5OutputFile::writeRaw(const std::string& path, hid_t memType, hid_t fileType, const void* data, std::size_t count,
+                            const std::vector<hsize_t>& dims) {
   const H5ErrorSilencer silence;
   const hsize_t expected = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
   GB_ASSERT(expected == count, "dataset '" + path + "': data size does not match its shape");

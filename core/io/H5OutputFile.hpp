@@ -19,7 +19,7 @@
 namespace grainbridge::core::io {
 
 class H5OutputFile {
-public:
+ public:
   // Creates or truncates `path`. deflateLevel 0 stores datasets contiguous; 1..9 chunks
   // and deflates them (still deterministic, but slower to write).
   explicit H5OutputFile(std::filesystem::path path, int deflateLevel = 0);
@@ -50,7 +50,7 @@ public:
 
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
-private:
+ private:
   void writeRaw(const std::string& path, hid_t memType, hid_t fileType, const void* data, std::size_t count,
                 const std::vector<hsize_t>& dims);
   void writeAttributeRaw(const std::string& objectPath, const std::string& name, hid_t memType, hid_t fileType,

@@ -45,7 +45,8 @@ data::Domain readDomain(const H5InputFile& f) {
 
 std::size_t length(const H5InputFile& f, const std::string& dataset) {
   const std::vector<hsize_t> dims = f.shape(dataset);
-  if (dims.size() != 1) throw f.error("dataset", dataset, "expected a 1-D array, found rank " + std::to_string(dims.size()));
+  if (dims.size() != 1)
+    throw f.error("dataset", dataset, "expected a 1-D array, found rank " + std::to_string(dims.size()));
   return static_cast<std::size_t>(dims[0]);
 }
 }  // namespace

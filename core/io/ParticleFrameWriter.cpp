@@ -44,8 +44,8 @@ std::filesystem::path ParticleFrameWriter::write(const data::ParticleFrame& fram
     std::filesystem::remove(temporary, ec);
     throw;
   }
-  frames_[frame.step] = ParticleFrameSummary{path, frame.step, frame.time, frame.size(), frame.contacts.size(),
-                                             !frame.externalForce.empty()};
+  frames_[frame.step] = ParticleFrameSummary{
+      path, frame.step, frame.time, frame.size(), frame.contacts.size(), !frame.externalForce.empty()};
   writeXdmf();
   return path;
 }
@@ -165,8 +165,8 @@ void ParticleFrameWriter::writeXdmf() const {
         << "     " << xdmfAttribute("species", "Scalar", "Node", xdmfHdfItem(n, "Int", 4, file + "/species")) << "\n"
         << "     " << xdmfAttribute("radius", "Scalar", "Node", xdmfHdfItem(n, "Float", 8, file + "/radius")) << "\n"
         << "     " << xdmfAttribute("mass", "Scalar", "Node", xdmfHdfItem(n, "Float", 8, file + "/mass")) << "\n"
-        << "     "
-        << xdmfAttribute("velocity", "Vector", "Node", xdmfHdfItem(n + " 3", "Float", 8, file + "/velocity")) << "\n"
+        << "     " << xdmfAttribute("velocity", "Vector", "Node", xdmfHdfItem(n + " 3", "Float", 8, file + "/velocity"))
+        << "\n"
         << "     "
         << xdmfAttribute("angular_velocity", "Vector", "Node",
                          xdmfHdfItem(n + " 3", "Float", 8, file + "/angular_velocity"))

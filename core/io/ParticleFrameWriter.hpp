@@ -29,7 +29,7 @@
 namespace grainbridge::core::io {
 
 class ParticleFrameWriter {
-public:
+ public:
   // Creates `directory`/frames if needed. On a directory that already holds frames (a
   // restarted run) the existing frames are rescanned into the XDMF collection and stray
   // temporaries from a killed writer are removed. deflateLevel 0 (default) stores plain
@@ -46,7 +46,7 @@ public:
   [[nodiscard]] std::filesystem::path xdmfPath() const { return directory_ / "particles.xmf"; }
   [[nodiscard]] std::size_t frameCount() const { return frames_.size(); }
 
-private:
+ private:
   void writeFile(const std::filesystem::path& path, const data::ParticleFrame& frame) const;
   void writeXdmf() const;
 

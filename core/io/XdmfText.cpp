@@ -10,12 +10,23 @@ std::string xmlEscape(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -35,8 +46,8 @@ std::string xdmfHdfItem(const std::string& dimensions, std::string_view numberTy
 
 std::string xdmfAttribute(const std::string& name, std::string_view attributeType, std::string_view center,
                           const std::string& dataItem) {
-  return "<Attribute Name=\"" + xmlEscape(name) + "\" AttributeType=\"" + std::string(attributeType) +
-         "\" Center=\"" + std::string(center) + "\">" + dataItem + "</Attribute>";
+  return "<Attribute Name=\"" + xmlEscape(name) + "\" AttributeType=\"" + std::string(attributeType) + "\" Center=\"" +
+         std::string(center) + "\">" + dataItem + "</Attribute>";
 }
 
 }  // namespace grainbridge::core::io

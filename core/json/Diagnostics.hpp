@@ -15,7 +15,7 @@ struct Diagnostic {
 };
 
 class Diagnostics {
-public:
+ public:
   void add(std::string where, std::string message) { items_.push_back({std::move(where), std::move(message)}); }
   [[nodiscard]] bool empty() const { return items_.empty(); }
   [[nodiscard]] std::size_t size() const { return items_.size(); }
@@ -23,19 +23,19 @@ public:
   // One line per problem: "<source>: <where>: <message>".
   [[nodiscard]] std::string format(const std::string& source) const;
 
-private:
+ private:
   std::vector<Diagnostic> items_;
 };
 
 // Thrown when an input has one or more problems; the CLI prints format() and exits 2.
 class InputError : public Error {
-public:
+ public:
   InputError(std::string source, Diagnostics diagnostics)
       : Error(diagnostics.format(source)), source_(std::move(source)), diagnostics_(std::move(diagnostics)) {}
   [[nodiscard]] const Diagnostics& diagnostics() const { return diagnostics_; }
   [[nodiscard]] const std::string& source() const { return source_; }
 
-private:
+ private:
   std::string source_;
   Diagnostics diagnostics_;
 };

@@ -12,9 +12,12 @@ namespace grainbridge::core::json {
 std::string pointerToken(const std::string& key) {
   std::string out;
   for (char c : key) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else out += c;
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
   }
   return out;
 }
@@ -26,7 +29,7 @@ using nlohmann::json;
 // SAX handler building the DOM while tracking the JSON pointer of the current value and the
 // keys already seen in each open object.
 class DuplicateCheckingBuilder {
-public:
+ public:
   explicit DuplicateCheckingBuilder(Diagnostics& diagnostics) : diagnostics_(diagnostics) {}
 
   bool null() { return put(json(nullptr)); }
@@ -46,8 +49,10 @@ public:
     Frame& f = frames_.back();
     f.currentKey = k;
     if (!f.seenKeys.insert(k).second) {
-      diagnostics_.add(pointerOfFrame() + "/" + pointerToken(k),
-                       "key \"" + k + "\" is given more than once in this object (a plain JSON parse would silently keep only the last one)");
+      diagnostics_.add(
+          pointerOfFrame() + "/" + pointerToken(k),
+          "key \"" + k +
+              "\" is given more than once in this object (a plain JSON parse would silently keep only the last one)");
     }
     return true;
   }
@@ -81,7 +86,7 @@ public:
   json takeResult() { return std::move(root_); }
   [[nodiscard]] bool syntaxError() const { return syntaxError_; }
 
-private:
+ private:
   struct Frame {
     json* value;
     std::string currentKey;
@@ -100,8 +105,10 @@ private:
     std::string p;
     for (std::size_t i = 1; i < frames_.size(); ++i) {
       const Frame& parent = frames_[i - 1];
-      if (parent.value->is_object()) p += "/" + pointerToken(parent.currentKey);
-      else p += "/" + std::to_string(parent.arrayIndex - 1);
+      if (parent.value->is_object())
+        p += "/" + pointerToken(parent.currentKey);
+      else
+        p += "/" + std::to_string(parent.arrayIndex - 1);
     }
     return p;
   }

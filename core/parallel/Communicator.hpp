@@ -17,7 +17,7 @@ int worldRank();  // 0 when MPI is not active
 int worldSize();  // 1 when MPI is not active
 
 class Communicator {
-public:
+ public:
   static Communicator self();
   static Communicator world();
   explicit Communicator(MPI_Comm comm, bool owned = false) : comm_(comm), owned_(owned) {}
@@ -32,7 +32,7 @@ public:
   [[nodiscard]] MPI_Comm raw() const { return comm_; }
   [[nodiscard]] bool isMpi() const { return comm_ != MPI_COMM_NULL; }
 
-private:
+ private:
   MPI_Comm comm_ = MPI_COMM_NULL;  // MPI_COMM_NULL: serial, MPI not initialised
   bool owned_ = false;             // freed on destruction (created by MPI_Comm_create_group)
 };

@@ -20,9 +20,9 @@ struct Dimension {
   static constexpr Dimension frequency() { return {0, 0, -1}; }
   static constexpr Dimension density() { return {-3, 1, 0}; }
   static constexpr Dimension force() { return {1, 1, -2}; }
-  static constexpr Dimension stiffness() { return {0, 1, -2}; }    // N/m
-  static constexpr Dimension pressure() { return {-1, 1, -2}; }    // Pa
-  static constexpr Dimension viscosity() { return {-1, 1, -1}; }   // Pa s
+  static constexpr Dimension stiffness() { return {0, 1, -2}; }            // N/m
+  static constexpr Dimension pressure() { return {-1, 1, -2}; }            // Pa
+  static constexpr Dimension viscosity() { return {-1, 1, -1}; }           // Pa s
   static constexpr Dimension granularTemperature() { return {2, 0, -2}; }  // m^2/s^2
 
   [[nodiscard]] bool isNone() const { return length == 0 && mass == 0 && time == 0; }

@@ -9,7 +9,7 @@
 namespace grainbridge::core::units {
 
 class UnitSystem {
-public:
+ public:
   static UnitSystem si() { return UnitSystem(); }
   // d0 [m], m0 [kg], g [m/s^2]; all must be positive.
   static UnitSystem reduced(double d0, double m0, double g);
@@ -24,7 +24,7 @@ public:
   // Inverse of toJson (used to hand a stage's unit system to an MPI worker).
   static UnitSystem fromJson(const nlohmann::json& j);
 
-private:
+ private:
   bool reduced_ = false;
   double d0_ = 1.0;
   double m0_ = 1.0;

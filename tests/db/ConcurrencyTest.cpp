@@ -2,13 +2,13 @@
 // locks and the WAL shared memory), which threads of one process would not exercise.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <fcntl.h>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "db/Database.hpp"
 #include "db/Leases.hpp"

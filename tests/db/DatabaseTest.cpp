@@ -14,11 +14,11 @@
 namespace grainbridge::db {
 namespace {
 
-using ::testing::HasSubstr;
 using test::countRows;
 using test::sampleInvocation;
 using test::sampleRun;
 using test::TempDir;
+using ::testing::HasSubstr;
 
 TEST(Database, FreshDatabaseMigratesToLatestVersion) {
   TempDir dir;
@@ -82,8 +82,8 @@ TEST(Database, UsesWalOnLocalDiskAndEnforcesForeignKeys) {
 TEST(Database, RecognisesNetworkFileSystems) {
   for (std::uint64_t magic : {0x6969ULL, 0xFF534D42ULL, 0xFE534D42ULL, 0x0BD00BD0ULL, 0x47504653ULL, 0x19830326ULL})
     EXPECT_TRUE(isNetworkFileSystemMagic(magic)) << std::hex << magic;
-  for (std::uint64_t magic : {0xEF53ULL /* ext4 */, 0x58465342ULL /* xfs */, 0x01021994ULL /* tmpfs */,
-                              0x794C7630ULL /* overlayfs */})
+  for (std::uint64_t magic :
+       {0xEF53ULL /* ext4 */, 0x58465342ULL /* xfs */, 0x01021994ULL /* tmpfs */, 0x794C7630ULL /* overlayfs */})
     EXPECT_FALSE(isNetworkFileSystemMagic(magic)) << std::hex << magic;
 }
 
@@ -210,8 +210,9 @@ TEST(Database, StatementErrorsNameTheFileAndTheSql) {
     EXPECT_THAT(e.what(), HasSubstr(db.path().string()));
     EXPECT_THAT(e.what(), HasSubstr("SELEKT 1"));
   }
-  Statement insert = db.prepare("INSERT INTO leases(key, host, pid, pid_start, claimed_at, heartbeat_at) "
-                                "VALUES('k', NULL, 1, '1', 'x', 'x')");
+  Statement insert = db.prepare(
+      "INSERT INTO leases(key, host, pid, pid_start, claimed_at, heartbeat_at) "
+      "VALUES('k', NULL, 1, '1', 'x', 'x')");
   try {
     insert.step();
     FAIL();

@@ -175,7 +175,7 @@ TEST(Heartbeat, BackgroundThreadAdvancesHeartbeat) {
     EXPECT_GT(heartbeatOf(db, "a"), old);
     EXPECT_GE(heartbeat.beats(), 1u);
     heartbeat.remove("a");
-  }  // joins
+  }                                      // joins
   EXPECT_EQ(heartbeatOf(db, "b"), old);  // never added
 }
 
@@ -195,8 +195,7 @@ TEST(Heartbeat, SkipsBeatsWhileTheDatabaseIsLockedAndRecovers) {
   EXPECT_EQ(heartbeat.beats(), 0u);
   db.exec("COMMIT");
   const auto deadline = std::chrono::steady_clock::now() + 10s;
-  while (heartbeatOf(db, "a") == old && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(10ms);
+  while (heartbeatOf(db, "a") == old && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(10ms);
   EXPECT_GT(heartbeatOf(db, "a"), old);
 }
 

@@ -9,10 +9,10 @@
 namespace grainbridge::db {
 namespace {
 
-using ::testing::HasSubstr;
 using test::sampleInvocation;
 using test::sampleRun;
 using test::TempDir;
+using ::testing::HasSubstr;
 
 TEST(ProvenanceStore, InvocationRoundTrip) {
   TempDir dir;

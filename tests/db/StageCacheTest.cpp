@@ -41,7 +41,7 @@ TEST(StageCache, RecordLookupReplaceInvalidate) {
   cache.invalidate("k1");
   EXPECT_FALSE(cache.lookup("k1").has_value());
   EXPECT_TRUE(cache.entries("shear").empty());
-  cache.invalidate("k1");  // absent: no-op
+  cache.invalidate("k1");                                                                   // absent: no-op
   EXPECT_THROW(cache.record(CacheEntry{"k3", 9999, "shear", "bed", "bed/k3", ""}), Error);  // no such run
 }
 

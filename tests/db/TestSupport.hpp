@@ -3,11 +3,11 @@
 // process identity that is certainly dead (a reaped child).
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <filesystem>
 #include <random>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "db/Database.hpp"
 #include "db/Leases.hpp"
@@ -16,7 +16,7 @@
 namespace grainbridge::db::test {
 
 class TempDir {
-public:
+ public:
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::random_device random;
@@ -34,7 +34,7 @@ public:
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 
-private:
+ private:
   std::filesystem::path path_;
 };
 

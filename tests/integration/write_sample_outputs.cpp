@@ -7,9 +7,8 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <vector>
-
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "core/Files.hpp"
 #include "core/io/FieldFrameWriter.hpp"
@@ -97,8 +96,8 @@ int main(int argc, char** argv) {
     io::ParticleFrameWriter particles(out / "particles", {"paraview-check"});
     const std::vector<std::pair<double, int>> particleFrames{{0.0, 3}, {0.5, 0}, {1.25, 2}};
     for (std::size_t k = 0; k < particleFrames.size(); ++k) {
-      const data::ParticleFrame f = particleFrame(static_cast<std::int64_t>(100 * k), particleFrames[k].first,
-                                                  particleFrames[k].second);
+      const data::ParticleFrame f =
+          particleFrame(static_cast<std::int64_t>(100 * k), particleFrames[k].first, particleFrames[k].second);
       particles.write(f);
       expected["particles"]["frames"].push_back(
           {{"time", f.time}, {"points", f.size()}, {"contacts", f.contacts.size()}, {"radius", f.radius}});
@@ -109,16 +108,16 @@ int main(int argc, char** argv) {
     for (const auto& [step, time] : std::vector<std::pair<std::int64_t, double>>{{0, 0.0}, {40, 2.0}}) {
       const data::FieldFrame f = fieldFrame(step, time);
       fields.write(f);
-      expected["fields"]["frames"].push_back({{"time", f.time},
-                                              {"cells", f.grid.cellCount()},
-                                              {"points", (f.grid.cells[0] + 1) * (f.grid.cells[1] + 1) *
-                                                             (f.grid.cells[2] + 1)},
-                                              {"ep_g", f.ep_g}});
+      expected["fields"]["frames"].push_back(
+          {{"time", f.time},
+           {"cells", f.grid.cellCount()},
+           {"points", (f.grid.cells[0] + 1) * (f.grid.cells[1] + 1) * (f.grid.cells[2] + 1)},
+           {"ep_g", f.ep_g}});
     }
     expected["fields"]["xmf"] = fields.xdmfPath().string();
     expected["fields"]["bounds"] = {0.0, 1.0, 0.0, 1.5, 0.0, 2.0};  // origin + cells * spacing
-    expected["fields"]["arrays"] = {"ep_g", "p_g", "u_g", "ep_s_fine", "u_s_fine", "theta_fine",
-                                    "ep_s_coarse", "u_s_coarse", "theta_coarse"};
+    expected["fields"]["arrays"] = {"ep_g",       "p_g",         "u_g",        "ep_s_fine",   "u_s_fine",
+                                    "theta_fine", "ep_s_coarse", "u_s_coarse", "theta_coarse"};
     grainbridge::core::writeFileAtomically(out / "expected.json", expected.dump(2) + "\n");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "write_sample_outputs: %s\n", e.what());

@@ -14,8 +14,8 @@
 namespace grainbridge::testing {
 
 struct CommandResult {
-  int exitCode = -1;  // exit status, or 128 + signal number if killed by a signal
-  std::string output; // stdout and stderr interleaved
+  int exitCode = -1;   // exit status, or 128 + signal number if killed by a signal
+  std::string output;  // stdout and stderr interleaved
 };
 
 inline CommandResult runCommand(const std::string& command) {
@@ -27,8 +27,10 @@ inline CommandResult runCommand(const std::string& command) {
   while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
   const int status = ::pclose(p);
   // popen runs /bin/sh -c, which reports a child killed by signal s as exit 128 + s.
-  if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
-  else if (WIFSIGNALED(status)) r.exitCode = 128 + WTERMSIG(status);
+  if (WIFEXITED(status))
+    r.exitCode = WEXITSTATUS(status);
+  else if (WIFSIGNALED(status))
+    r.exitCode = 128 + WTERMSIG(status);
   return r;
 }
 
@@ -37,7 +39,7 @@ inline std::filesystem::path sourceDir() { return GRAINBRIDGE_SOURCE_DIR; }
 
 // A fresh folder under the system temp dir, removed when the object goes out of scope.
 class TempDir {
-public:
+ public:
   explicit TempDir(const std::string& prefix = "gb-test") {
     std::random_device rd;
     path_ = std::filesystem::temp_directory_path() / (prefix + "-" + std::to_string(rd()) + std::to_string(rd()));
@@ -51,7 +53,7 @@ public:
   TempDir& operator=(const TempDir&) = delete;
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
-private:
+ private:
   std::filesystem::path path_;
 };
 
@@ -69,8 +71,9 @@ inline std::string readText(const std::filesystem::path& p) {
 
 // Runs `grainbridge <args>` with `workdir` as the current folder.
 inline CommandResult runGrainbridge(const std::filesystem::path& workdir, const std::string& args,
-                                 const std::string& env = "") {
-  return runCommand("cd '" + workdir.string() + "' && " + env + (env.empty() ? "" : " ") + grainbridgeBinary() + " " + args);
+                                    const std::string& env = "") {
+  return runCommand("cd '" + workdir.string() + "' && " + env + (env.empty() ? "" : " ") + grainbridgeBinary() + " " +
+                    args);
 }
 
 }  // namespace grainbridge::testing

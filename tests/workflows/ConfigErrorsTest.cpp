@@ -48,7 +48,8 @@ TEST(BadConfigFile, MissingFileIsAConfigError) {
   TempDir work;
   const auto r = runGrainbridge(work.path(), "check does-not-exist.json");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_NE(r.output.find("does-not-exist.json: (document root): config file does not exist"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("does-not-exist.json: (document root): config file does not exist"), std::string::npos)
+      << r.output;
 }
 
 TEST(BadConfigFile, DirectoryIsAConfigError) {

@@ -37,7 +37,10 @@ std::multiset<std::string> rows(const fs::path& dbFile) {
       out.insert(row);
     }
   };
-  collect("runs", "SELECT workflow, stage, stage_type, impl_version, key, params_json, instance_dir, code_version, code_dirty, status, error, summary_json FROM runs", 12);
+  collect("runs",
+          "SELECT workflow, stage, stage_type, impl_version, key, params_json, instance_dir, code_version, code_dirty, "
+          "status, error, summary_json FROM runs",
+          12);
   collect("run_inputs", "SELECT r.key, i.upstream_key FROM run_inputs i JOIN runs r ON r.id = i.run_id", 2);
   collect("artifacts", "SELECT key, path, kind, sha256, bytes FROM artifacts", 5);
   collect("stage_cache", "SELECT key, workflow, stage, instance_dir FROM stage_cache", 4);
@@ -53,14 +56,17 @@ TEST(MpiExecutor, TwoRanksGiveTheSameRowsAsSerial) {
   writeText(parallel.path() / "wf.json", kWorkflow);
   auto s = runGrainbridge(serial.path(), "run wf.json");
   ASSERT_EQ(s.exitCode, 0) << s.output;
-  auto p = runCommand("cd '" + parallel.path().string() +
-                      "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-                      "mpirun -np 2 --oversubscribe " + grainbridgeBinary() + " run wf.json");
+  auto p =
+      runCommand("cd '" + parallel.path().string() +
+                 "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
+                 "mpirun -np 2 --oversubscribe " +
+                 grainbridgeBinary() + " run wf.json");
   ASSERT_EQ(p.exitCode, 0) << p.output;
 
   const auto a = rows(serial.path() / "results/wf/grainbridge.sqlite");
   const auto b = rows(parallel.path() / "results/wf/grainbridge.sqlite");
-  EXPECT_GT(a.size(), 7u + 6u + 6u * 2 + 7u + 1u);  // runs, run_inputs, gas artifacts, cache, invocation, + rep's artifacts
+  EXPECT_GT(a.size(),
+            7u + 6u + 6u * 2 + 7u + 1u);  // runs, run_inputs, gas artifacts, cache, invocation, + rep's artifacts
   EXPECT_EQ(a, b);
 
   // The ranks column says who ran it: rank 0 serially, a worker under MPI.
@@ -70,9 +76,10 @@ TEST(MpiExecutor, TwoRanksGiveTheSameRowsAsSerial) {
   EXPECT_EQ(st.columnInt64(0), 0);
 
   // A second MPI run finds everything cached.
-  auto again = runCommand("cd '" + parallel.path().string() +
-                          "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 --oversubscribe " +
-                          grainbridgeBinary() + " run wf.json");
+  auto again =
+      runCommand("cd '" + parallel.path().string() +
+                 "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 --oversubscribe " +
+                 grainbridgeBinary() + " run wf.json");
   ASSERT_EQ(again.exitCode, 0) << again.output;
   EXPECT_NE(again.output.find("nothing to do"), std::string::npos) << again.output;
 }

@@ -15,7 +15,9 @@ ParamSchema schema() {
       .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).defaultValue("2 mm").positive().doc("d"))
       .add(ParamSpec::integer("steps").defaultValue(10).min(1).doc("n"))
       .add(ParamSpec::string("law").defaultValue("linear").options({"linear", "hertz"}).doc("contact law"))
-      .add(ParamSpec::quantityList("gravity", Dimension::acceleration(), 3).defaultValue(json::array({0, 0, -9.81})).doc("g"))
+      .add(ParamSpec::quantityList("gravity", Dimension::acceleration(), 3)
+               .defaultValue(json::array({0, 0, -9.81}))
+               .doc("g"))
       .add(ParamSpec::boolean("progress").defaultValue(true).doesNotAffectResults().doc("progress output"));
   return s;
 }
@@ -37,18 +39,24 @@ TEST(ParamSchema, DefaultsAreSIEvenUnderReducedUnits) {
   const auto reduced = UnitSystem::reduced(0.004, 1e-4, 9.81);
   const json r = schema().resolve(json{{"dt", 2e-4}}, {}, reduced, "/p", d);
   ASSERT_TRUE(d.empty());
-  EXPECT_DOUBLE_EQ(r["diameter"].get<double>(), 2e-3);            // default: SI, not 2 mm * d0
-  EXPECT_DOUBLE_EQ(r["dt"].get<double>(), 2e-4 * reduced.t0());    // bare number: reduced
+  EXPECT_DOUBLE_EQ(r["diameter"].get<double>(), 2e-3);           // default: SI, not 2 mm * d0
+  EXPECT_DOUBLE_EQ(r["dt"].get<double>(), 2e-4 * reduced.t0());  // bare number: reduced
 }
 
 TEST(ParamSchema, ReportsEveryProblemWithPointer) {
   Diagnostics d;
-  schema().resolve(json{{"dt", -1}, {"stepz", 3}, {"law", "herz"}, {"gravity", {0, 0}}}, {}, UnitSystem::si(), "/stages/s/params", d);
+  schema().resolve(json{{"dt", -1}, {"stepz", 3}, {"law", "herz"}, {"gravity", {0, 0}}}, {}, UnitSystem::si(),
+                   "/stages/s/params", d);
   ASSERT_EQ(d.size(), 4u) << d.format("t");
   const std::string all = d.format("cfg");
   EXPECT_NE(all.find("/stages/s/params/dt: expected dt > 0 (SI, s), found -1"), std::string::npos) << all;
-  EXPECT_NE(all.find("/stages/s/params/stepz: unknown parameter \"stepz\" (did you mean \"steps\"?)"), std::string::npos) << all;
-  EXPECT_NE(all.find("/stages/s/params/law: expected string: one of linear|hertz, found \"herz\" (did you mean \"hertz\"?)"), std::string::npos) << all;
+  EXPECT_NE(all.find("/stages/s/params/stepz: unknown parameter \"stepz\" (did you mean \"steps\"?)"),
+            std::string::npos)
+      << all;
+  EXPECT_NE(
+      all.find("/stages/s/params/law: expected string: one of linear|hertz, found \"herz\" (did you mean \"hertz\"?)"),
+      std::string::npos)
+      << all;
   EXPECT_NE(all.find("/stages/s/params/gravity: expected a list of 3 quantities"), std::string::npos) << all;
 }
 

@@ -37,11 +37,12 @@ std::vector<db::RunRecord> runs(const fs::path& work) {
 }
 
 int countStage(const std::vector<db::RunRecord>& rs, const std::string& stage, const std::string& status = "done") {
-  return static_cast<int>(std::count_if(rs.begin(), rs.end(), [&](const auto& r) { return r.stage == stage && r.status == status; }));
+  return static_cast<int>(
+      std::count_if(rs.begin(), rs.end(), [&](const auto& r) { return r.stage == stage && r.status == status; }));
 }
 
 class WorkflowRun : public ::testing::Test {
-protected:
+ protected:
   void write(const json& cfg) { writeText(work.path() / "wf.json", cfg.dump(2)); }
   CommandResult run(const std::string& extra = "", const std::string& env = "") {
     return runGrainbridge(work.path(), "run wf.json " + extra, env);
@@ -94,7 +95,8 @@ TEST_F(WorkflowRun, ReorderedKeysAndNonResultParamsInvalidateNothing) {
 TEST_F(WorkflowRun, PhysicsParameterChangeRerunsOnlyDownstream) {
   json cfg = smallWorkflow();
   cfg["stages"]["gas"]["sweep"]["solid_fraction"] = {0.05};
-  cfg["stages"]["other"] = json::parse(R"({"type": "particle_gas", "params": {"n_particles": 50, "solid_fraction": 0.1, "progress": false}})");
+  cfg["stages"]["other"] = json::parse(
+      R"({"type": "particle_gas", "params": {"n_particles": 50, "solid_fraction": 0.1, "progress": false}})");
   write(cfg);
   ASSERT_EQ(run().exitCode, 0);
   cfg["stages"]["gas"]["params"]["seed"] = 4;
@@ -212,8 +214,8 @@ TEST_F(WorkflowRun, KillAtRandomMomentsThenRerun) {
   cfg["stages"]["gas"]["sweep"]["solid_fraction"] = {0.05, 0.1, 0.15};
   write(cfg);
   for (int delayMs : {30, 120, 250, 400}) {
-    runCommand("cd '" + work.path().string() + "' && (" + grainbridgeBinary() +
-               " run wf.json -q & pid=$!; sleep " + std::to_string(delayMs / 1000.0) + "; kill -9 $pid; wait $pid) >/dev/null 2>&1");
+    runCommand("cd '" + work.path().string() + "' && (" + grainbridgeBinary() + " run wf.json -q & pid=$!; sleep " +
+               std::to_string(delayMs / 1000.0) + "; kill -9 $pid; wait $pid) >/dev/null 2>&1");
   }
   auto again = run();
   ASSERT_EQ(again.exitCode, 0) << again.output;

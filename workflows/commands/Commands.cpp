@@ -101,8 +101,10 @@ int commandStatus(const CommandOptions& opt) {
 int commandStages(const CommandOptions& opt) {
   for (const auto& type : registry().all()) {
     if (opt.markdown) {
-      std::printf("## `%s` (impl_version %d)\n\n%s.\n\n| parameter | type | default | range | affects key | description |\n|---|---|---|---|---|---|\n",
-                  type->name().c_str(), type->implVersion(), type->summary().c_str());
+      std::printf(
+          "## `%s` (impl_version %d)\n\n%s.\n\n| parameter | type | default | range | affects key | description "
+          "|\n|---|---|---|---|---|---|\n",
+          type->name().c_str(), type->implVersion(), type->summary().c_str());
     } else {
       std::printf("%s (impl_version %d): %s\n", type->name().c_str(), type->implVersion(), type->summary().c_str());
     }
@@ -113,7 +115,8 @@ int commandStages(const CommandOptions& opt) {
                     p.rangeDescription().c_str(), p.affectsResults() ? "yes" : "no", p.docText().c_str());
       } else {
         std::printf("  %-22s %-28s %-14s %-18s %s%s\n", p.name().c_str(), p.typeDescription().c_str(), def.c_str(),
-                    p.rangeDescription().c_str(), p.docText().c_str(), p.affectsResults() ? "" : " (not in the stage key)");
+                    p.rangeDescription().c_str(), p.docText().c_str(),
+                    p.affectsResults() ? "" : " (not in the stage key)");
       }
     }
     std::printf("\n");
@@ -141,7 +144,9 @@ int commandReport(const CommandOptions& opt) {
   fs::create_directories(out);
   report::writeHtmlReport("grainbridge report: " + cfg.name, done, out, out);
   std::printf("%s\n", (out / "report.html").c_str());
-  if (missing > 0) spdlog::warn("{} of {} stage instance(s) are not complete and are not in the report", missing, plan.instances.size());
+  if (missing > 0)
+    spdlog::warn("{} of {} stage instance(s) are not complete and are not in the report", missing,
+                 plan.instances.size());
   return 0;
 }
 
@@ -152,20 +157,29 @@ int commandDbRuns(const CommandOptions& opt) {
   if (opt.format == "json") {
     json out = json::array();
     for (const auto& r : runs) {
-      out.push_back({{"id", r.id}, {"workflow", r.workflow}, {"stage", r.stage}, {"stage_type", r.stageType},
-                     {"key", r.key}, {"status", r.status}, {"started_at", r.startedAt}, {"ended_at", r.endedAt},
-                     {"host", r.host}, {"code_version", r.codeVersion}, {"error", r.error}});
+      out.push_back({{"id", r.id},
+                     {"workflow", r.workflow},
+                     {"stage", r.stage},
+                     {"stage_type", r.stageType},
+                     {"key", r.key},
+                     {"status", r.status},
+                     {"started_at", r.startedAt},
+                     {"ended_at", r.endedAt},
+                     {"host", r.host},
+                     {"code_version", r.codeVersion},
+                     {"error", r.error}});
     }
     std::printf("%s\n", out.dump(2).c_str());
   } else if (opt.format == "csv") {
     std::printf("id,workflow,stage,stage_type,key,status,started_at,ended_at,host,code_version\n");
     for (const auto& r : runs) {
-      std::printf("%lld,%s,%s,%s,%s,%s,%s,%s,%s,%s\n", static_cast<long long>(r.id), r.workflow.c_str(), r.stage.c_str(),
-                  r.stageType.c_str(), r.key.c_str(), r.status.c_str(), r.startedAt.c_str(), r.endedAt.c_str(),
-                  r.host.c_str(), r.codeVersion.c_str());
+      std::printf("%lld,%s,%s,%s,%s,%s,%s,%s,%s,%s\n", static_cast<long long>(r.id), r.workflow.c_str(),
+                  r.stage.c_str(), r.stageType.c_str(), r.key.c_str(), r.status.c_str(), r.startedAt.c_str(),
+                  r.endedAt.c_str(), r.host.c_str(), r.codeVersion.c_str());
     }
   } else {
-    std::printf("%5s  %-16s %-14s %-8s %-12s %-24s %s\n", "id", "workflow", "stage", "status", "key", "started", "error");
+    std::printf("%5s  %-16s %-14s %-8s %-12s %-24s %s\n", "id", "workflow", "stage", "status", "key", "started",
+                "error");
     for (const auto& r : runs) {
       std::printf("%5lld  %-16s %-14s %-8s %-12s %-24s %s\n", static_cast<long long>(r.id), r.workflow.c_str(),
                   r.stage.c_str(), r.status.c_str(), r.key.substr(0, 12).c_str(), r.startedAt.c_str(), r.error.c_str());
@@ -191,11 +205,13 @@ int commandDbShow(const CommandOptions& opt) {
       continue;
     }
     std::printf("%srun %lld: %s/%s (%s, impl_version %d) %s\n", first ? "" : "\n", static_cast<long long>(run->id),
-                run->workflow.c_str(), run->stage.c_str(), run->stageType.c_str(), run->implVersion, run->status.c_str());
+                run->workflow.c_str(), run->stage.c_str(), run->stageType.c_str(), run->implVersion,
+                run->status.c_str());
     std::printf("  key        %s\n  folder     results/%s\n  code       %s%s\n  host       %s pid %lld rank %d of %d\n",
                 run->key.c_str(), run->instanceDir.c_str(), run->codeVersion.c_str(), run->codeDirty ? " (dirty)" : "",
                 run->host.c_str(), static_cast<long long>(run->pid), run->rank, run->ranks);
-    std::printf("  time       %s -> %s\n  params     %s\n", run->startedAt.c_str(), run->endedAt.c_str(), run->paramsJson.c_str());
+    std::printf("  time       %s -> %s\n  params     %s\n", run->startedAt.c_str(), run->endedAt.c_str(),
+                run->paramsJson.c_str());
     if (!run->summaryJson.empty()) std::printf("  summary    %s\n", run->summaryJson.c_str());
     if (!run->error.empty()) std::printf("  error      %s\n", run->error.c_str());
     for (const auto& a : store.artifactsOfRun(run->id)) {

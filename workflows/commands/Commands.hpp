@@ -22,7 +22,7 @@ struct CommandOptions {
 
 // A usage problem the parser could not catch (e.g. neither --db nor --config): exit code 2.
 class UsageError : public Error {
-public:
+ public:
   using Error::Error;
 };
 

@@ -37,7 +37,8 @@ void rejectUnknownKeys(const json& obj, const std::vector<std::string>& allowed,
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     std::string msg = "unknown key \"" + key + "\" in " + what;
     const auto hint = cj::closestMatch(key, allowed);
-    if (!hint.empty()) msg += " (did you mean \"" + hint + "\"?)";
+    if (!hint.empty())
+      msg += " (did you mean \"" + hint + "\"?)";
     else {
       msg += " (allowed: ";
       for (std::size_t i = 0; i < allowed.size(); ++i) msg += (i ? ", " : "") + allowed[i];
@@ -56,14 +57,16 @@ core::units::UnitSystem parseUnits(const json& doc, cj::Diagnostics& d) {
   }
   rejectUnknownKeys(u, {"system", "d0", "m0", "g"}, "/units", "units", d);
   if (!u.contains("system") || !u["system"].is_string()) {
-    d.add("/units/system", "expected \"SI\" or \"reduced\", found " + (u.contains("system") ? found(u["system"]) : std::string("nothing")));
+    d.add("/units/system", "expected \"SI\" or \"reduced\", found " +
+                               (u.contains("system") ? found(u["system"]) : std::string("nothing")));
     return core::units::UnitSystem::si();
   }
   const std::string system = u["system"].get<std::string>();
   using core::units::Dimension;
   if (system == "SI") {
     for (const char* k : {"d0", "m0", "g"}) {
-      if (u.contains(k)) d.add(std::string("/units/") + k, "only used with \"system\": \"reduced\"; remove it or switch the system");
+      if (u.contains(k))
+        d.add(std::string("/units/") + k, "only used with \"system\": \"reduced\"; remove it or switch the system");
     }
     return core::units::UnitSystem::si();
   }
@@ -106,8 +109,10 @@ std::vector<std::string> parseFrom(const json& stage, const std::string& pointer
     from.push_back(f.get<std::string>());
   } else if (f.is_array()) {
     for (std::size_t i = 0; i < f.size(); ++i) {
-      if (f[i].is_string()) from.push_back(f[i].get<std::string>());
-      else d.add(pointer + "/from/" + std::to_string(i), "expected a stage name, found " + found(f[i]));
+      if (f[i].is_string())
+        from.push_back(f[i].get<std::string>());
+      else
+        d.add(pointer + "/from/" + std::to_string(i), "expected a stage name, found " + found(f[i]));
     }
   } else {
     d.add(pointer + "/from", "expected a stage name or a list of stage names, found " + found(f));
@@ -162,17 +167,21 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
   }
   rejectUnknownKeys(doc, {"name", "units", "database", "stages"}, "", "the workflow", d);
 
-  if (!doc.contains("name")) d.add("", "missing required key \"name\" (the workflow's name; results go to results/<name>/)");
+  if (!doc.contains("name"))
+    d.add("", "missing required key \"name\" (the workflow's name; results go to results/<name>/)");
   else if (!doc["name"].is_string() || !isSafeName(doc["name"].get<std::string>()))
-    d.add("/name", "expected a name of letters, digits, '_', '.', '-' (it names a folder), found " + found(doc["name"]));
-  else cfg.name = doc["name"].get<std::string>();
+    d.add("/name",
+          "expected a name of letters, digits, '_', '.', '-' (it names a folder), found " + found(doc["name"]));
+  else
+    cfg.name = doc["name"].get<std::string>();
 
   cfg.units = parseUnits(doc, d);
 
   if (doc.contains("database")) {
     if (!doc["database"].is_string() || doc["database"].get<std::string>().empty())
       d.add("/database", "expected a file path, found " + found(doc["database"]));
-    else cfg.database = doc["database"].get<std::string>();
+    else
+      cfg.database = doc["database"].get<std::string>();
   } else if (!cfg.name.empty()) {
     cfg.database = std::filesystem::path("results") / cfg.name / "grainbridge.sqlite";
   }
@@ -186,18 +195,20 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
       const std::string ptr = "/stages/" + cj::pointerToken(name);
       StageConfig sc;
       sc.name = name;
-      if (!isSafeName(name)) d.add(ptr, "stage name \"" + name + "\" must be letters, digits, '_', '.', '-' (it names a folder)");
+      if (!isSafeName(name))
+        d.add(ptr, "stage name \"" + name + "\" must be letters, digits, '_', '.', '-' (it names a folder)");
       if (!stage.is_object()) {
         d.add(ptr, "expected a stage object {\"type\": ..., \"params\": {...}}, found " + found(stage));
         continue;
       }
       rejectUnknownKeys(stage, {"type", "params", "from", "sweep", "ranks_per_instance"}, ptr, "a stage", d);
       if (!stage.contains("type") || !stage["type"].is_string()) {
-        d.add(ptr + "/type", "expected a stage type (one of: " + [&] {
-          std::string s;
-          for (const auto& n : registry.names()) s += (s.empty() ? "" : ", ") + n;
-          return s;
-        }() + "), found " + (stage.contains("type") ? found(stage["type"]) : std::string("nothing")));
+        d.add(
+            ptr + "/type", "expected a stage type (one of: " + [&] {
+              std::string s;
+              for (const auto& n : registry.names()) s += (s.empty() ? "" : ", ") + n;
+              return s;
+            }() + "), found " + (stage.contains("type") ? found(stage["type"]) : std::string("nothing")));
       } else {
         const auto typeName = stage["type"].get<std::string>();
         sc.type = registry.find(typeName);
@@ -213,7 +224,8 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
         const json& r = stage["ranks_per_instance"];
         if (!r.is_number_integer() || r.get<std::int64_t>() < 1 || r.get<std::int64_t>() > 1000000)
           d.add(ptr + "/ranks_per_instance", "expected a positive integer, found " + found(r));
-        else sc.ranksPerInstance = static_cast<int>(r.get<std::int64_t>());
+        else
+          sc.ranksPerInstance = static_cast<int>(r.get<std::int64_t>());
       }
       std::set<std::string> swept;
       if (stage.contains("sweep")) {
@@ -242,7 +254,8 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
             }
             SweepAxis axis{param, {}};
             for (std::size_t i = 0; i < values.size(); ++i) {
-              if (auto v = sc.type->params().resolveValue(*spec, values[i], cfg.units, sp + "/" + std::to_string(i), d)) {
+              if (auto v =
+                      sc.type->params().resolveValue(*spec, values[i], cfg.units, sp + "/" + std::to_string(i), d)) {
                 axis.values.push_back(*v);
               }
             }

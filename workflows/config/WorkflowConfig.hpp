@@ -33,7 +33,7 @@ struct StageConfig {
 struct WorkflowConfig {
   std::string name;
   core::units::UnitSystem units;
-  std::filesystem::path database;  // as given, or results/<name>/grainbridge.sqlite
+  std::filesystem::path database;   // as given, or results/<name>/grainbridge.sqlite
   std::vector<StageConfig> stages;  // in a topological order of `from`
   nlohmann::json document;          // the config as parsed, for provenance
   std::filesystem::path sourcePath;

@@ -4,12 +4,12 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
-#include "workflows/exec/CacheCheck.hpp"
 #include "core/Version.hpp"
 #include "db/Clock.hpp"
 #include "db/Leases.hpp"
 #include "db/ProvenanceStore.hpp"
 #include "db/StageCache.hpp"
+#include "workflows/exec/CacheCheck.hpp"
 
 namespace grainbridge::workflows::exec {
 
@@ -46,7 +46,9 @@ int Bookkeeper::start() {
     reclaimed = store.markOrphanedRunsKilled(staleAfter_);
     invocationId_ = store.insertInvocation(inv);
   });
-  if (reclaimed > 0) spdlog::warn("{} stage run(s) of a process that ended without finishing were marked killed and will be rerun", reclaimed);
+  if (reclaimed > 0)
+    spdlog::warn("{} stage run(s) of a process that ended without finishing were marked killed and will be rerun",
+                 reclaimed);
   heartbeat_ = std::make_unique<db::Heartbeat>(db_.path(), db::currentProcessHolder(0), heartbeatPeriod_);
   return reclaimed;
 }
@@ -61,7 +63,8 @@ struct LeaseBusy {
 };
 }  // namespace
 
-Bookkeeper::Begun Bookkeeper::begin(const plan::StageInstance& instance, const InstanceTask& task, int rank, int ranks) {
+Bookkeeper::Begun Bookkeeper::begin(const plan::StageInstance& instance, const InstanceTask& task, int rank,
+                                    int ranks) {
   db::RunRecord run;
   run.invocationId = invocationId_;
   run.workflow = config_.name;

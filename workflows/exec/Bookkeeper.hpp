@@ -19,9 +19,9 @@
 namespace grainbridge::workflows::exec {
 
 class Bookkeeper {
-public:
-  Bookkeeper(db::Database& database, const config::WorkflowConfig& config, std::filesystem::path resultsRoot,
-             int ranks, std::chrono::seconds staleAfter, std::chrono::milliseconds heartbeatPeriod);
+ public:
+  Bookkeeper(db::Database& database, const config::WorkflowConfig& config, std::filesystem::path resultsRoot, int ranks,
+             std::chrono::seconds staleAfter, std::chrono::milliseconds heartbeatPeriod);
   ~Bookkeeper();
   Bookkeeper(const Bookkeeper&) = delete;
   Bookkeeper& operator=(const Bookkeeper&) = delete;
@@ -42,7 +42,7 @@ public:
               const InstanceOutcome& outcome);
   void finish(const std::string& status);
 
-private:
+ private:
   db::Database& db_;
   const config::WorkflowConfig& config_;
   std::filesystem::path resultsRoot_;

@@ -8,8 +8,8 @@ namespace grainbridge::workflows::exec {
 
 namespace fs = std::filesystem;
 
-std::optional<db::CacheEntry> validCacheEntry(db::Database& database, const fs::path& resultsRoot, const std::string& key,
-                                              std::string* whyNot) {
+std::optional<db::CacheEntry> validCacheEntry(db::Database& database, const fs::path& resultsRoot,
+                                              const std::string& key, std::string* whyNot) {
   auto say = [whyNot](std::string s) {
     if (whyNot != nullptr) *whyNot = std::move(s);
   };

@@ -10,7 +10,7 @@
 namespace grainbridge::workflows::exec {
 
 class Dispatcher {
-public:
+ public:
   virtual ~Dispatcher() = default;
   // Ranks free to take work now.
   [[nodiscard]] virtual int idleRanks() const = 0;

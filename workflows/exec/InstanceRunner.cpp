@@ -49,8 +49,9 @@ json hashArtifacts(const stages::StageContext& ctx, const fs::path& dir) {
 
 }  // namespace
 
-InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistry& registry, const fs::path& resultsRoot,
-                            core::parallel::Communicator& comm, const std::atomic<bool>& stop) {
+InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistry& registry,
+                            const fs::path& resultsRoot, core::parallel::Communicator& comm,
+                            const std::atomic<bool>& stop) {
   InstanceOutcome outcome;
   const bool leader = comm.rank() == 0;
   const fs::path finalDir = resultsRoot / task.instanceDir;
@@ -93,7 +94,8 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
         {"impl_version", type->implVersion()},
         {"params", task.params},
         {"sweep_point", task.sweepPoint},
-        {"upstream", [&] {
+        {"upstream",
+         [&] {
            json keys = json::array();
            for (const auto& u : task.upstream) keys.push_back(u.key);
            return keys;

@@ -6,10 +6,12 @@ using nlohmann::json;
 
 json InstanceTask::toJson() const {
   json ups = json::array();
-  for (const auto& u : upstream) ups.push_back({{"stage", u.stage}, {"stage_type", u.stageType}, {"key", u.key}, {"dir", u.dir}});
-  return {{"workflow", workflow}, {"stage", stage},   {"stage_type", stageType}, {"key", key},
-          {"params", params},     {"sweep_point", sweepPoint}, {"upstream", ups}, {"units", units},
-          {"instance_dir", instanceDir}, {"group", group}};
+  for (const auto& u : upstream)
+    ups.push_back({{"stage", u.stage}, {"stage_type", u.stageType}, {"key", u.key}, {"dir", u.dir}});
+  return {{"workflow", workflow}, {"stage", stage},   {"stage_type", stageType},
+          {"key", key},           {"params", params}, {"sweep_point", sweepPoint},
+          {"upstream", ups},      {"units", units},   {"instance_dir", instanceDir},
+          {"group", group}};
 }
 
 InstanceTask InstanceTask::fromJson(const json& j) {
@@ -20,7 +22,8 @@ InstanceTask InstanceTask::fromJson(const json& j) {
   t.key = j.at("key");
   t.params = j.at("params");
   t.sweepPoint = j.at("sweep_point");
-  for (const auto& u : j.at("upstream")) t.upstream.push_back({u.at("stage"), u.at("stage_type"), u.at("key"), u.at("dir")});
+  for (const auto& u : j.at("upstream"))
+    t.upstream.push_back({u.at("stage"), u.at("stage_type"), u.at("key"), u.at("dir")});
   t.units = j.at("units");
   t.instanceDir = j.at("instance_dir");
   t.group = j.at("group").get<std::vector<int>>();

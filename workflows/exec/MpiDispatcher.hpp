@@ -14,7 +14,7 @@
 namespace grainbridge::workflows::exec {
 
 class MpiDispatcher final : public Dispatcher {
-public:
+ public:
   MpiDispatcher();
   ~MpiDispatcher() override;  // tells every worker to stop
   [[nodiscard]] int idleRanks() const override { return static_cast<int>(idle_.size()); }
@@ -24,7 +24,7 @@ public:
   [[nodiscard]] int inFlight() const override { return static_cast<int>(running_.size()); }
   std::optional<std::pair<std::size_t, InstanceOutcome>> poll() override;
 
-private:
+ private:
   int worldSize_ = 1;
   int nextTag_ = 100;
   std::set<int> idle_;

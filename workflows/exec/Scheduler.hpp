@@ -20,11 +20,11 @@ struct RunOptions {
 };
 
 struct RunSummary {
-  int ran = 0;          // completed in this run
-  int cached = 0;       // skipped: valid completed record
-  int failed = 0;       // failed or interrupted in this run
-  int notRun = 0;       // blocked by a failed upstream, or not started after a failure/stop
-  int busy = 0;         // held by another live process
+  int ran = 0;     // completed in this run
+  int cached = 0;  // skipped: valid completed record
+  int failed = 0;  // failed or interrupted in this run
+  int notRun = 0;  // blocked by a failed upstream, or not started after a failure/stop
+  int busy = 0;    // held by another live process
   bool interrupted = false;
   [[nodiscard]] int exitCode() const { return (failed > 0 || notRun > 0 || busy > 0 || interrupted) ? 1 : 0; }
 };

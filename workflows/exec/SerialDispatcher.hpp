@@ -11,8 +11,9 @@
 namespace grainbridge::workflows::exec {
 
 class SerialDispatcher final : public Dispatcher {
-public:
-  SerialDispatcher(const stages::StageRegistry& registry, std::filesystem::path resultsRoot, const std::atomic<bool>& stop)
+ public:
+  SerialDispatcher(const stages::StageRegistry& registry, std::filesystem::path resultsRoot,
+                   const std::atomic<bool>& stop)
       : registry_(registry), resultsRoot_(std::move(resultsRoot)), stop_(stop) {}
   [[nodiscard]] int idleRanks() const override { return done_.empty() ? 1 : 0; }
   [[nodiscard]] int maxRanks() const override { return 1; }
@@ -21,7 +22,7 @@ public:
   [[nodiscard]] int inFlight() const override { return static_cast<int>(done_.size()); }
   std::optional<std::pair<std::size_t, InstanceOutcome>> poll() override;
 
-private:
+ private:
   const stages::StageRegistry& registry_;
   std::filesystem::path resultsRoot_;
   const std::atomic<bool>& stop_;

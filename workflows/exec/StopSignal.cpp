@@ -1,7 +1,7 @@
 #include "workflows/exec/StopSignal.hpp"
 
-#include <csignal>
 #include <unistd.h>
+#include <csignal>
 
 namespace grainbridge::workflows::exec {
 

@@ -82,15 +82,16 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
     }
     case ParamKind::Integer: {
       // 3.0 is accepted as 3 (JSON writers differ), 3.5 is not.
-      const bool integral = value.is_number_integer() ||
-                            (value.is_number_float() && std::isfinite(value.get<double>()) &&
-                             value.get<double>() == std::floor(value.get<double>()) &&
-                             std::abs(value.get<double>()) < 9.0e15);
+      const bool integral =
+          value.is_number_integer() ||
+          (value.is_number_float() && std::isfinite(value.get<double>()) &&
+           value.get<double>() == std::floor(value.get<double>()) && std::abs(value.get<double>()) < 9.0e15);
       if (!integral) {
         diagnostics.add(pointer, "expected an integer, found " + found(value));
         return std::nullopt;
       }
-      const auto v = value.is_number_integer() ? value.get<std::int64_t>() : static_cast<std::int64_t>(value.get<double>());
+      const auto v =
+          value.is_number_integer() ? value.get<std::int64_t>() : static_cast<std::int64_t>(value.get<double>());
       if (!checkRange(spec, static_cast<double>(v), pointer, diagnostics)) return std::nullopt;
       return json(v);
     }
@@ -125,8 +126,10 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
       bool ok = true;
       for (std::size_t i = 0; i < value.size(); ++i) {
         auto v = resolveQuantity(spec, value[i], units, pointer + "/" + std::to_string(i), diagnostics);
-        if (v) out.push_back(*v);
-        else ok = false;
+        if (v)
+          out.push_back(*v);
+        else
+          ok = false;
       }
       if (!ok) return std::nullopt;
       return out;
@@ -150,7 +153,8 @@ json ParamSchema::resolve(const json& params, const std::set<std::string>& provi
     if (spec == nullptr) {
       std::string msg = "unknown parameter \"" + key + "\"";
       const auto hint = cj::closestMatch(key, known);
-      msg += hint.empty() ? " (see `grainbridge stages` for the parameters of each stage type)" : " (did you mean \"" + hint + "\"?)";
+      msg += hint.empty() ? " (see `grainbridge stages` for the parameters of each stage type)"
+                          : " (did you mean \"" + hint + "\"?)";
       diagnostics.add(where, msg);
       continue;
     }
@@ -159,10 +163,12 @@ json ParamSchema::resolve(const json& params, const std::set<std::string>& provi
   for (const auto& spec : specs_) {
     if (params.contains(spec.name()) || providedElsewhere.count(spec.name()) != 0) continue;
     if (spec.isRequired()) {
-      diagnostics.add(pointer, "missing required parameter \"" + spec.name() + "\" (" + spec.typeDescription() + ": " + spec.docText() + ")");
+      diagnostics.add(pointer, "missing required parameter \"" + spec.name() + "\" (" + spec.typeDescription() + ": " +
+                                   spec.docText() + ")");
     } else if (spec.defaultJson()) {
       cj::Diagnostics ignored;  // defaults were validated at declaration
-      if (auto v = resolveValue(spec, *spec.defaultJson(), core::units::UnitSystem::si(), pointer, ignored)) resolved[spec.name()] = *v;
+      if (auto v = resolveValue(spec, *spec.defaultJson(), core::units::UnitSystem::si(), pointer, ignored))
+        resolved[spec.name()] = *v;
     }
   }
   return resolved;

@@ -15,7 +15,7 @@
 namespace grainbridge::workflows::params {
 
 class ParamSchema {
-public:
+ public:
   ParamSchema& add(ParamSpec spec);
   [[nodiscard]] const std::vector<ParamSpec>& specs() const { return specs_; }
   [[nodiscard]] const ParamSpec* find(const std::string& name) const;
@@ -36,7 +36,7 @@ public:
   // The resolved params that enter the stage key: those declared not to affect results dropped.
   [[nodiscard]] nlohmann::json keyParams(const nlohmann::json& resolved) const;
 
-private:
+ private:
   std::vector<ParamSpec> specs_;
 };
 

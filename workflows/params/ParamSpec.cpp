@@ -55,9 +55,12 @@ ParamSpec& ParamSpec::doesNotAffectResults() {
 
 std::string ParamSpec::typeDescription() const {
   switch (kind_) {
-    case ParamKind::Quantity: return dim_.isNone() ? "number" : "quantity [" + dim_.siUnit() + "]";
-    case ParamKind::Integer: return "integer";
-    case ParamKind::Boolean: return "boolean";
+    case ParamKind::Quantity:
+      return dim_.isNone() ? "number" : "quantity [" + dim_.siUnit() + "]";
+    case ParamKind::Integer:
+      return "integer";
+    case ParamKind::Boolean:
+      return "boolean";
     case ParamKind::String: {
       if (options_.empty()) return "string";
       std::string s = "string: one of ";
@@ -65,7 +68,8 @@ std::string ParamSpec::typeDescription() const {
       return s;
     }
     case ParamKind::QuantityList:
-      return "list of " + std::to_string(listLength_) + (dim_.isNone() ? " numbers" : " quantities [" + dim_.siUnit() + "]");
+      return "list of " + std::to_string(listLength_) +
+             (dim_.isNone() ? " numbers" : " quantities [" + dim_.siUnit() + "]");
   }
   return "?";
 }

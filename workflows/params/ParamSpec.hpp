@@ -19,7 +19,7 @@ struct Bound {
 };
 
 class ParamSpec {
-public:
+ public:
   // A real number with a physical dimension (accepts "<number> <unit>" strings).
   static ParamSpec quantity(std::string name, core::units::Dimension dim);
   static ParamSpec number(std::string name) { return quantity(std::move(name), core::units::Dimension::none()); }
@@ -56,7 +56,7 @@ public:
   // "> 0", "in [0, 1]", "" when unbounded.
   [[nodiscard]] std::string rangeDescription() const;
 
-private:
+ private:
   ParamSpec(std::string name, ParamKind kind, core::units::Dimension dim);
 
   std::string name_;

@@ -20,11 +20,10 @@ std::string StageInstance::label() const {
   return s + "]";
 }
 
-std::string StageInstance::relativeDir(const std::string& workflow) const {
-  return workflow + "/" + stage + "/" + key;
-}
+std::string StageInstance::relativeDir(const std::string& workflow) const { return workflow + "/" + stage + "/" + key; }
 
-json keyMaterial(const stages::StageType& type, const json& resolvedParams, const std::vector<std::string>& upstreamKeys) {
+json keyMaterial(const stages::StageType& type, const json& resolvedParams,
+                 const std::vector<std::string>& upstreamKeys) {
   return json{{"type", type.name()},
               {"impl_version", type.implVersion()},
               {"params", type.params().keyParams(resolvedParams)},

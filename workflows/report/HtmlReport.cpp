@@ -21,11 +21,20 @@ std::string escapeHtml(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -106,8 +115,8 @@ ReportFiles writeHtmlReport(const std::string& title, const std::vector<stages::
         if (std::find(summaryKeys.begin(), summaryKeys.end(), k) == summaryKeys.end()) summaryKeys.push_back(k);
       }
     }
-    html << "<h2>Stage " << escapeHtml(stage) << " (" << escapeHtml(list.front()->stageType) << ", "
-         << list.size() << " instance" << (list.size() == 1 ? "" : "s") << ")</h2>\n<table><tr>";
+    html << "<h2>Stage " << escapeHtml(stage) << " (" << escapeHtml(list.front()->stageType) << ", " << list.size()
+         << " instance" << (list.size() == 1 ? "" : "s") << ")</h2>\n<table><tr>";
     for (const auto& k : sweepKeys) html << "<th>" << escapeHtml(k) << "</th>";
     for (const auto& k : summaryKeys) html << "<th>" << escapeHtml(k) << "</th>";
     html << "<th>key</th><th>artifacts</th></tr>\n";
@@ -115,8 +124,10 @@ ReportFiles writeHtmlReport(const std::string& title, const std::vector<stages::
       html << "<tr>";
       const json sweep = inst->manifest.value("sweep_point", json::object());
       const json summary = inst->manifest.value("summary", json::object());
-      for (const auto& k : sweepKeys) html << "<td>" << (sweep.contains(k) ? escapeHtml(showRounded(sweep[k])) : "") << "</td>";
-      for (const auto& k : summaryKeys) html << "<td>" << (summary.contains(k) ? escapeHtml(showRounded(summary[k])) : "") << "</td>";
+      for (const auto& k : sweepKeys)
+        html << "<td>" << (sweep.contains(k) ? escapeHtml(showRounded(sweep[k])) : "") << "</td>";
+      for (const auto& k : summaryKeys)
+        html << "<td>" << (summary.contains(k) ? escapeHtml(showRounded(summary[k])) : "") << "</td>";
       html << "<td class=\"l\">" << inst->key.substr(0, 12) << "</td><td class=\"l\">";
       const fs::path link = inst->dir.lexically_relative(publishedDir);
       const json artifacts = inst->manifest.value("artifacts", json::array());
@@ -125,8 +136,12 @@ ReportFiles writeHtmlReport(const std::string& title, const std::vector<stages::
         html << "<a href=\"" << escapeHtml((link / p).generic_string()) << "\">" << escapeHtml(p) << "</a> ";
       }
       html << "</td></tr>\n";
-      for (const auto& [k, v] : sweep.items()) csv << csvField(stage) << ',' << csvField(inst->stageType) << ',' << inst->key << ",sweep." << csvField(k) << ',' << csvField(show(v)) << '\n';
-      for (const auto& [k, v] : summary.items()) csv << csvField(stage) << ',' << csvField(inst->stageType) << ',' << inst->key << ',' << csvField(k) << ',' << csvField(show(v)) << '\n';
+      for (const auto& [k, v] : sweep.items())
+        csv << csvField(stage) << ',' << csvField(inst->stageType) << ',' << inst->key << ",sweep." << csvField(k)
+            << ',' << csvField(show(v)) << '\n';
+      for (const auto& [k, v] : summary.items())
+        csv << csvField(stage) << ',' << csvField(inst->stageType) << ',' << inst->key << ',' << csvField(k) << ','
+            << csvField(show(v)) << '\n';
     }
     html << "</table>\n";
 

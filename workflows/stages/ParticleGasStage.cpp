@@ -16,15 +16,34 @@ using params::ParamSpec;
 
 ParticleGasStage::ParticleGasStage() {
   schema_.add(ParamSpec::integer("n_particles").required().min(1).max(5e7).doc("number of spheres"))
-      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).defaultValue("1 mm").positive().doc("sphere diameter d"))
-      .add(ParamSpec::quantity("density", Dimension::density()).defaultValue("2500 kg/m3").positive().doc("material density rho_p"))
+      .add(ParamSpec::quantity("diameter", Dimension::lengthDim())
+               .defaultValue("1 mm")
+               .positive()
+               .doc("sphere diameter d"))
+      .add(ParamSpec::quantity("density", Dimension::density())
+               .defaultValue("2500 kg/m3")
+               .positive()
+               .doc("material density rho_p"))
       // pi/sqrt(18) is the densest packing of equal spheres; random insertion jams far below it
       // (about 0.38) and then fails with a message saying so.
-      .add(ParamSpec::number("solid_fraction").required().min(0.0, false).max(M_PI / std::sqrt(18.0)).doc("solid volume fraction of the box"))
-      .add(ParamSpec::quantity("granular_temperature", Dimension::granularTemperature()).defaultValue("1e-4 m2/s2").min(0.0).doc("granular temperature T = <C^2>/3 (Eq. 3.38)"))
+      .add(ParamSpec::number("solid_fraction")
+               .required()
+               .min(0.0, false)
+               .max(M_PI / std::sqrt(18.0))
+               .doc("solid volume fraction of the box"))
+      .add(ParamSpec::quantity("granular_temperature", Dimension::granularTemperature())
+               .defaultValue("1e-4 m2/s2")
+               .min(0.0)
+               .doc("granular temperature T = <C^2>/3 (Eq. 3.38)"))
       .add(ParamSpec::integer("seed").defaultValue(1).min(0).doc("random seed (positions and velocities)"))
-      .add(ParamSpec::integer("max_attempts").defaultValue(100000).min(1).doc("insertion attempts per particle before giving up"))
-      .add(ParamSpec::boolean("progress").defaultValue(true).doesNotAffectResults().doc("report progress while inserting"));
+      .add(ParamSpec::integer("max_attempts")
+               .defaultValue(100000)
+               .min(1)
+               .doc("insertion attempts per particle before giving up"))
+      .add(ParamSpec::boolean("progress")
+               .defaultValue(true)
+               .doesNotAffectResults()
+               .doc("report progress while inserting"));
 }
 
 namespace {
@@ -32,7 +51,7 @@ namespace {
 // Uniform grid over the periodic cube with cells no smaller than one diameter, so an overlap
 // test only needs the 27 surrounding cells.
 class InsertionGrid {
-public:
+ public:
   InsertionGrid(double box, double diameter) : box_(box), d2_(diameter * diameter) {
     cells_ = std::max(1, static_cast<int>(std::floor(box / diameter)));
     cellSize_ = box / cells_;
@@ -59,7 +78,7 @@ public:
     heads_[cell] = id;
   }
 
-private:
+ private:
   bool overlapsAny(const Vec3& p, const std::vector<Vec3>& pos) const {
     for (const auto& q : pos) {
       Vec3 r = p - q;
@@ -125,8 +144,9 @@ void ParticleGasStage::run(StageContext& ctx) const {
     }
     if (!placed) {
       throw Error("particle_gas: could not insert particle " + std::to_string(i + 1) + " of " + std::to_string(n) +
-                  " without overlap after " + std::to_string(maxAttempts) + " attempts; random insertion jams near solid fraction 0.38, " +
-                  "and solid_fraction is " + std::to_string(phi) + " (lower it, or raise max_attempts)");
+                  " without overlap after " + std::to_string(maxAttempts) +
+                  " attempts; random insertion jams near solid fraction 0.38, " + "and solid_fraction is " +
+                  std::to_string(phi) + " (lower it, or raise max_attempts)");
     }
     if ((i & 1023) == 0) {
       if (ctx.stopRequested()) throw StageInterrupted{};

@@ -9,7 +9,7 @@
 namespace grainbridge::workflows::stages {
 
 class ParticleGasStage final : public StageType {
-public:
+ public:
   ParticleGasStage();
   [[nodiscard]] std::string name() const override { return "particle_gas"; }
   [[nodiscard]] int implVersion() const override { return 1; }
@@ -20,7 +20,7 @@ public:
   [[nodiscard]] InputMode inputMode() const override { return InputMode::None; }
   void run(StageContext& ctx) const override;
 
-private:
+ private:
   params::ParamSchema schema_;
 };
 

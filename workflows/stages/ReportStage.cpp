@@ -6,12 +6,14 @@
 namespace grainbridge::workflows::stages {
 
 ReportStage::ReportStage() {
-  schema_.add(params::ParamSpec::string("title").defaultValue("grainbridge report").doesNotAffectResults().doc("page title"));
+  schema_.add(
+      params::ParamSpec::string("title").defaultValue("grainbridge report").doesNotAffectResults().doc("page title"));
 }
 
 void ReportStage::run(StageContext& ctx) const {
   if (ctx.inputs().empty()) throw Error("report: no upstream stages; give it \"from\"");
-  const auto files = report::writeHtmlReport(ctx.params().at("title"), ctx.inputs(), ctx.outputDir(), ctx.publishedDir());
+  const auto files =
+      report::writeHtmlReport(ctx.params().at("title"), ctx.inputs(), ctx.outputDir(), ctx.publishedDir());
   for (const auto& f : files.files) ctx.addArtifact(f.path, f.kind);
   ctx.setSummary({{"instances", ctx.inputs().size()}});
 }

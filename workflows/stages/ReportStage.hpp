@@ -7,7 +7,7 @@
 namespace grainbridge::workflows::stages {
 
 class ReportStage final : public StageType {
-public:
+ public:
   ReportStage();
   [[nodiscard]] std::string name() const override { return "report"; }
   [[nodiscard]] int implVersion() const override { return 1; }
@@ -18,7 +18,7 @@ public:
   [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
   void run(StageContext& ctx) const override;
 
-private:
+ private:
   params::ParamSchema schema_;
 };
 

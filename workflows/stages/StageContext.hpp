@@ -33,11 +33,10 @@ struct ArtifactEntry {
 struct StageInterrupted {};
 
 class StageContext {
-public:
+ public:
   StageContext(std::string workflow, std::string stage, std::string key, nlohmann::json params,
                std::filesystem::path outputDir, std::vector<UpstreamInstance> inputs,
-               core::parallel::Communicator& comm, core::units::UnitSystem units,
-               const std::atomic<bool>& stopFlag)
+               core::parallel::Communicator& comm, core::units::UnitSystem units, const std::atomic<bool>& stopFlag)
       : workflow_(std::move(workflow)),
         stage_(std::move(stage)),
         key_(std::move(key)),
@@ -78,7 +77,7 @@ public:
   [[nodiscard]] const std::vector<ArtifactEntry>& artifacts() const { return artifacts_; }
   [[nodiscard]] const nlohmann::json& summary() const { return summary_; }
 
-private:
+ private:
   std::string workflow_;
   std::string stage_;
   std::string key_;

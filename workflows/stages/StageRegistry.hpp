@@ -10,7 +10,7 @@
 namespace grainbridge::workflows::stages {
 
 class StageRegistry {
-public:
+ public:
   // The registry of every stage type grainbridge ships.
   static const StageRegistry& builtin();
 
@@ -19,7 +19,7 @@ public:
   [[nodiscard]] std::vector<std::string> names() const;
   [[nodiscard]] const std::vector<std::unique_ptr<StageType>>& all() const { return types_; }
 
-private:
+ private:
   std::vector<std::unique_ptr<StageType>> types_;
 };
 

@@ -16,7 +16,7 @@ enum class InputMode {
 };
 
 class StageType {
-public:
+ public:
   virtual ~StageType() = default;
   [[nodiscard]] virtual std::string name() const = 0;
   // Bump whenever what the stage computes changes: it is part of every stage key, so cached

@@ -32,7 +32,8 @@ std::string liveHolder(db::Database& database, const std::string& key, std::chro
 }
 
 // Most recent run of each stage key, newest last.
-std::vector<db::RunRecord> runsOfStage(db::ProvenanceStore& store, const std::string& workflow, const std::string& stage) {
+std::vector<db::RunRecord> runsOfStage(db::ProvenanceStore& store, const std::string& workflow,
+                                       const std::string& stage) {
   std::vector<db::RunRecord> out;
   for (auto& r : store.runs(workflow)) {
     if (r.stage == stage) out.push_back(std::move(r));
@@ -48,7 +49,8 @@ std::vector<InstanceStatus> workflowStatus(const config::WorkflowConfig& config,
   std::vector<InstanceStatus> out;
   const fs::path dbPath = exec::databasePath(config, workDir);
   if (!fs::exists(dbPath)) {
-    for (const auto& inst : plan.instances) out.push_back({inst.label(), inst.key, "pending", "never run (no database yet)"});
+    for (const auto& inst : plan.instances)
+      out.push_back({inst.label(), inst.key, "pending", "never run (no database yet)"});
     return out;
   }
   auto database = db::Database::openReadOnly(dbPath);
@@ -77,7 +79,9 @@ std::vector<InstanceStatus> workflowStatus(const config::WorkflowConfig& config,
           s.detail = whyNot;
         }
       } else {
-        s.detail = runsOfStage(store, config.name, inst.stage).empty() ? "never run" : "parameters or upstream changed (status --why " + inst.stage + ")";
+        s.detail = runsOfStage(store, config.name, inst.stage).empty()
+                       ? "never run"
+                       : "parameters or upstream changed (status --why " + inst.stage + ")";
       }
     }
     out.push_back(std::move(s));
@@ -85,8 +89,8 @@ std::vector<InstanceStatus> workflowStatus(const config::WorkflowConfig& config,
   return out;
 }
 
-std::vector<std::string> explainStage(const config::WorkflowConfig& config, const plan::Plan& plan, const std::string& stage,
-                                      const fs::path& workDir) {
+std::vector<std::string> explainStage(const config::WorkflowConfig& config, const plan::Plan& plan,
+                                      const std::string& stage, const fs::path& workDir) {
   std::vector<std::string> lines;
   const fs::path dbPath = exec::databasePath(config, workDir);
   std::optional<db::Database> database;
@@ -135,15 +139,18 @@ std::vector<std::string> explainStage(const config::WorkflowConfig& config, cons
     const json oldParams = inst.type->params().keyParams(json::parse(previous->paramsJson));
     const json newParams = inst.type->params().keyParams(inst.params);
     for (const auto& [k, v] : newParams.items()) {
-      if (!oldParams.contains(k)) lines.push_back("  parameter " + k + ": (absent) -> " + v.dump());
-      else if (oldParams[k] != v) lines.push_back("  parameter " + k + ": " + oldParams[k].dump() + " -> " + v.dump());
+      if (!oldParams.contains(k))
+        lines.push_back("  parameter " + k + ": (absent) -> " + v.dump());
+      else if (oldParams[k] != v)
+        lines.push_back("  parameter " + k + ": " + oldParams[k].dump() + " -> " + v.dump());
     }
     for (const auto& [k, v] : oldParams.items()) {
       if (!newParams.contains(k)) lines.push_back("  parameter " + k + ": " + v.dump() + " -> (absent)");
     }
     for (auto u : inst.upstream) {
       const auto& up = plan.instances[u];
-      if (std::find(previous->upstreamKeys.begin(), previous->upstreamKeys.end(), up.key) == previous->upstreamKeys.end()) {
+      if (std::find(previous->upstreamKeys.begin(), previous->upstreamKeys.end(), up.key) ==
+          previous->upstreamKeys.end()) {
         lines.push_back("  upstream " + up.label() + " changed (now key " + up.key.substr(0, 12) + ")");
       }
     }

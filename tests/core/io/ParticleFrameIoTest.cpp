@@ -1,8 +1,7 @@
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include <chrono>
+#include <fstream>
 #include <thread>
 
 #include "core/Error.hpp"
@@ -16,9 +15,9 @@
 namespace grainbridge::core::io {
 namespace {
 
+using iotest::expectError;
 using iotest::sampleParticleFrame;
 using iotest::TempDir;
-using iotest::expectError;
 
 TEST(ParticleFrameSerialization, RoundTripKeepsEveryField) {
   const TempDir dir;

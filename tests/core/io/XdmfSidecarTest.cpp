@@ -4,9 +4,11 @@
 // tests/integration/paraview_check.py.)
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <charconv>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,7 +52,7 @@ struct XmlNode {
 };
 
 class XmlParser {
-public:
+ public:
   explicit XmlParser(std::string text) : s_(std::move(text)) {}
 
   std::unique_ptr<XmlNode> parseDocument() {
@@ -67,7 +69,7 @@ public:
     return root;
   }
 
-private:
+ private:
   [[noreturn]] void fail(const std::string& what) const {
     throw std::runtime_error("XML error at offset " + std::to_string(pos_) + ": " + what);
   }
@@ -150,7 +152,9 @@ private:
   std::size_t pos_ = 0;
 };
 
-std::unique_ptr<XmlNode> parseXml(const std::filesystem::path& path) { return XmlParser(readFile(path)).parseDocument(); }
+std::unique_ptr<XmlNode> parseXml(const std::filesystem::path& path) {
+  return XmlParser(readFile(path)).parseDocument();
+}
 
 double toDouble(const std::string& s) {
   double v = 0;
@@ -218,8 +222,7 @@ TEST(XdmfCollection, ParticlesListEveryFrameWithContactGridsOnlyWhereThereAreCon
       EXPECT_EQ(topo.attributes.at("TopologyType"), "Polyline");
       EXPECT_EQ(topo.attributes.at("NodesPerElement"), "2");
       EXPECT_EQ(topo.attributes.at("NumberOfElements"), std::to_string(contacts[s]));
-      EXPECT_EQ(c.one("Geometry").one("DataItem").attributes.at("Dimensions"),
-                std::to_string(2 * contacts[s]) + " 3");
+      EXPECT_EQ(c.one("Geometry").one("DataItem").attributes.at("Dimensions"), std::to_string(2 * contacts[s]) + " 3");
       for (const XmlNode* a : c.all("Attribute")) EXPECT_EQ(a->attributes.at("Center"), "Cell");
       EXPECT_EQ(c.all("Attribute").size(), 4U);
     }
