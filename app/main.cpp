@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
 
   CLI::App app{"grainbridge: multiscale workflows for granular and gas-solid flows (DEM -> closures -> continuum)"};
   app.require_subcommand(1);
+  app.fallthrough();  // -v and -q also work after the subcommand: grainbridge run cfg.json -q
   bool verbose = false;
   bool quiet = false;
   app.add_flag("-v,--verbose", verbose, "more log output (debug level)");

@@ -76,3 +76,15 @@ TEST(Cli, UsageErrorExitsTwo) {
 }
 
 }  // namespace
+
+namespace {
+// docs/stages.md is generated from the parameter declarations; it must not drift from them.
+TEST(StagesReference, DocsMatchTheDeclarations) {
+  TempDir work;
+  const auto r = runCommand(grainbridgeBinary() + " stages --markdown");
+  ASSERT_EQ(r.exitCode, 0);
+  const std::string doc = readText(sourceDir() / "docs/stages.md");
+  EXPECT_NE(doc.find(r.output), std::string::npos)
+      << "docs/stages.md is out of date: regenerate its table part with `grainbridge stages --markdown`";
+}
+}  // namespace

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <thread>
 
 #include "db/Database.hpp"
 #include "db/ProvenanceStore.hpp"
@@ -155,6 +156,75 @@ TEST_F(WorkflowRun, FailedInstanceIsNeverCachedAndKeepGoingFinishesTheRest) {
   auto st = runGrainbridge(work.path(), "status wf.json");
   EXPECT_NE(st.output.find("failed"), std::string::npos) << st.output;
   EXPECT_NE(st.output.find("1 done"), std::string::npos) << st.output;
+}
+
+// Starts `grainbridge run wf.json` in the background of `work`; returns its pid once its first
+// stage instance is claimed (a 'running' row exists).
+long startInBackground(const fs::path& work) {
+  runCommand("cd '" + work.string() + "' && (" + grainbridgeBinary() + " run wf.json > bg.log 2>&1 & echo $! > bg.pid)");
+  const long pid = std::stol(readText(work / "bg.pid"));
+  const fs::path dbFile = work / "results/wf/grainbridge.sqlite";
+  for (int i = 0; i < 600; ++i) {
+    if (fs::exists(dbFile)) {
+      try {
+        auto database = db::Database::openReadOnly(dbFile);
+        for (const auto& r : db::ProvenanceStore(database).runs("wf")) {
+          if (r.status == "running") return pid;
+        }
+      } catch (const std::exception&) {
+        // not migrated yet
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ADD_FAILURE() << "background run never claimed a stage";
+  return pid;
+}
+
+void waitForExit(long pid) {
+  for (int i = 0; i < 3000 && fs::exists("/proc/" + std::to_string(pid)); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+json slowWorkflow() {
+  json cfg = smallWorkflow();
+  cfg["stages"]["gas"]["params"]["n_particles"] = 200000;
+  cfg["stages"]["gas"]["sweep"]["solid_fraction"] = {0.3};
+  return cfg;
+}
+
+TEST_F(WorkflowRun, ConcurrentRunLeavesAClaimedInstanceToItsLiveHolder) {
+  write(slowWorkflow());
+  const long pid = startInBackground(work.path());
+  auto second = run();
+  EXPECT_EQ(second.exitCode, 1) << second.output;
+  EXPECT_NE(second.output.find("being run by another live process"), std::string::npos) << second.output;
+  auto st = runGrainbridge(work.path(), "status wf.json");
+  EXPECT_NE(st.output.find("running"), std::string::npos) << st.output;
+  waitForExit(pid);
+  EXPECT_NE(readText(work.path() / "bg.log").find("2 ran"), std::string::npos) << readText(work.path() / "bg.log");
+  auto third = run();
+  EXPECT_EQ(third.exitCode, 0) << third.output;
+  const auto rs = runs(work.path());
+  EXPECT_EQ(countStage(rs, "gas"), 1);  // the second run did not duplicate the work
+  EXPECT_EQ(countStage(rs, "rep"), 1);
+}
+
+TEST_F(WorkflowRun, SigtermStopsCleanlyAndRecordsTheInterruptedInstance) {
+  write(slowWorkflow());
+  const long pid = startInBackground(work.path());
+  runCommand("kill -TERM " + std::to_string(pid));
+  waitForExit(pid);
+  const std::string log = readText(work.path() / "bg.log");
+  EXPECT_NE(log.find("interrupted"), std::string::npos) << log;
+  auto rs = runs(work.path());
+  ASSERT_EQ(countStage(rs, "gas", "killed"), 1) << log;
+  auto database = db::Database::openReadOnly(work.path() / "results/wf/grainbridge.sqlite");
+  EXPECT_EQ(database.integrityCheck(), "ok");
+  auto again = run();
+  EXPECT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_EQ(countStage(runs(work.path()), "gas"), 1);
 }
 
 // SIGKILL at each boundary of a stage's life, then a plain re-run must complete, never use the

@@ -1,0 +1,97 @@
+// One golden case per stage type (DESIGN.md, workflow semantics): changing what a stage
+// computes must come with an impl_version bump, or cached results of the old code would be
+// reused as if they were the new code's. Each tests/golden/<type>.json holds a small workflow,
+// the impl_version it was recorded with and a digest of every artifact's content. Particle
+// frames are digested by their data (read back), not their bytes, because every file also
+// carries the git SHA of the build that wrote it.
+//
+// After an intended change: bump the stage's impl_version, then regenerate with
+//   GRAINBRIDGE_UPDATE_GOLDEN=1 build/bin/test_workflows_cli --gtest_filter='Golden*'
+// and review the diff of tests/golden/.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <sstream>
+
+#include "core/Sha256.hpp"
+#include "core/io/ParticleFrameReader.hpp"
+#include "db/Database.hpp"
+#include "db/ProvenanceStore.hpp"
+#include "tests/support/Cli.hpp"
+#include "workflows/stages/StageRegistry.hpp"
+
+namespace fs = std::filesystem;
+using namespace grainbridge;
+using namespace grainbridge::testing;
+using nlohmann::json;
+
+namespace {
+
+template <class T>
+void digestArray(std::ostringstream& out, const std::vector<T>& v) {
+  out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+}
+
+std::string contentDigest(const fs::path& file, const std::string& kind) {
+  if (kind != "particle_frame") return core::sha256File(file);
+  const auto f = core::io::readParticleFrame(file);
+  std::ostringstream out;
+  out << f.time << ' ' << f.step << ' ' << f.units << ' ';
+  digestArray(out, f.id);
+  digestArray(out, f.species);
+  digestArray(out, f.radius);
+  digestArray(out, f.mass);
+  for (const auto* vs : {&f.position, &f.velocity, &f.angularVelocity, &f.externalForce}) {
+    for (const auto& v : *vs) out.write(reinterpret_cast<const char*>(v.data()), 3 * sizeof(double));
+  }
+  return core::sha256Hex(out.str());
+}
+
+class Golden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Golden, OutputUnchangedUnlessImplVersionBumped) {
+  const fs::path goldenFile = sourceDir() / "tests/golden" / (GetParam() + ".json");
+  ASSERT_TRUE(fs::exists(goldenFile)) << "every stage type needs a golden case: add " << goldenFile;
+  json golden = json::parse(readText(goldenFile));
+  const auto* type = workflows::stages::StageRegistry::builtin().find(GetParam());
+  ASSERT_NE(type, nullptr);
+
+  TempDir work;
+  writeText(work.path() / "wf.json", golden.at("workflow").dump(2));
+  const auto r = runGrainbridge(work.path(), "run wf.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto database = db::Database::openReadOnly(work.path() / "results" / golden["workflow"]["name"].get<std::string>() / "grainbridge.sqlite");
+  db::ProvenanceStore store(database);
+  json digests = json::object();
+  for (const auto& run : store.runs("")) {
+    if (run.stageType != GetParam()) continue;
+    json entry = {{"summary", json::parse(run.summaryJson.empty() ? "{}" : run.summaryJson)}, {"artifacts", json::object()}};
+    for (const auto& a : store.artifactsOfRun(run.id)) {
+      const std::string rel = a.path.substr(run.instanceDir.size() + 1);
+      entry["artifacts"][rel] = contentDigest(work.path() / "results" / a.path, a.kind);
+    }
+    digests[run.stage + " " + run.paramsJson] = entry;
+  }
+  ASSERT_FALSE(digests.empty()) << "the golden workflow has no instance of " << GetParam();
+
+  if (std::getenv("GRAINBRIDGE_UPDATE_GOLDEN") != nullptr) {
+    golden["impl_version"] = type->implVersion();
+    golden["digests"] = digests;
+    writeText(goldenFile, golden.dump(2) + "\n");
+    GTEST_SKIP() << "updated " << goldenFile;
+  }
+  if (golden.at("impl_version").get<int>() != type->implVersion()) {
+    GTEST_SKIP() << GetParam() << " impl_version is now " << type->implVersion() << " (golden: "
+                 << golden["impl_version"] << "): regenerate the golden case";
+  }
+  EXPECT_EQ(digests, golden.at("digests"))
+      << GetParam() << " output changed but its impl_version did not: bump impl_version (so cached results of the "
+      << "old code are not reused) and regenerate the golden case";
+}
+
+std::vector<std::string> stageTypes() { return workflows::stages::StageRegistry::builtin().names(); }
+
+INSTANTIATE_TEST_SUITE_P(EveryStageType, Golden, ::testing::ValuesIn(stageTypes()),
+                         [](const auto& p) { return p.param; });
+
+}  // namespace
