@@ -2,6 +2,7 @@
 // Vector and tensor aliases shared by every module. Double precision throughout: DEM contact
 // overlaps are ~1e-4 of a diameter and Eq. 2.3 sums many cancelling contributions.
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 #include <cstdint>
 
 namespace grainbridge {

@@ -1,0 +1,47 @@
+#pragma once
+// Verlet list over cell bins with a skin (STYLE.md 12): pairs within cutoff = max contact
+// distance + skin, stored in CSR form per owned particle, each pair once. The list is rebuilt
+// when some particle has moved more than half the skin. Tangential contact history lives in
+// slots parallel to the pairs, so the hot loop reads it with no lookup; at a rebuild it is
+// carried over by the pair's global ids, which keeps it across rebuilds and re-sorting.
+#include <cstdint>
+#include <vector>
+
+#include "core/Types.hpp"
+#include "engines/dem/Particles.hpp"
+
+namespace grainbridge::dem {
+
+class NeighborList {
+public:
+  // Bins owned and ghost particles over [lo - cutoff, hi + cutoff] and lists every pair closer
+  // than `cutoff` once: owned-owned pairs with j > i, owned-ghost pairs only when the owned id is
+  // the smaller (the mirrored image pair is listed from the other side). Frozen-frozen pairs are
+  // left out. History of pairs still listed is carried over.
+  void build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff);
+
+  [[nodiscard]] std::size_t pairCount() const { return partner_.size(); }
+  [[nodiscard]] std::size_t begin(std::size_t i) const { return offset_[i]; }
+  [[nodiscard]] std::size_t end(std::size_t i) const { return offset_[i + 1]; }
+  [[nodiscard]] std::uint32_t partner(std::size_t slot) const { return partner_[slot]; }
+  Vec3& history(std::size_t slot) { return history_[slot]; }
+  [[nodiscard]] const Vec3& history(std::size_t slot) const { return history_[slot]; }
+
+  // Positions of owned particles at the last build, for the half-skin rebuild criterion.
+  [[nodiscard]] const std::vector<Vec3>& referencePositions() const { return x0_; }
+  [[nodiscard]] std::int64_t builds() const { return builds_; }
+
+private:
+  std::vector<std::size_t> offset_;
+  std::vector<std::uint32_t> partner_;
+  std::vector<Vec3> history_;  // u_t of Eq. 6.4 in the orientation (owner i, partner j); 0 = no contact
+  std::vector<Vec3> x0_;
+  std::vector<std::int64_t> idsAtBuild_;  // global ids by index at the last build, to key history
+  std::int64_t builds_ = 0;
+  // Scratch kept between builds to avoid reallocating.
+  std::vector<std::uint32_t> cellStart_;
+  std::vector<std::uint32_t> cellItems_;
+  std::vector<std::uint32_t> cellOf_;
+};
+
+}  // namespace grainbridge::dem

@@ -1,0 +1,380 @@
+#include "engines/dem/Simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "core/Error.hpp"
+#include "engines/dem/contact/SpringDashpot.hpp"
+
+namespace grainbridge::dem {
+
+namespace {
+std::string vecText(const Vec3& v) {
+  return "(" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")";
+}
+}  // namespace
+
+Simulation::Simulation(SimulationSetup setup, Particles particles) : setup_(std::move(setup)), p_(std::move(particles)) {
+  if (!(setup_.dt > 0)) throw Error("DEM: time step must be positive");
+  if (setup_.skin < 0) throw Error("DEM: skin must be >= 0");
+  if (setup_.species < 1 || setup_.pairMaterial.size() != static_cast<std::size_t>(setup_.species * setup_.species))
+    throw Error("DEM: need one material per species pair");
+  for (const auto& w : setup_.walls) {
+    if (w.material.size() != static_cast<std::size_t>(setup_.species)) throw Error("DEM: each wall needs a material per species");
+  }
+  GB_ASSERT(p_.size() == p_.nOwned, "the engine creates ghosts itself");
+  double maxRadius = 0.0;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) maxRadius = std::max(maxRadius, p_.radius[i]);
+  cutoff_ = 2.0 * maxRadius + setup_.skin;
+  for (int a = 0; a < 3; ++a) {
+    // One image per neighbour: a periodic length must exceed twice the cutoff.
+    if (setup_.periodic[static_cast<std::size_t>(a)] && setup_.hi[a] - setup_.lo[a] < 2.0 * cutoff_) {
+      throw Error("DEM: the periodic box is " + std::to_string(setup_.hi[a] - setup_.lo[a]) + " m along axis " +
+                  std::to_string(a) + ", less than twice the interaction range " + std::to_string(cutoff_) +
+                  " m (largest diameter + skin)");
+    }
+  }
+  wallHistory_.assign(p_.nOwned * setup_.walls.size(), Vec3::Zero());
+  wallForce_.assign(setup_.walls.size(), Vec3::Zero());
+  rebuild(false);
+  computeForces(false);
+}
+
+std::optional<std::size_t> Simulation::indexOf(std::int64_t id) const {
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    if (p_.id[i] == id) return i;
+  }
+  return std::nullopt;
+}
+
+Energies Simulation::energies() const {
+  Energies e;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    if (p_.isFrozen(i)) continue;
+    e.translational += 0.5 * p_.mass[i] * p_.v[i].squaredNorm();
+    e.rotational += 0.5 / p_.invInertia[i] * p_.omega[i].squaredNorm();
+  }
+  return e;
+}
+
+Vec3 Simulation::momentum() const {
+  Vec3 m = Vec3::Zero();
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    if (!p_.isFrozen(i)) m += p_.mass[i] * p_.v[i];
+  }
+  return m;
+}
+
+void Simulation::run(std::int64_t steps) {
+  for (std::int64_t s = 0; s < steps; ++s) step(false);
+}
+
+void Simulation::step(bool recordContacts) {
+  const double dt = setup_.dt;
+  const double half = 0.5 * dt;
+  // Velocity Verlet: half kick, drift, forces at the new positions, half kick.
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    p_.v[i] += (half * p_.invMass[i]) * p_.force[i];
+    p_.omega[i] += (half * p_.invInertia[i]) * p_.torque[i];
+    p_.x[i] += dt * p_.v[i];
+  }
+  time_ += dt;
+  ++step_;
+  if (needsRebuild()) rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
+  else p_.refreshGhosts();
+  computeForces(recordContacts);
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    p_.v[i] += (half * p_.invMass[i]) * p_.force[i];
+    p_.omega[i] += (half * p_.invInertia[i]) * p_.torque[i];
+  }
+}
+
+void Simulation::forceRebuild(bool sort) {
+  rebuild(sort);
+  computeForces(false);
+}
+
+bool Simulation::needsRebuild() const {
+  const double limit2 = 0.25 * setup_.skin * setup_.skin;
+  const auto& x0 = list_.referencePositions();
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    if ((p_.x[i] - x0[i]).squaredNorm() > limit2) return true;
+  }
+  return false;
+}
+
+void Simulation::wrapAndCheck() {
+  const Vec3 length = setup_.hi - setup_.lo;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    Vec3& x = p_.x[i];
+    if (!x.allFinite() || !p_.v[i].allFinite()) {
+      throw Error("DEM: particle " + std::to_string(p_.id[i]) + " has a non-finite position or velocity at step " +
+                  std::to_string(step_) + " (time step too large, or overlapping initial particles?)");
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (setup_.periodic[static_cast<std::size_t>(a)]) {
+        x[a] -= length[a] * std::floor((x[a] - setup_.lo[a]) / length[a]);
+        if (x[a] >= setup_.hi[a]) x[a] = setup_.lo[a];  // floor round-off at the upper edge
+      } else if (x[a] < setup_.lo[a] - cutoff_ || x[a] > setup_.hi[a] + cutoff_) {
+        throw Error("DEM: particle " + std::to_string(p_.id[i]) + " left the domain at step " + std::to_string(step_) +
+                    ": position " + vecText(x) + " outside " + vecText(setup_.lo) + " - " + vecText(setup_.hi));
+      }
+    }
+  }
+}
+
+void Simulation::buildGhosts() {
+  p_.clearGhosts();
+  const Vec3 length = setup_.hi - setup_.lo;
+  // Axis by axis, including ghosts made for earlier axes, so edges and corners get images.
+  for (int a = 0; a < 3; ++a) {
+    if (!setup_.periodic[static_cast<std::size_t>(a)]) continue;
+    const std::size_t existing = p_.size();
+    for (std::size_t k = 0; k < existing; ++k) {
+      const std::size_t owner = k < p_.nOwned ? k : p_.ghostOwner[k - p_.nOwned];
+      const Vec3 baseShift = k < p_.nOwned ? Vec3::Zero() : p_.ghostShift[k - p_.nOwned];
+      const Vec3 baseVel = k < p_.nOwned ? Vec3::Zero() : p_.ghostVelocityShift[k - p_.nOwned];
+      const double xa = p_.x[k][a];
+      Vec3 shift = Vec3::Zero();
+      if (xa < setup_.lo[a] + cutoff_) {
+        shift[a] = length[a];
+        p_.addGhost(owner, baseShift + shift, baseVel);
+      }
+      if (xa >= setup_.hi[a] - cutoff_) {
+        shift[a] = -length[a];
+        p_.addGhost(owner, baseShift + shift, baseVel);
+      }
+    }
+  }
+}
+
+void Simulation::sortByCell() {
+  // Particles close in space close in memory: the pair loop then touches fewer cache lines.
+  const double cell = cutoff_;
+  const Vec3 extent = setup_.hi - setup_.lo;
+  Vec3i cells;
+  for (int a = 0; a < 3; ++a) cells[a] = std::max(1, static_cast<int>(extent[a] / cell));
+  std::vector<std::size_t> key(p_.nOwned);
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    Vec3i c;
+    for (int a = 0; a < 3; ++a) {
+      c[a] = std::clamp(static_cast<int>((p_.x[i][a] - setup_.lo[a]) / extent[a] * cells[a]), 0, cells[a] - 1);
+    }
+    key[i] = (static_cast<std::size_t>(c[2]) * cells[1] + c[1]) * cells[0] + c[0];
+  }
+  std::vector<std::size_t> order(p_.nOwned);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  p_.permuteOwned(order);
+  const std::size_t nw = setup_.walls.size();
+  if (nw > 0) {
+    std::vector<Vec3> moved(wallHistory_.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      for (std::size_t w = 0; w < nw; ++w) moved[k * nw + w] = wallHistory_[order[k] * nw + w];
+    }
+    wallHistory_.swap(moved);
+  }
+}
+
+void Simulation::rebuild(bool sort) {
+  p_.clearGhosts();
+  wrapAndCheck();
+  if (sort) {
+    sortByCell();
+    rebuildsSinceSort_ = 0;
+  } else {
+    ++rebuildsSinceSort_;
+  }
+  buildGhosts();
+  list_.build(p_, setup_.lo, setup_.hi, cutoff_);
+}
+
+void Simulation::computeForces(bool record) {
+  const std::size_t n = p_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    p_.force[i].setZero();
+    p_.torque[i].setZero();
+  }
+  if (record) {
+    recordedContacts_ = {};
+    recordedWallContacts_ = {};
+  }
+  contactCount_ = 0;
+  if (setup_.model == NormalModel::Hertz) {
+    record ? pairForces<contact::Hertz, true>() : pairForces<contact::Hertz, false>();
+    record ? wallForces<contact::Hertz, true>() : wallForces<contact::Hertz, false>();
+  } else {
+    record ? pairForces<contact::Linear, true>() : pairForces<contact::Linear, false>();
+    record ? wallForces<contact::Linear, true>() : wallForces<contact::Linear, false>();
+  }
+  // Forces on ghosts belong to their owners (the reverse communication of a parallel run).
+  for (std::size_t k = 0; k < p_.ghostOwner.size(); ++k) {
+    const std::size_t o = p_.ghostOwner[k];
+    p_.force[o] += p_.force[p_.nOwned + k];
+    p_.torque[o] += p_.torque[p_.nOwned + k];
+  }
+  // Body forces: gravity, background damping -b v (Eq. 6.7), TF-DEM coupling a + B (u - v).
+  const double b = setup_.backgroundDamping;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    if (p_.isFrozen(i)) {
+      p_.force[i].setZero();
+      p_.torque[i].setZero();
+      continue;
+    }
+    p_.force[i] += p_.mass[i] * setup_.gravity - b * p_.v[i] + p_.couplingA[i] +
+                   p_.couplingB[i] * (p_.couplingU[i] - p_.v[i]);
+  }
+}
+
+template <class Law, bool Record>
+void Simulation::pairForces() {
+  using Contact = contact::SpringDashpot<Law>;
+  const double dt = setup_.dt;
+  const int ns = setup_.species;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    const Vec3 xi = p_.x[i];
+    const Vec3 vi = p_.v[i];
+    const Vec3 wi = p_.omega[i];
+    const double ai = p_.radius[i];
+    const double invMi = p_.invMass[i];
+    const int si = p_.species[i];
+    Vec3 fi = Vec3::Zero();
+    Vec3 ti = Vec3::Zero();
+    for (std::size_t s = list_.begin(i); s < list_.end(i); ++s) {
+      const std::size_t j = list_.partner(s);
+      const Vec3 r = xi - p_.x[j];
+      const double sumRadii = ai + p_.radius[j];
+      const double r2 = r.squaredNorm();
+      Vec3& ut = list_.history(s);
+      if (r2 >= sumRadii * sumRadii) {
+        ut.setZero();  // not touching: history ends with the contact
+        continue;
+      }
+      const double rlen = std::sqrt(r2);
+      contact::ContactKinematics c;
+      c.n = r / rlen;
+      c.delta = sumRadii - rlen;  // Eq. 6.1
+      c.d = sumRadii;
+      const double aj = p_.radius[j];
+      const Vec3 vij = vi - p_.v[j];
+      c.vn = vij.dot(c.n) * c.n;                                   // Eq. 6.2
+      c.vt = vij - c.vn - (ai * wi + aj * p_.omega[j]).cross(c.n);  // Eq. 6.3
+      c.meff = 1.0 / (invMi + p_.invMass[j]);
+      const auto f = Contact::evaluate(c, setup_.pairMaterial[static_cast<std::size_t>(si * ns + p_.species[j])], dt, ut);
+      const Vec3 fn = f.normal();
+      const Vec3 ft = f.tangential();
+      const Vec3 total = fn + ft;
+      fi += total;
+      p_.force[j] -= total;
+      // Torque with the lever arm to the contact point, a_i n from each centre (consistent with
+      // Eq. 6.3; Eq. 6.8's -1/2 r_ij x F_t is its equal-size form).
+      const Vec3 nxft = c.n.cross(ft);
+      ti -= ai * nxft;
+      p_.torque[j] -= aj * nxft;
+      ++contactCount_;
+      if constexpr (Record) {
+        auto& rc = recordedContacts_;
+        rc.i.push_back(p_.id[i]);
+        rc.j.push_back(p_.id[j]);
+        rc.branch.push_back(r);
+        rc.contactPoint.push_back(xi - ai * c.n);
+        rc.forceNormal.push_back(fn);
+        rc.forceTangential.push_back(ft);
+        rc.forceNormalElastic.push_back(f.normalElastic);
+        rc.forceNormalDissipative.push_back(f.normalDissipative);
+        rc.forceTangentialElastic.push_back(f.tangentialElastic);
+        rc.forceTangentialDissipative.push_back(f.tangentialDissipative);
+      }
+    }
+    p_.force[i] += fi;
+    p_.torque[i] += ti;
+  }
+}
+
+template <class Law, bool Record>
+void Simulation::wallForces() {
+  using Contact = contact::SpringDashpot<Law>;
+  const std::size_t nw = setup_.walls.size();
+  for (auto& wf : wallForce_) wf.setZero();
+  if (nw == 0) return;
+  const double dt = setup_.dt;
+  for (std::size_t w = 0; w < nw; ++w) {
+    const Wall& wall = setup_.walls[w];
+    const Vec3 origin = wall.positionAt(time_);
+    const Vec3 wallVelocity = wall.velocityAt(time_);
+    const Vec3 k = wall.direction;
+    for (std::size_t i = 0; i < p_.nOwned; ++i) {
+      if (p_.isFrozen(i)) continue;
+      const double ai = p_.radius[i];
+      const Vec3 rel = p_.x[i] - origin;
+      Vec3 n;  // from the wall towards the particle centre
+      double gap;
+      if (wall.kind == Wall::Kind::Plane) {
+        gap = rel.dot(k);
+        n = k;
+      } else {
+        const Vec3 radial = rel - rel.dot(k) * k;
+        const double rho = radial.norm();
+        gap = wall.radius - rho;
+        if (rho <= 0.0) continue;
+        n = -radial / rho;
+      }
+      Vec3& ut = wallHistory_[i * nw + w];
+      if (gap >= ai) {
+        ut.setZero();
+        continue;
+      }
+      contact::ContactKinematics c;
+      c.n = n;
+      c.delta = ai - gap;
+      c.d = 2.0 * ai;  // Hertz against a wall: d = 2 a_i
+      const Vec3 vij = p_.v[i] - wallVelocity;
+      c.vn = vij.dot(n) * n;
+      c.vt = vij - c.vn - (ai * p_.omega[i]).cross(n);  // the wall does not rotate
+      c.meff = p_.mass[i];                              // infinite wall mass
+      const auto f = Contact::evaluate(c, wall.material[static_cast<std::size_t>(p_.species[i])], dt, ut);
+      const Vec3 fn = f.normal();
+      const Vec3 ft = f.tangential();
+      p_.force[i] += fn + ft;
+      p_.torque[i] -= ai * n.cross(ft);
+      wallForce_[w] -= fn + ft;
+      if constexpr (Record) {
+        auto& rw = recordedWallContacts_;
+        rw.particle.push_back(p_.id[i]);
+        rw.wall.push_back(static_cast<std::int32_t>(w));
+        rw.point.push_back(p_.x[i] - ai * n);
+        rw.forceNormal.push_back(fn);
+        rw.forceTangential.push_back(ft);
+      }
+    }
+  }
+}
+
+core::data::ParticleFrame Simulation::frame() const {
+  core::data::ParticleFrame f;
+  f.time = time_;
+  f.step = step_;
+  f.units = "SI";
+  f.domain.lo = setup_.lo;
+  f.domain.hi = setup_.hi;
+  f.domain.periodic = setup_.periodic;
+  for (const auto& w : setup_.walls) {
+    f.domain.walls.push_back({w.kind == Wall::Kind::Plane ? "plane" : "cylinder", w.positionAt(time_), w.direction,
+                              w.radius, w.velocityAt(time_)});
+  }
+  const std::size_t n = p_.nOwned;
+  f.id.assign(p_.id.begin(), p_.id.begin() + static_cast<std::ptrdiff_t>(n));
+  f.species.assign(p_.species.begin(), p_.species.begin() + static_cast<std::ptrdiff_t>(n));
+  f.radius.assign(p_.radius.begin(), p_.radius.begin() + static_cast<std::ptrdiff_t>(n));
+  f.mass.assign(p_.mass.begin(), p_.mass.begin() + static_cast<std::ptrdiff_t>(n));
+  f.position.assign(p_.x.begin(), p_.x.begin() + static_cast<std::ptrdiff_t>(n));
+  f.velocity.assign(p_.v.begin(), p_.v.begin() + static_cast<std::ptrdiff_t>(n));
+  f.angularVelocity.assign(p_.omega.begin(), p_.omega.begin() + static_cast<std::ptrdiff_t>(n));
+  f.contacts = recordedContacts_;
+  f.wallContacts = recordedWallContacts_;
+  return f;
+}
+
+}  // namespace grainbridge::dem
