@@ -18,7 +18,8 @@ struct PairKey {
 struct PairKeyHash {
   std::size_t operator()(const PairKey& k) const {
     const auto a = static_cast<std::uint64_t>(k.low) * 0x9E3779B97F4A7C15ULL;
-    return static_cast<std::size_t>(a ^ (static_cast<std::uint64_t>(k.high) + 0x632BE59BD9B4E019ULL + (a << 6) + (a >> 2)));
+    return static_cast<std::size_t>(a ^
+                                    (static_cast<std::uint64_t>(k.high) + 0x632BE59BD9B4E019ULL + (a << 6) + (a >> 2)));
   }
 };
 

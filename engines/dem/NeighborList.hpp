@@ -13,7 +13,7 @@
 namespace grainbridge::dem {
 
 class NeighborList {
-public:
+ public:
   // Bins owned and ghost particles over [lo - cutoff, hi + cutoff] and lists every pair closer
   // than `cutoff` once: owned-owned pairs with j > i, owned-ghost pairs only when the owned id is
   // the smaller (the mirrored image pair is listed from the other side). Frozen-frozen pairs are
@@ -31,7 +31,7 @@ public:
   [[nodiscard]] const std::vector<Vec3>& referencePositions() const { return x0_; }
   [[nodiscard]] std::int64_t builds() const { return builds_; }
 
-private:
+ private:
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> partner_;
   std::vector<Vec3> history_;  // u_t of Eq. 6.4 in the orientation (owner i, partner j); 0 = no contact

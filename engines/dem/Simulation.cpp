@@ -16,13 +16,15 @@ std::string vecText(const Vec3& v) {
 }
 }  // namespace
 
-Simulation::Simulation(SimulationSetup setup, Particles particles) : setup_(std::move(setup)), p_(std::move(particles)) {
+Simulation::Simulation(SimulationSetup setup, Particles particles)
+    : setup_(std::move(setup)), p_(std::move(particles)) {
   if (!(setup_.dt > 0)) throw Error("DEM: time step must be positive");
   if (setup_.skin < 0) throw Error("DEM: skin must be >= 0");
   if (setup_.species < 1 || setup_.pairMaterial.size() != static_cast<std::size_t>(setup_.species * setup_.species))
     throw Error("DEM: need one material per species pair");
   for (const auto& w : setup_.walls) {
-    if (w.material.size() != static_cast<std::size_t>(setup_.species)) throw Error("DEM: each wall needs a material per species");
+    if (w.material.size() != static_cast<std::size_t>(setup_.species))
+      throw Error("DEM: each wall needs a material per species");
   }
   GB_ASSERT(p_.size() == p_.nOwned, "the engine creates ghosts itself");
   double maxRadius = 0.0;
@@ -82,8 +84,10 @@ void Simulation::step(bool recordContacts) {
   }
   time_ += dt;
   ++step_;
-  if (needsRebuild()) rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
-  else p_.refreshGhosts();
+  if (needsRebuild())
+    rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
+  else
+    p_.refreshGhosts();
   computeForces(recordContacts);
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     p_.v[i] += (half * p_.invMass[i]) * p_.force[i];
@@ -223,8 +227,8 @@ void Simulation::computeForces(bool record) {
       p_.torque[i].setZero();
       continue;
     }
-    p_.force[i] += p_.mass[i] * setup_.gravity - b * p_.v[i] + p_.couplingA[i] +
-                   p_.couplingB[i] * (p_.couplingU[i] - p_.v[i]);
+    p_.force[i] +=
+        p_.mass[i] * setup_.gravity - b * p_.v[i] + p_.couplingA[i] + p_.couplingB[i] * (p_.couplingU[i] - p_.v[i]);
   }
 }
 
@@ -259,10 +263,11 @@ void Simulation::pairForces() {
       c.d = sumRadii;
       const double aj = p_.radius[j];
       const Vec3 vij = vi - p_.v[j];
-      c.vn = vij.dot(c.n) * c.n;                                   // Eq. 6.2
+      c.vn = vij.dot(c.n) * c.n;                                    // Eq. 6.2
       c.vt = vij - c.vn - (ai * wi + aj * p_.omega[j]).cross(c.n);  // Eq. 6.3
       c.meff = 1.0 / (invMi + p_.invMass[j]);
-      const auto f = Contact::evaluate(c, setup_.pairMaterial[static_cast<std::size_t>(si * ns + p_.species[j])], dt, ut);
+      const auto f =
+          Contact::evaluate(c, setup_.pairMaterial[static_cast<std::size_t>(si * ns + p_.species[j])], dt, ut);
       const Vec3 fn = f.normal();
       const Vec3 ft = f.tangential();
       const Vec3 total = fn + ft;

@@ -43,7 +43,7 @@ struct Energies {
 };
 
 class Simulation {
-public:
+ public:
   // Throws grainbridge::Error for an unusable setup (naming what is wrong).
   Simulation(SimulationSetup setup, Particles particles);
 
@@ -74,7 +74,7 @@ public:
   // Index of the owned particle with this global id (linear search; for tests and setup).
   [[nodiscard]] std::optional<std::size_t> indexOf(std::int64_t id) const;
 
-private:
+ private:
   void rebuild(bool sort);
   bool needsRebuild() const;
   void wrapAndCheck();

@@ -28,9 +28,9 @@ struct Vibration {
 struct Wall {
   enum class Kind { Plane, Cylinder };
   Kind kind = Kind::Plane;
-  Vec3 origin = Vec3::Zero();     // a point on the plane, or on the cylinder axis, at rest
-  Vec3 direction = Vec3::UnitZ(); // plane: unit normal pointing into the domain; cylinder: axis
-  double radius = 0.0;            // cylinder: inner radius (particles inside)
+  Vec3 origin = Vec3::Zero();      // a point on the plane, or on the cylinder axis, at rest
+  Vec3 direction = Vec3::UnitZ();  // plane: unit normal pointing into the domain; cylinder: axis
+  double radius = 0.0;             // cylinder: inner radius (particles inside)
   Vibration vibration;
   std::vector<PairMaterial> material;  // per particle species
 

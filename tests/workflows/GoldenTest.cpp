@@ -60,12 +60,14 @@ TEST_P(Golden, OutputUnchangedUnlessImplVersionBumped) {
   writeText(work.path() / "wf.json", golden.at("workflow").dump(2));
   const auto r = runGrainbridge(work.path(), "run wf.json -q");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  auto database = db::Database::openReadOnly(work.path() / "results" / golden["workflow"]["name"].get<std::string>() / "grainbridge.sqlite");
+  auto database = db::Database::openReadOnly(work.path() / "results" / golden["workflow"]["name"].get<std::string>() /
+                                             "grainbridge.sqlite");
   db::ProvenanceStore store(database);
   json digests = json::object();
   for (const auto& run : store.runs("")) {
     if (run.stageType != GetParam()) continue;
-    json entry = {{"summary", json::parse(run.summaryJson.empty() ? "{}" : run.summaryJson)}, {"artifacts", json::object()}};
+    json entry = {{"summary", json::parse(run.summaryJson.empty() ? "{}" : run.summaryJson)},
+                  {"artifacts", json::object()}};
     for (const auto& a : store.artifactsOfRun(run.id)) {
       const std::string rel = a.path.substr(run.instanceDir.size() + 1);
       entry["artifacts"][rel] = contentDigest(work.path() / "results" / a.path, a.kind);
@@ -74,15 +76,24 @@ TEST_P(Golden, OutputUnchangedUnlessImplVersionBumped) {
   }
   ASSERT_FALSE(digests.empty()) << "the golden workflow has no instance of " << GetParam();
 
+  // The impl_version of every stage type the golden workflow uses: a downstream type's output
+  // also changes when an upstream type's does.
+  json versions = json::object();
+  for (const auto& [name, stage] : golden.at("workflow").at("stages").items()) {
+    const auto* t = workflows::stages::StageRegistry::builtin().find(stage.at("type"));
+    ASSERT_NE(t, nullptr) << name;
+    versions[t->name()] = t->implVersion();
+  }
   if (std::getenv("GRAINBRIDGE_UPDATE_GOLDEN") != nullptr) {
-    golden["impl_version"] = type->implVersion();
+    golden["impl_versions"] = versions;
     golden["digests"] = digests;
     writeText(goldenFile, golden.dump(2) + "\n");
     GTEST_SKIP() << "updated " << goldenFile;
   }
-  if (golden.at("impl_version").get<int>() != type->implVersion()) {
-    GTEST_SKIP() << GetParam() << " impl_version is now " << type->implVersion() << " (golden: "
-                 << golden["impl_version"] << "): regenerate the golden case";
+  if (golden.value("impl_versions", json::object()) != versions) {
+    GTEST_SKIP() << "impl_versions are now " << versions.dump()
+                 << " (golden: " << golden.value("impl_versions", json::object()).dump()
+                 << "): regenerate the golden case";
   }
   EXPECT_EQ(digests, golden.at("digests"))
       << GetParam() << " output changed but its impl_version did not: bump impl_version (so cached results of the "

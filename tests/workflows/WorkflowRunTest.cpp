@@ -142,7 +142,7 @@ TEST_F(WorkflowRun, FailedInstanceIsNeverCachedAndKeepGoingFinishesTheRest) {
   write(cfg);
   auto r = run();
   EXPECT_EQ(r.exitCode, 1) << r.output;
-  EXPECT_NE(r.output.find("could not insert particle"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("could not insert sphere"), std::string::npos) << r.output;
   auto rs = runs(work.path());
   EXPECT_EQ(countStage(rs, "gas", "failed"), 1);
   EXPECT_EQ(countStage(rs, "gas", "done"), 0);  // stopped after the first failure
@@ -161,7 +161,8 @@ TEST_F(WorkflowRun, FailedInstanceIsNeverCachedAndKeepGoingFinishesTheRest) {
 // Starts `grainbridge run wf.json` in the background of `work`; returns its pid once its first
 // stage instance is claimed (a 'running' row exists).
 long startInBackground(const fs::path& work) {
-  runCommand("cd '" + work.string() + "' && (" + grainbridgeBinary() + " run wf.json > bg.log 2>&1 & echo $! > bg.pid)");
+  runCommand("cd '" + work.string() + "' && (" + grainbridgeBinary() +
+             " run wf.json > bg.log 2>&1 & echo $! > bg.pid)");
   const long pid = std::stol(readText(work / "bg.pid"));
   const fs::path dbFile = work / "results/wf/grainbridge.sqlite";
   for (int i = 0; i < 600; ++i) {

@@ -117,6 +117,25 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
       }
       return value;
     }
+    case ParamKind::Object: {
+      const std::size_t before = diagnostics.size();
+      json out = spec.nested()->resolve(value, {}, units, pointer, diagnostics);
+      if (diagnostics.size() != before) return std::nullopt;
+      return out;
+    }
+    case ParamKind::ObjectList: {
+      if (!value.is_array() || value.empty()) {
+        diagnostics.add(pointer, "expected a non-empty list of objects, found " + found(value));
+        return std::nullopt;
+      }
+      const std::size_t before = diagnostics.size();
+      json out = json::array();
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        out.push_back(spec.nested()->resolve(value[i], {}, units, pointer + "/" + std::to_string(i), diagnostics));
+      }
+      if (diagnostics.size() != before) return std::nullopt;
+      return out;
+    }
     case ParamKind::QuantityList: {
       if (!value.is_array() || static_cast<int>(value.size()) != spec.listLength()) {
         diagnostics.add(pointer, "expected a " + spec.typeDescription() + ", found " + found(value));

@@ -21,6 +21,18 @@ ParamSpec ParamSpec::quantityList(std::string name, core::units::Dimension dim, 
   return p;
 }
 
+ParamSpec ParamSpec::object(std::string name, std::shared_ptr<const ParamSchema> schema) {
+  ParamSpec p(std::move(name), ParamKind::Object, {});
+  p.nested_ = std::move(schema);
+  return p;
+}
+
+ParamSpec ParamSpec::objectList(std::string name, std::shared_ptr<const ParamSchema> schema) {
+  ParamSpec p(std::move(name), ParamKind::ObjectList, {});
+  p.nested_ = std::move(schema);
+  return p;
+}
+
 ParamSpec& ParamSpec::required() {
   GB_ASSERT(!default_, "parameter '" + name_ + "' cannot be both required and defaulted");
   required_ = true;
@@ -67,6 +79,10 @@ std::string ParamSpec::typeDescription() const {
       for (std::size_t i = 0; i < options_.size(); ++i) s += (i ? "|" : "") + options_[i];
       return s;
     }
+    case ParamKind::Object:
+      return "object";
+    case ParamKind::ObjectList:
+      return "list of objects";
     case ParamKind::QuantityList:
       return "list of " + std::to_string(listLength_) +
              (dim_.isNone() ? " numbers" : " quantities [" + dim_.siUnit() + "]");

@@ -2,6 +2,7 @@
 // One declaration per stage parameter (STYLE.md 5): type, unit dimension, default or required,
 // allowed range or values, whether it affects results, and a one-line doc. Validation,
 // `grainbridge stages` and docs/stages.md are all derived from these declarations.
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -11,7 +12,9 @@
 
 namespace grainbridge::workflows::params {
 
-enum class ParamKind { Quantity, Integer, Boolean, String, QuantityList };
+enum class ParamKind { Quantity, Integer, Boolean, String, QuantityList, Object, ObjectList };
+
+class ParamSchema;
 
 struct Bound {
   double value;
@@ -28,6 +31,10 @@ class ParamSpec {
   static ParamSpec string(std::string name);
   // A fixed-length list of quantities, e.g. gravity [0, 0, "-9.81 m/s2"].
   static ParamSpec quantityList(std::string name, core::units::Dimension dim, int length);
+  // A nested object, or a non-empty list of objects, each validated by `schema` (species,
+  // walls, per-pair materials): errors name the element, e.g. /stages/bed/params/walls/2/mu.
+  static ParamSpec object(std::string name, std::shared_ptr<const ParamSchema> schema);
+  static ParamSpec objectList(std::string name, std::shared_ptr<const ParamSchema> schema);
 
   ParamSpec& required();
   ParamSpec& defaultValue(nlohmann::json value);  // in the same forms a config accepts
@@ -50,6 +57,7 @@ class ParamSpec {
   [[nodiscard]] const std::string& docText() const { return doc_; }
   [[nodiscard]] bool affectsResults() const { return affectsResults_; }
   [[nodiscard]] int listLength() const { return listLength_; }
+  [[nodiscard]] const ParamSchema* nested() const { return nested_.get(); }
 
   // "quantity [m]", "integer", "string: one of a|b", ...
   [[nodiscard]] std::string typeDescription() const;
@@ -70,6 +78,7 @@ class ParamSpec {
   std::string doc_;
   bool affectsResults_ = true;
   int listLength_ = 0;
+  std::shared_ptr<const ParamSchema> nested_;
 };
 
 }  // namespace grainbridge::workflows::params

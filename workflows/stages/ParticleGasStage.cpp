@@ -8,6 +8,7 @@
 #include "core/Progress.hpp"
 #include "core/data/ParticleFrame.hpp"
 #include "core/io/ParticleFrameWriter.hpp"
+#include "engines/dem/Insertion.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -46,66 +47,6 @@ ParticleGasStage::ParticleGasStage() {
                .doc("report progress while inserting"));
 }
 
-namespace {
-
-// Uniform grid over the periodic cube with cells no smaller than one diameter, so an overlap
-// test only needs the 27 surrounding cells.
-class InsertionGrid {
- public:
-  InsertionGrid(double box, double diameter) : box_(box), d2_(diameter * diameter) {
-    cells_ = std::max(1, static_cast<int>(std::floor(box / diameter)));
-    cellSize_ = box / cells_;
-    heads_.assign(static_cast<std::size_t>(cells_) * cells_ * cells_, -1);
-  }
-  bool overlaps(const Vec3& p, const std::vector<Vec3>& pos) const {
-    const Vec3i c = cellOf(p);
-    const int reach = cells_ >= 3 ? 1 : 0;  // with fewer than 3 cells every cell is a neighbour
-    for (int dz = -reach; dz <= reach; ++dz)
-      for (int dy = -reach; dy <= reach; ++dy)
-        for (int dx = -reach; dx <= reach; ++dx) {
-          if (reach == 0) return overlapsAny(p, pos);
-          for (int j = heads_[index(c + Vec3i(dx, dy, dz))]; j >= 0; j = next_[static_cast<std::size_t>(j)]) {
-            Vec3 r = p - pos[static_cast<std::size_t>(j)];
-            for (int a = 0; a < 3; ++a) r[a] -= box_ * std::round(r[a] / box_);  // periodic image
-            if (r.squaredNorm() < d2_) return true;
-          }
-        }
-    return false;
-  }
-  void insert(const Vec3& p, int id) {
-    const std::size_t cell = index(cellOf(p));
-    next_.push_back(heads_[cell]);
-    heads_[cell] = id;
-  }
-
- private:
-  bool overlapsAny(const Vec3& p, const std::vector<Vec3>& pos) const {
-    for (const auto& q : pos) {
-      Vec3 r = p - q;
-      for (int a = 0; a < 3; ++a) r[a] -= box_ * std::round(r[a] / box_);
-      if (r.squaredNorm() < d2_) return true;
-    }
-    return false;
-  }
-  Vec3i cellOf(const Vec3& p) const {
-    Vec3i c;
-    for (int a = 0; a < 3; ++a) c[a] = std::min(cells_ - 1, static_cast<int>(p[a] / cellSize_));
-    return c;
-  }
-  std::size_t index(Vec3i c) const {
-    for (int a = 0; a < 3; ++a) c[a] = ((c[a] % cells_) + cells_) % cells_;
-    return static_cast<std::size_t>((c[2] * cells_ + c[1]) * cells_ + c[0]);
-  }
-  double box_;
-  double d2_;
-  int cells_;
-  double cellSize_;
-  std::vector<int> heads_;
-  std::vector<int> next_;
-};
-
-}  // namespace
-
 void ParticleGasStage::run(StageContext& ctx) const {
   const auto& p = ctx.params();
   const auto n = p.at("n_particles").get<std::int64_t>();
@@ -118,7 +59,6 @@ void ParticleGasStage::run(StageContext& ctx) const {
   const double box = std::cbrt(static_cast<double>(n) * volume / phi);
 
   std::mt19937_64 rng(p.at("seed").get<std::uint64_t>());
-  std::uniform_real_distribution<double> uniform(0.0, box);
 
   core::data::ParticleFrame frame;
   frame.time = 0.0;
@@ -127,31 +67,24 @@ void ParticleGasStage::run(StageContext& ctx) const {
   frame.domain.lo = Vec3::Zero();
   frame.domain.hi = Vec3::Constant(box);
   frame.domain.periodic = {true, true, true};
-  frame.position.reserve(static_cast<std::size_t>(n));
 
-  InsertionGrid grid(box, d);
+  dem::InsertionRequest request;
+  request.lo = frame.domain.lo;
+  request.hi = frame.domain.hi;
+  request.periodic = {true, true, true};
+  request.radii.assign(static_cast<std::size_t>(n), 0.5 * d);
+  request.maxAttempts = maxAttempts;
   std::optional<core::Progress> progress;
   if (p.at("progress").get<bool>()) progress.emplace(ctx.stage() + ": inserting", static_cast<double>(n), "particles");
-  for (std::int64_t i = 0; i < n; ++i) {
-    bool placed = false;
-    for (std::int64_t attempt = 0; attempt < maxAttempts && !placed; ++attempt) {
-      const Vec3 candidate(uniform(rng), uniform(rng), uniform(rng));
-      if (!grid.overlaps(candidate, frame.position)) {
-        grid.insert(candidate, static_cast<int>(i));
-        frame.position.push_back(candidate);
-        placed = true;
-      }
-    }
-    if (!placed) {
-      throw Error("particle_gas: could not insert particle " + std::to_string(i + 1) + " of " + std::to_string(n) +
-                  " without overlap after " + std::to_string(maxAttempts) +
-                  " attempts; random insertion jams near solid fraction 0.38, " + "and solid_fraction is " +
-                  std::to_string(phi) + " (lower it, or raise max_attempts)");
-    }
-    if ((i & 1023) == 0) {
-      if (ctx.stopRequested()) throw StageInterrupted{};
-      if (progress) progress->update(static_cast<double>(i));
-    }
+  request.progress = [&](std::size_t placed) {
+    if (ctx.stopRequested()) throw StageInterrupted{};
+    if (progress) progress->update(static_cast<double>(placed));
+  };
+  try {
+    frame.position = dem::insertRandomly(request, rng);
+  } catch (const Error& e) {
+    throw Error(std::string("particle_gas: ") + e.what() + " (solid_fraction is " + std::to_string(phi) +
+                "; lower it, or raise max_attempts)");
   }
   if (progress) progress->finish();
   core::failPoint("particle_gas.after_insert");

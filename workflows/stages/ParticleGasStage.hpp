@@ -12,7 +12,8 @@ class ParticleGasStage final : public StageType {
  public:
   ParticleGasStage();
   [[nodiscard]] std::string name() const override { return "particle_gas"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  // 2: insertion through engines/dem (same statistics, different round-off)
+  [[nodiscard]] int implVersion() const override { return 2; }
   [[nodiscard]] std::string summary() const override {
     return "random non-overlapping spheres in a periodic cube with Maxwellian velocities (one particle frame)";
   }

@@ -23,12 +23,12 @@ namespace grainbridge::dem::contact {
 
 // Relative motion at one contact, all as seen by particle i (n points from j to i).
 struct ContactKinematics {
-  Vec3 n;           // unit normal, from j towards i
-  double delta;     // overlap d - r_ij (Eq. 6.1), > 0
-  double d;         // a_i + a_j (2 a_i for a wall): the length in f(delta/d)
-  Vec3 vn;          // normal relative velocity (Eq. 6.2)
-  Vec3 vt;          // tangential relative velocity of the contact surfaces (Eq. 6.3)
-  double meff;      // m_i m_j / (m_i + m_j); the mobile partner's mass against a frozen one or a wall
+  Vec3 n;        // unit normal, from j towards i
+  double delta;  // overlap d - r_ij (Eq. 6.1), > 0
+  double d;      // a_i + a_j (2 a_i for a wall): the length in f(delta/d)
+  Vec3 vn;       // normal relative velocity (Eq. 6.2)
+  Vec3 vt;       // tangential relative velocity of the contact surfaces (Eq. 6.3)
+  double meff;   // m_i m_j / (m_i + m_j); the mobile partner's mass against a frozen one or a wall
 };
 
 // Force on particle i, split into its elastic (spring) and dissipative (dashpot) parts.

@@ -1,0 +1,35 @@
+#pragma once
+// Random sequential insertion of non-overlapping spheres into a box region (the first step of
+// every preparation: insert, then settle under gravity). Periodic axes wrap the overlap test.
+// Fails with a message when the region is too full for random insertion (it jams near solid
+// fraction 0.38 for equal spheres).
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "core/Types.hpp"
+
+namespace grainbridge::dem {
+
+struct InsertionRequest {
+  Vec3 lo = Vec3::Zero();
+  Vec3 hi = Vec3::Ones();
+  std::array<bool, 3> periodic{false, false, false};  // wrap the overlap test on these axes
+  std::vector<double> radii;                          // one per sphere, inserted largest first
+  std::int64_t maxAttempts = 100000;                  // per sphere
+  // Optional cylinder (axis along z through cylinderCentre) the spheres must lie inside.
+  bool insideCylinder = false;
+  Vec3 cylinderCentre = Vec3::Zero();
+  double cylinderRadius = 0.0;
+  // Called every 1024 spheres with the number placed so far (progress display; it may throw to
+  // abandon the insertion, e.g. on a stop request).
+  std::function<void(std::size_t)> progress;
+};
+
+// Returns one centre per entry of request.radii (same order). Throws grainbridge::Error naming
+// the sphere that could not be placed.
+std::vector<Vec3> insertRandomly(const InsertionRequest& request, std::mt19937_64& rng);
+
+}  // namespace grainbridge::dem
