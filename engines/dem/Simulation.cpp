@@ -41,7 +41,7 @@ Simulation::Simulation(SimulationSetup setup, Particles particles)
   wallHistory_.assign(p_.nOwned * setup_.walls.size(), Vec3::Zero());
   wallForce_.assign(setup_.walls.size(), Vec3::Zero());
   rebuild(false);
-  computeForces(false);
+  computeForces(true);  // the initial frame gets its contacts too
 }
 
 std::optional<std::size_t> Simulation::indexOf(std::int64_t id) const {
@@ -96,8 +96,10 @@ void Simulation::step(bool recordContacts) {
 }
 
 void Simulation::forceRebuild(bool sort) {
+  // Forces are not recomputed: an evaluation advances the tangential history (Eq. 6.4), so a
+  // second one in the same step would change the trajectory. The stored forces travel with
+  // their particles through the re-sort.
   rebuild(sort);
-  computeForces(false);
 }
 
 bool Simulation::needsRebuild() const {

@@ -64,8 +64,8 @@ class Simulation {
   // Total force each wall received from the particles at the last force evaluation.
   [[nodiscard]] const std::vector<Vec3>& wallForces() const { return wallForce_; }
 
-  // Rebuilds the neighbour list now (optionally re-sorting particles by cell first) and
-  // recomputes forces; trajectories must not depend on when this happens.
+  // Rebuilds the neighbour list now (optionally re-sorting particles by cell first); contact
+  // history is carried over by particle ids, so trajectories do not depend on when this happens.
   void forceRebuild(bool sort);
 
   // The current state as a frame of the data model; contacts as recorded by the last step.

@@ -98,6 +98,27 @@ int commandStatus(const CommandOptions& opt) {
   return 0;
 }
 
+namespace {
+// One line per parameter; nested objects list their fields as parent.field or parent[].field.
+void printParams(const params::ParamSchema& schema, const std::string& prefix, bool markdown) {
+  for (const auto& p : schema.specs()) {
+    const std::string name = prefix + p.name();
+    const std::string def = p.isRequired() ? "required" : p.defaultJson() ? p.defaultJson()->dump() : "-";
+    if (markdown) {
+      std::printf("| `%s` | %s | %s | %s | %s | %s |\n", name.c_str(), p.typeDescription().c_str(), def.c_str(),
+                  p.rangeDescription().c_str(), p.affectsResults() ? "yes" : "no", p.docText().c_str());
+    } else {
+      std::printf("  %-30s %-28s %-14s %-18s %s%s\n", name.c_str(), p.typeDescription().c_str(), def.c_str(),
+                  p.rangeDescription().c_str(), p.docText().c_str(),
+                  p.affectsResults() ? "" : " (not in the stage key)");
+    }
+    if (p.nested() != nullptr) {
+      printParams(*p.nested(), name + (p.kind() == params::ParamKind::ObjectList ? "[]." : "."), markdown);
+    }
+  }
+}
+}  // namespace
+
 int commandStages(const CommandOptions& opt) {
   for (const auto& type : registry().all()) {
     if (opt.markdown) {
@@ -108,17 +129,7 @@ int commandStages(const CommandOptions& opt) {
     } else {
       std::printf("%s (impl_version %d): %s\n", type->name().c_str(), type->implVersion(), type->summary().c_str());
     }
-    for (const auto& p : type->params().specs()) {
-      const std::string def = p.isRequired() ? "required" : p.defaultJson() ? p.defaultJson()->dump() : "-";
-      if (opt.markdown) {
-        std::printf("| `%s` | %s | %s | %s | %s | %s |\n", p.name().c_str(), p.typeDescription().c_str(), def.c_str(),
-                    p.rangeDescription().c_str(), p.affectsResults() ? "yes" : "no", p.docText().c_str());
-      } else {
-        std::printf("  %-22s %-28s %-14s %-18s %s%s\n", p.name().c_str(), p.typeDescription().c_str(), def.c_str(),
-                    p.rangeDescription().c_str(), p.docText().c_str(),
-                    p.affectsResults() ? "" : " (not in the stage key)");
-      }
-    }
+    printParams(type->params(), "", opt.markdown);
     std::printf("\n");
   }
   return 0;

@@ -193,6 +193,7 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
   } else {
     for (const auto& [name, stage] : doc["stages"].items()) {
       const std::string ptr = "/stages/" + cj::pointerToken(name);
+      const std::size_t problemsBefore = d.size();
       StageConfig sc;
       sc.name = name;
       if (!isSafeName(name))
@@ -266,6 +267,33 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
       if (sc.type != nullptr) {
         const json params = stage.contains("params") ? stage["params"] : json::object();
         sc.params = sc.type->params().resolve(params, swept, cfg.units, ptr + "/params", d);
+        // Cross-parameter checks for every sweep point; a problem shared by several points is
+        // reported once.
+        if (d.size() == problemsBefore) {  // only on parameters that are individually valid
+          std::vector<json> points{json::object()};
+          for (const auto& axis : sc.sweep) {
+            std::vector<json> next;
+            for (const auto& p : points) {
+              for (const auto& v : axis.values) {
+                json q = p;
+                q[axis.param] = v;
+                next.push_back(std::move(q));
+              }
+            }
+            points = std::move(next);
+          }
+          std::set<std::string> seen;
+          for (const auto& point : points) {
+            json merged = sc.params;
+            for (const auto& [k, v] : point.items()) merged[k] = v;
+            cj::Diagnostics local;
+            sc.type->checkParams(merged, ptr + "/params", local);
+            for (const auto& item : local.items()) {
+              const std::string where = point.empty() ? item.where : item.where + " (sweep point " + point.dump() + ")";
+              if (seen.insert(item.where + item.message).second) d.add(where, item.message);
+            }
+          }
+        }
         if (!sc.from.empty() && sc.type->inputMode() == stages::InputMode::None) {
           d.add(ptr + "/from", "stage type " + sc.type->name() + " takes no upstream stages");
         }

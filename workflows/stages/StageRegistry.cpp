@@ -1,6 +1,7 @@
 #include "workflows/stages/StageRegistry.hpp"
 
 #include "core/Error.hpp"
+#include "workflows/stages/DemStage.hpp"
 #include "workflows/stages/ParticleGasStage.hpp"
 #include "workflows/stages/ReportStage.hpp"
 
@@ -12,6 +13,7 @@ const StageRegistry& StageRegistry::builtin() {
     // Every stage type, in the order `grainbridge stages` lists them. The engines' stages
     // (dem, tfdem, mfm) and the closure stages (extract, tabulate, compare) join this list.
     types.push_back(std::make_unique<ParticleGasStage>());
+    types.push_back(std::make_unique<DemStage>());
     types.push_back(std::make_unique<ReportStage>());
     return StageRegistry(std::move(types));
   }();

@@ -25,6 +25,12 @@ class StageType {
   [[nodiscard]] virtual std::string summary() const = 0;  // one-line description
   [[nodiscard]] virtual const params::ParamSchema& params() const = 0;
   [[nodiscard]] virtual InputMode inputMode() const = 0;
+  // Checks across parameters that single declarations cannot express (a time step against
+  // the contact time, one of two alternatives given): called at config load for the resolved
+  // parameters of every instance, before any work starts. Problems go to `diagnostics` at
+  // `pointer` (the stage's /params) or below it.
+  virtual void checkParams(const nlohmann::json& /*resolved*/, const std::string& /*pointer*/,
+                           core::json::Diagnostics& /*diagnostics*/) const {}
   // Runs one instance. Throws grainbridge::Error on failure (the instance is then recorded
   // failed and never cached) or StageInterrupted after a clean stop.
   virtual void run(StageContext& ctx) const = 0;

@@ -1,0 +1,99 @@
+#include "workflows/stages/DemSetup.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace grainbridge::workflows::stages {
+
+using nlohmann::json;
+
+namespace {
+
+Vec3 vec(const json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()); }
+
+// Material of a surface pair from a contact object; restitution, when given, is inverted for
+// this pair's effective mass (Eqs. 6.9-6.10).
+dem::PairMaterial material(const json& c, double meff) {
+  dem::PairMaterial m;
+  m.kn = c.at("kn");
+  m.kt = c.contains("kt") ? c.at("kt").get<double>() : 2.0 / 7.0 * m.kn;  // Table 6.1: k_t = 2/7 k_n
+  m.gammaN =
+      c.contains("restitution") ? dem::gammaForRestitution(c.at("restitution"), m.kn, meff) : c.value("gamma_n", 0.0);
+  m.gammaT = c.at("gamma_t");
+  m.mu = c.at("mu");
+  return m;
+}
+
+// m_eff of two bodies; a frozen particle or a wall has infinite mass.
+double effectiveMass(double ma, bool frozenA, double mb, bool frozenB) {
+  if (frozenA && frozenB) return std::numeric_limits<double>::infinity();
+  if (frozenA) return mb;
+  if (frozenB) return ma;
+  return ma * mb / (ma + mb);
+}
+
+}  // namespace
+
+DemSetup makeDemSetup(const json& p) {
+  DemSetup out;
+  auto& e = out.engine;
+  e.lo = vec(p.at("box_lo"));
+  e.hi = vec(p.at("box_hi"));
+  const std::string periodic = p.at("periodic");
+  for (int a = 0; a < 3; ++a) e.periodic[static_cast<std::size_t>(a)] = periodic.find("xyz"[a]) != std::string::npos;
+  e.gravity = vec(p.at("gravity"));
+  e.backgroundDamping = p.at("background_damping");
+  e.dt = p.at("dt");
+  e.model = p.at("normal_model") == "hertz" ? dem::NormalModel::Hertz : dem::NormalModel::Linear;
+
+  double maxDiameter = 0.0;
+  for (const auto& s : p.at("species")) {
+    const double d = s.at("diameter");
+    maxDiameter = std::max(maxDiameter, d);
+    out.species.push_back({s.at("name"), 0.5 * d, s.at("density").get<double>() * M_PI / 6.0 * d * d * d,
+                           s.at("count").get<std::int64_t>(), s.at("frozen").get<bool>()});
+  }
+  e.skin = p.at("skin").get<double>() * maxDiameter;
+  const int ns = static_cast<int>(out.species.size());
+  e.species = ns;
+  e.pairMaterial.resize(static_cast<std::size_t>(ns * ns));
+  const json& contact = p.at("contact");
+  for (int a = 0; a < ns; ++a) {
+    for (int b = 0; b < ns; ++b) {
+      const auto& sa = out.species[static_cast<std::size_t>(a)];
+      const auto& sb = out.species[static_cast<std::size_t>(b)];
+      const double meff = effectiveMass(sa.mass, sa.frozen, sb.mass, sb.frozen);
+      e.pairMaterial[static_cast<std::size_t>(a * ns + b)] = material(contact, std::isfinite(meff) ? meff : 1.0);
+      if (b >= a && std::isfinite(meff)) {
+        const auto& m = e.pairMaterial[static_cast<std::size_t>(a * ns + b)];
+        out.timings.push_back({sa.name + "-" + sb.name, "/contact", dem::linearRestitution(m.kn, m.gammaN, meff),
+                               dem::linearContactTime(m.kn, m.gammaN, meff)});
+      }
+    }
+  }
+  if (p.contains("walls")) {
+    const json& walls = p.at("walls");
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      const json& wj = walls[w];
+      dem::Wall wall;
+      wall.kind = wj.at("kind") == "cylinder" ? dem::Wall::Kind::Cylinder : dem::Wall::Kind::Plane;
+      wall.origin = vec(wj.at("point"));
+      wall.direction = vec(wj.at("direction")).normalized();
+      wall.radius = wj.at("radius");
+      wall.vibration.amplitude = wj.at("vibration_amplitude");
+      wall.vibration.frequency = wj.at("vibration_frequency");
+      wall.vibration.direction = vec(wj.at("vibration_direction")).normalized();
+      for (const auto& s : out.species) {
+        wall.material.push_back(material(wj, s.mass));
+        const auto& m = wall.material.back();
+        out.timings.push_back({s.name + "-wall " + std::to_string(w), "/walls/" + std::to_string(w),
+                               dem::linearRestitution(m.kn, m.gammaN, s.mass),
+                               dem::linearContactTime(m.kn, m.gammaN, s.mass)});
+      }
+      e.walls.push_back(std::move(wall));
+    }
+  }
+  return out;
+}
+
+}  // namespace grainbridge::workflows::stages

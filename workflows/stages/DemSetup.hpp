@@ -1,0 +1,39 @@
+#pragma once
+// Turns the `dem` stage's resolved parameters (SI) into the engine's setup: per species-pair and
+// per wall-species materials (restitution inverted with each pair's m_eff, Eqs. 6.9-6.10), walls,
+// and the list of problems that must stop a run before its first step (overdamped pairs, a time
+// step above t_c/10). Shared by the stage's config check and its run, so both see the same
+// numbers.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engines/dem/Simulation.hpp"
+
+namespace grainbridge::workflows::stages {
+
+struct DemSpecies {
+  std::string name;
+  double radius;
+  double mass;
+  std::int64_t count;
+  bool frozen;
+};
+
+struct PairTiming {
+  std::string pair;     // "small-large", "small-wall 0"
+  std::string pointer;  // JSON pointer of the material that sets it, relative to /params
+  double restitution;   // Eq. 6.9 (linear model)
+  double contactTime;   // Eq. 6.10; +inf when overdamped
+};
+
+struct DemSetup {
+  dem::SimulationSetup engine;
+  std::vector<DemSpecies> species;
+  std::vector<PairTiming> timings;
+};
+
+// Builds the setup; assumes individually valid parameters.
+DemSetup makeDemSetup(const nlohmann::json& params);
+
+}  // namespace grainbridge::workflows::stages

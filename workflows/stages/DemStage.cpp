@@ -1,0 +1,332 @@
+#include "workflows/stages/DemStage.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "core/Files.hpp"
+#include "core/Log.hpp"
+#include "core/Progress.hpp"
+#include "core/io/ParticleFrameWriter.hpp"
+#include "engines/dem/DomainStress.hpp"
+#include "engines/dem/Insertion.hpp"
+#include "workflows/stages/DemSetup.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using core::units::Dimension;
+using nlohmann::json;
+using params::ParamSchema;
+using params::ParamSpec;
+
+namespace {
+
+// The contact coefficients shared by particle pairs and walls (Eqs. 6.5-6.6, Table 6.1).
+void addContactParams(ParamSchema& s) {
+  s.add(ParamSpec::quantity("kn", Dimension::stiffness())
+            .required()
+            .positive()
+            .doc("normal spring constant k_n (Eq. 6.5)"))
+      .add(ParamSpec::quantity("kt", Dimension::stiffness())
+               .min(0.0)
+               .doc("tangential spring constant k_t (default 2/7 k_n)"))
+      .add(ParamSpec::quantity("gamma_n", Dimension::frequency())
+               .min(0.0)
+               .doc("normal damping gamma_n, times m_eff in Eq. 6.5 (or give restitution)"))
+      .add(ParamSpec::number("restitution")
+               .min(0.0, false)
+               .max(1.0)
+               .doc("normal restitution e_n: gamma_n from Eqs. 6.9-6.10 with each pair's m_eff"))
+      .add(ParamSpec::quantity("gamma_t", Dimension::frequency())
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("tangential damping gamma_t (Eq. 6.6)"))
+      .add(ParamSpec::number("mu").defaultValue(0.5).min(0.0).doc("Coulomb friction coefficient"));
+}
+
+std::shared_ptr<ParamSchema> speciesSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("name").required().doc("species name"))
+      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("sphere diameter"))
+      .add(ParamSpec::quantity("density", Dimension::density()).required().positive().doc("material density"))
+      .add(ParamSpec::integer("count").required().min(0).doc("number of spheres"))
+      .add(ParamSpec::boolean("frozen").defaultValue(false).doc("fixed in place with infinite mass (rough bases)"));
+  return s;
+}
+
+std::shared_ptr<ParamSchema> contactSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  addContactParams(*s);
+  return s;
+}
+
+std::shared_ptr<ParamSchema> wallSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("kind")
+             .required()
+             .options({"plane", "cylinder"})
+             .doc("plane, or cylinder with particles inside"))
+      .add(ParamSpec::quantityList("point", Dimension::lengthDim(), 3)
+               .required()
+               .doc("a point on the plane, or on the cylinder axis"))
+      .add(ParamSpec::quantityList("direction", Dimension::none(), 3)
+               .required()
+               .doc("plane normal pointing into the domain, or cylinder axis"))
+      .add(
+          ParamSpec::quantity("radius", Dimension::lengthDim()).defaultValue(0.0).min(0.0).doc("cylinder inner radius"))
+      .add(ParamSpec::quantity("vibration_amplitude", Dimension::lengthDim())
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("A of A sin(2 pi f t)"))
+      .add(ParamSpec::quantity("vibration_frequency", Dimension::frequency())
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("f (ordinary frequency)"))
+      .add(ParamSpec::quantityList("vibration_direction", Dimension::none(), 3)
+               .defaultValue(json::array({0, 0, 1}))
+               .doc("direction of vibration"));
+  addContactParams(*s);
+  return s;
+}
+
+}  // namespace
+
+DemStage::DemStage() {
+  schema_.add(ParamSpec::quantityList("box_lo", Dimension::lengthDim(), 3).required().doc("lower corner of the domain"))
+      .add(ParamSpec::quantityList("box_hi", Dimension::lengthDim(), 3).required().doc("upper corner of the domain"))
+      .add(ParamSpec::string("periodic").defaultValue("").doc("periodic axes, e.g. \"xy\""))
+      .add(ParamSpec::quantityList("gravity", Dimension::acceleration(), 3)
+               .defaultValue(json::array({0, 0, -9.81}))
+               .doc("gravitational acceleration"))
+      .add(ParamSpec::quantity("dt", Dimension::timeDim())
+               .required()
+               .positive()
+               .doc("time step (at most t_c/10; about t_c/50 recommended)"))
+      .add(ParamSpec::quantity("duration", Dimension::timeDim()).required().positive().doc("simulated time"))
+      .add(ParamSpec::integer("frames").defaultValue(10).min(0).doc(
+          "particle + contact frames after the initial one, evenly spaced"))
+      .add(ParamSpec::integer("series_points").defaultValue(200).min(1).doc("rows of series.csv, evenly spaced"))
+      .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"))
+      .add(ParamSpec::string("normal_model")
+               .defaultValue("linear")
+               .options({"linear", "hertz"})
+               .doc("f(delta/d) of Eq. 6.5: 1 or sqrt(delta/d)"))
+      .add(ParamSpec::quantity("background_damping", Dimension{0, 1, -1})
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("b of Eq. 6.7 (force -b v)"))
+      .add(ParamSpec::integer("seed").defaultValue(1).min(0).doc("random seed of the insertion"))
+      .add(ParamSpec::objectList("species", speciesSchema()).required().doc("particle species"))
+      .add(ParamSpec::object("contact", contactSchema()).required().doc("particle-particle contact coefficients"))
+      .add(ParamSpec::objectList("walls", wallSchema()).doc("rigid walls (infinite mass), each with its own material"))
+      .add(ParamSpec::quantityList("insert_lo", Dimension::lengthDim(), 3)
+               .doc("insertion region lower corner (default: the box)"))
+      .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
+               .doc("insertion region upper corner (default: the box)"))
+      .add(ParamSpec::boolean("progress").defaultValue(true).doesNotAffectResults().doc("show progress"));
+}
+
+void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
+  const std::string periodic = p.at("periodic");
+  for (char c : periodic) {
+    if (c != 'x' && c != 'y' && c != 'z')
+      d.add(ptr + "/periodic", "expected letters from \"xyz\", found \"" + periodic + "\"");
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (!(p.at("box_hi")[a].get<double>() > p.at("box_lo")[a].get<double>())) {
+      d.add(ptr + "/box_hi/" + std::to_string(a), "box_hi must exceed box_lo on every axis");
+    }
+  }
+  auto checkContact = [&](const json& c, const std::string& where) {
+    if (c.contains("gamma_n") == c.contains("restitution")) {
+      d.add(where, "give exactly one of gamma_n and restitution");
+    }
+  };
+  checkContact(p.at("contact"), ptr + "/contact");
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < p.at("species").size(); ++i) {
+    if (!names.insert(p["species"][i].at("name").get<std::string>()).second)
+      d.add(ptr + "/species/" + std::to_string(i) + "/name", "species name used twice");
+  }
+  if (p.contains("walls")) {
+    for (std::size_t w = 0; w < p["walls"].size(); ++w) {
+      const json& wj = p["walls"][w];
+      const std::string where = ptr + "/walls/" + std::to_string(w);
+      checkContact(wj, where);
+      const auto& dir = wj.at("direction");
+      if (std::hypot(dir[0].get<double>(), dir[1].get<double>(), dir[2].get<double>()) == 0.0)
+        d.add(where + "/direction", "direction must not be zero");
+      if (wj.at("kind") == "cylinder" && !(wj.at("radius").get<double>() > 0.0))
+        d.add(where + "/radius", "a cylinder needs a positive radius");
+    }
+  }
+  if (!d.empty()) return;
+  const DemSetup setup = makeDemSetup(p);
+  // One periodic image per neighbour: a periodic length must exceed twice the interaction
+  // range (largest diameter + skin).
+  double maxDiameter = 0.0;
+  for (const auto& s : setup.species) maxDiameter = std::max(maxDiameter, 2.0 * s.radius);
+  const double range = maxDiameter + setup.engine.skin;
+  for (int a = 0; a < 3; ++a) {
+    const double length = setup.engine.hi[a] - setup.engine.lo[a];
+    if (setup.engine.periodic[static_cast<std::size_t>(a)] && length < 2.0 * range) {
+      std::ostringstream msg;
+      msg << "the periodic length along "
+          << "xyz"[a] << " is " << length << " m, less than twice the interaction range " << range
+          << " m (largest diameter + skin)";
+      d.add(ptr + "/box_hi/" + std::to_string(a), msg.str());
+    }
+  }
+  // Every pair must rebound (not overdamped) and be resolved in time: dt <= t_c/10.
+  const double dt = p.at("dt");
+  for (const auto& t : setup.timings) {
+    if (!std::isfinite(t.contactTime)) {
+      d.add(ptr + t.pointer, "pair " + t.pair +
+                                 " is overdamped (gamma_n^2/4 >= k_n/m_eff): no rebound and no contact time (Eq. "
+                                 "6.10); lower gamma_n or raise k_n");
+    } else if (dt > t.contactTime / 10.0) {
+      std::ostringstream msg;
+      msg << "dt = " << dt << " s is above t_c/10 = " << t.contactTime / 10.0 << " s of pair " << t.pair
+          << " (t_c from Eq. 6.10); the reference recommends about t_c/50";
+      d.add(ptr + "/dt", msg.str());
+    }
+  }
+}
+
+namespace {
+
+std::string csvHeader(const DemSetup& s) {
+  std::string h = "time,step,ke_translational,ke_rotational,contacts,coordination";
+  for (const char* c : {"xx", "yy", "zz", "xy", "xz", "yz"}) h += std::string(",stress_") + c;
+  for (std::size_t w = 0; w < s.engine.walls.size(); ++w) {
+    for (const char* c : {"x", "y", "z"}) h += ",wall" + std::to_string(w) + "_f" + c;
+  }
+  for (const auto& sp : s.species) h += ",com_z_" + sp.name;
+  return h + "\n";
+}
+
+}  // namespace
+
+void DemStage::run(StageContext& ctx) const {
+  const json& p = ctx.params();
+  const DemSetup setup = makeDemSetup(p);
+  for (const auto& t : setup.timings) {
+    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {:.4g} s, largest safe dt (t_c/10) = {:.4g} s", ctx.stage(), t.pair,
+                 t.restitution, t.contactTime, t.contactTime / 10.0);
+    if (setup.engine.dt > t.contactTime / 20.0) {
+      spdlog::warn("{}: dt = {:.4g} s is above t_c/20 for pair {} (the reference recommends about t_c/50)", ctx.stage(),
+                   setup.engine.dt, t.pair);
+    }
+  }
+
+  // Insert every species at random, without overlap, in the insertion region.
+  dem::InsertionRequest request;
+  request.lo =
+      p.contains("insert_lo") ? Vec3(p["insert_lo"][0], p["insert_lo"][1], p["insert_lo"][2]) : setup.engine.lo;
+  request.hi =
+      p.contains("insert_hi") ? Vec3(p["insert_hi"][0], p["insert_hi"][1], p["insert_hi"][2]) : setup.engine.hi;
+  request.periodic = setup.engine.periodic;
+  for (const auto& w : setup.engine.walls) {
+    if (w.kind == dem::Wall::Kind::Cylinder) {
+      request.insideCylinder = true;
+      request.cylinderCentre = w.origin;
+      request.cylinderRadius = w.radius;
+    }
+  }
+  std::vector<int> speciesOf;
+  for (std::size_t s = 0; s < setup.species.size(); ++s) {
+    for (std::int64_t k = 0; k < setup.species[s].count; ++k) {
+      request.radii.push_back(setup.species[s].radius);
+      speciesOf.push_back(static_cast<int>(s));
+    }
+  }
+  request.progress = [&](std::size_t) {
+    if (ctx.stopRequested()) throw StageInterrupted{};
+  };
+  std::mt19937_64 rng(p.at("seed").get<std::uint64_t>());
+  const auto centres = dem::insertRandomly(request, rng);
+  dem::Particles particles;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const auto& sp = setup.species[static_cast<std::size_t>(speciesOf[i])];
+    particles.addOwned(static_cast<std::int64_t>(i), speciesOf[i], sp.radius, sp.mass, centres[i], Vec3::Zero(),
+                       Vec3::Zero(), sp.frozen);
+  }
+  dem::Simulation sim(setup.engine, std::move(particles));
+
+  const auto totalSteps = static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / setup.engine.dt - 1e-9));
+  const auto frames = p.at("frames").get<std::int64_t>();
+  const auto seriesPoints = p.at("series_points").get<std::int64_t>();
+  // True on `count` evenly spaced steps of 1..totalSteps (the last one included).
+  auto isMultiple = [totalSteps](std::int64_t step, std::int64_t count) {
+    return count > 0 && step * count / totalSteps != (step - 1) * count / totalSteps;
+  };
+
+  core::io::ParticleFrameWriter writer(ctx.outputDir(), core::io::ArtifactStamp{ctx.key()});
+  std::ostringstream series;
+  series.precision(17);
+  series << csvHeader(setup);
+  const Vec3 box = setup.engine.hi - setup.engine.lo;
+  const double volume = box.prod();
+  std::int64_t mobile = 0;
+  for (const auto& s : setup.species) mobile += s.frozen ? 0 : s.count;
+
+  auto writeSeriesRow = [&](const core::data::ParticleFrame& f) {
+    const auto e = sim.energies();
+    const Mat3 sigma = dem::wholeDomainStress(f, volume);
+    series << sim.time() << ',' << sim.stepCount() << ',' << e.translational << ',' << e.rotational << ','
+           << f.contacts.size() << ','
+           << (mobile > 0 ? 2.0 * static_cast<double>(f.contacts.size()) / static_cast<double>(mobile) : 0.0);
+    for (auto [a, b] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) series << ',' << sigma(a, b);
+    for (const auto& fw : sim.wallForces()) series << ',' << fw[0] << ',' << fw[1] << ',' << fw[2];
+    std::vector<double> z(setup.species.size(), 0.0);
+    std::vector<double> m(setup.species.size(), 0.0);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      z[static_cast<std::size_t>(f.species[i])] += f.mass[i] * f.position[i][2];
+      m[static_cast<std::size_t>(f.species[i])] += f.mass[i];
+    }
+    for (std::size_t s = 0; s < z.size(); ++s) series << ',' << (m[s] > 0 ? z[s] / m[s] : 0.0);
+    series << '\n';
+  };
+
+  writer.write(sim.frame());  // the initial state, with the contacts of the first force evaluation
+  std::optional<core::Progress> progress;
+  if (p.at("progress").get<bool>()) progress.emplace(ctx.stage(), static_cast<double>(totalSteps), "steps");
+  for (std::int64_t s = 1; s <= totalSteps; ++s) {
+    const bool frameStep = isMultiple(s, frames);
+    const bool seriesStep = isMultiple(s, seriesPoints) || s == totalSteps;
+    sim.step(frameStep || seriesStep);
+    if (frameStep || seriesStep) {
+      const auto f = sim.frame();
+      if (seriesStep) writeSeriesRow(f);
+      if (frameStep) writer.write(f);
+    }
+    if ((s & 255) == 0) {
+      if (ctx.stopRequested()) throw StageInterrupted{};
+      if (progress) progress->update(static_cast<double>(s));
+    }
+  }
+  if (progress) progress->finish();
+
+  core::writeFileAtomically(ctx.outputDir() / "series.csv", series.str());
+  for (const auto& f : core::io::listParticleFrames(ctx.outputDir())) {
+    ctx.addArtifact(f.lexically_relative(ctx.outputDir()).string(), "particle_frame");
+  }
+  ctx.addArtifact("particles.xmf", "xdmf");
+  ctx.addArtifact("series.csv", "series_csv");
+  const auto e = sim.energies();
+  const auto last = sim.frame();
+  ctx.setSummary({{"particles", static_cast<std::int64_t>(sim.particles().nOwned)},
+                  {"steps", totalSteps},
+                  {"final_ke_translational", e.translational},
+                  {"final_ke_rotational", e.rotational},
+                  {"final_contacts", last.contacts.size()},
+                  {"final_coordination",
+                   mobile > 0 ? 2.0 * static_cast<double>(last.contacts.size()) / static_cast<double>(mobile) : 0.0},
+                  {"neighbour_rebuilds", sim.rebuilds()}});
+}
+
+}  // namespace grainbridge::workflows::stages

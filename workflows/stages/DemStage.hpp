@@ -1,0 +1,28 @@
+#pragma once
+// `dem`: a soft-sphere DEM run (engines/dem; Chapter 6 of the reference). Species are inserted
+// at random without overlap and evolve under gravity, contacts and walls; particle + contact
+// frames (HDF5 + XDMF) and a per-step series (energies, contacts, coordination, whole-domain
+// stress, wall forces, species centres of mass) are written for the extraction layer.
+#include "workflows/stages/StageType.hpp"
+
+namespace grainbridge::workflows::stages {
+
+class DemStage final : public StageType {
+ public:
+  DemStage();
+  [[nodiscard]] std::string name() const override { return "dem"; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::string summary() const override {
+    return "soft-sphere DEM: random insertion, gravity, frictional contacts with history, walls; frames and series";
+  }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] InputMode inputMode() const override { return InputMode::None; }
+  void checkParams(const nlohmann::json& resolved, const std::string& pointer,
+                   core::json::Diagnostics& diagnostics) const override;
+  void run(StageContext& ctx) const override;
+
+ private:
+  params::ParamSchema schema_;
+};
+
+}  // namespace grainbridge::workflows::stages
