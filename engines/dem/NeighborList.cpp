@@ -25,20 +25,25 @@ struct PairKeyHash {
 
 }  // namespace
 
-void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff) {
-  // 1. Remember the history of pairs in contact, keyed by ids in (low, high) orientation.
-  std::unordered_map<PairKey, Vec3, PairKeyHash> carried;
-  if (builds_ > 0) {
-    const std::size_t nOld = offset_.empty() ? 0 : offset_.size() - 1;
-    for (std::size_t i = 0; i < nOld; ++i) {
-      for (std::size_t s = offset_[i]; s < offset_[i + 1]; ++s) {
-        if (history_[s].isZero(0.0)) continue;
-        const std::int64_t a = idsAtBuild_[i];
-        const std::int64_t b = idsAtBuild_[partner_[s]];
-        carried.emplace(PairKey{std::min(a, b), std::max(a, b)}, a < b ? history_[s] : Vec3(-history_[s]));
-      }
+std::vector<PairHistory> NeighborList::exportHistory() const {
+  std::vector<PairHistory> out;
+  const std::size_t nOld = offset_.empty() ? 0 : offset_.size() - 1;
+  for (std::size_t i = 0; i < nOld; ++i) {
+    for (std::size_t s = offset_[i]; s < offset_[i + 1]; ++s) {
+      if (history_[s].isZero(0.0)) continue;
+      const std::int64_t a = idsAtBuild_[i];
+      const std::int64_t b = idsAtBuild_[partner_[s]];
+      out.push_back({std::min(a, b), std::max(a, b), a < b ? history_[s] : Vec3(-history_[s])});
     }
   }
+  return out;
+}
+
+void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff,
+                         const std::vector<PairHistory>* seed) {
+  // 1. Remember the history of pairs in contact, keyed by ids in (low, high) orientation.
+  std::unordered_map<PairKey, Vec3, PairKeyHash> carried;
+  for (const auto& h : seed != nullptr ? *seed : exportHistory()) carried.emplace(PairKey{h.low, h.high}, h.ut);
 
   // 2. Counting sort of all particles (owned and ghost) into cells of side >= cutoff.
   const Vec3 gridLo = lo - Vec3::Constant(cutoff);

@@ -12,13 +12,24 @@
 
 namespace grainbridge::dem {
 
+// Tangential history of one pair in contact, keyed by global ids, oriented low id -> high id.
+struct PairHistory {
+  std::int64_t low;
+  std::int64_t high;
+  Vec3 ut;
+};
+
 class NeighborList {
  public:
   // Bins owned and ghost particles over [lo - cutoff, hi + cutoff] and lists every pair closer
   // than `cutoff` once: owned-owned pairs with j > i, owned-ghost pairs only when the owned id is
   // the smaller (the mirrored image pair is listed from the other side). Frozen-frozen pairs are
   // left out. History of pairs still listed is carried over.
-  void build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff);
+  // `seed`, when given, replaces the list's own history as the source carried over (restart).
+  void build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff,
+             const std::vector<PairHistory>* seed = nullptr);
+  // The history of every pair currently in contact (for checkpoints).
+  [[nodiscard]] std::vector<PairHistory> exportHistory() const;
 
   [[nodiscard]] std::size_t pairCount() const { return partner_.size(); }
   [[nodiscard]] std::size_t begin(std::size_t i) const { return offset_[i]; }

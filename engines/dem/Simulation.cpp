@@ -18,6 +18,45 @@ std::string vecText(const Vec3& v) {
 
 Simulation::Simulation(SimulationSetup setup, Particles particles)
     : setup_(std::move(setup)), p_(std::move(particles)) {
+  validateSetup();
+  wallHistory_.assign(p_.nOwned * setup_.walls.size(), Vec3::Zero());
+  rebuild(false);
+  computeForces(true);  // the initial frame gets its contacts too
+}
+
+Simulation::Simulation(SimulationSetup setup, EngineState state)
+    : setup_(std::move(setup)), p_(std::move(state.particles)) {
+  validateSetup();
+  GB_ASSERT(state.buildPositions.size() == p_.nOwned, "state without build positions");
+  GB_ASSERT(state.wallHistory.size() == p_.nOwned * setup_.walls.size(), "state with wrong wall history size");
+  time_ = state.time;
+  step_ = state.step;
+  rebuildsSinceSort_ = state.rebuildsSinceSort;
+  wallHistory_ = std::move(state.wallHistory);
+  // Rebuild the list exactly as it was built: from the positions of that moment, so the same
+  // pairs (and ghosts) come in the same order.
+  const std::vector<Vec3> current = p_.x;
+  p_.x = state.buildPositions;
+  buildGhosts();
+  list_.build(p_, setup_.lo, setup_.hi, cutoff_, &state.pairHistory);
+  for (std::size_t i = 0; i < p_.nOwned; ++i) p_.x[i] = current[i];
+  p_.refreshGhosts();
+}
+
+EngineState Simulation::captureState() const {
+  EngineState s;
+  s.time = time_;
+  s.step = step_;
+  s.rebuildsSinceSort = rebuildsSinceSort_;
+  s.particles = p_;
+  s.particles.clearGhosts();
+  s.buildPositions = list_.referencePositions();
+  s.pairHistory = list_.exportHistory();
+  s.wallHistory = wallHistory_;
+  return s;
+}
+
+void Simulation::validateSetup() {
   if (!(setup_.dt > 0)) throw Error("DEM: time step must be positive");
   if (setup_.skin < 0) throw Error("DEM: skin must be >= 0");
   if (setup_.species < 1 || setup_.pairMaterial.size() != static_cast<std::size_t>(setup_.species * setup_.species))
@@ -38,10 +77,7 @@ Simulation::Simulation(SimulationSetup setup, Particles particles)
                   " m (largest diameter + skin)");
     }
   }
-  wallHistory_.assign(p_.nOwned * setup_.walls.size(), Vec3::Zero());
   wallForce_.assign(setup_.walls.size(), Vec3::Zero());
-  rebuild(false);
-  computeForces(true);  // the initial frame gets its contacts too
 }
 
 std::optional<std::size_t> Simulation::indexOf(std::int64_t id) const {

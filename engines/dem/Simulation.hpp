@@ -36,6 +36,21 @@ struct SimulationSetup {
   }
 };
 
+// Everything a checkpoint needs to continue a run bit for bit on the same binary: the owned
+// particles in their current order (with the forces of the last evaluation, which the next
+// half kick uses), the positions at the last neighbour-list build (the list is rebuilt from them,
+// so the same pairs come in the same order and the next rebuild happens at the same step), and
+// the contact histories keyed by particle ids.
+struct EngineState {
+  double time = 0.0;
+  std::int64_t step = 0;
+  std::int64_t rebuildsSinceSort = 0;
+  Particles particles;               // owned only
+  std::vector<Vec3> buildPositions;  // owned positions at the last list build
+  std::vector<PairHistory> pairHistory;
+  std::vector<Vec3> wallHistory;  // per (particle, wall), particle-major
+};
+
 struct Energies {
   double translational = 0.0;  // sum 1/2 m v^2 over mobile particles
   double rotational = 0.0;     // sum 1/2 I omega^2
@@ -46,6 +61,9 @@ class Simulation {
  public:
   // Throws grainbridge::Error for an unusable setup (naming what is wrong).
   Simulation(SimulationSetup setup, Particles particles);
+  // Continues from a captured state (restart); the setup must be the one that produced it.
+  Simulation(SimulationSetup setup, EngineState state);
+  [[nodiscard]] EngineState captureState() const;
 
   // One velocity-Verlet step. With recordContacts, the contacts of this step's force
   // evaluation are kept for frame() (recording changes nothing in the trajectory).
@@ -75,6 +93,7 @@ class Simulation {
   [[nodiscard]] std::optional<std::size_t> indexOf(std::int64_t id) const;
 
  private:
+  void validateSetup();
   void rebuild(bool sort);
   bool needsRebuild() const;
   void wrapAndCheck();

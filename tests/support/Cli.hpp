@@ -2,6 +2,7 @@
 // Helpers for tests that drive the grainbridge binary the way a user does: run a command line,
 // capture its output and exit status, work in a fresh temporary folder.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -67,6 +68,20 @@ inline std::string readText(const std::filesystem::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// Waits (up to `timeoutMs`) until process `pid` has exited. A zombie counts as exited: a
+// background process whose shell is gone may never be reaped in a container.
+inline void waitForProcessExit(long pid, int timeoutMs = 60000) {
+  const std::filesystem::path stat = "/proc/" + std::to_string(pid) + "/stat";
+  for (int waited = 0; waited < timeoutMs; waited += 20) {
+    std::ifstream in(stat);
+    std::string text;
+    if (!in || !std::getline(in, text)) return;
+    const auto close = text.rfind(')');
+    if (close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z') return;
+    ::usleep(20000);
+  }
 }
 
 // Runs `grainbridge <args>` with `workdir` as the current folder.

@@ -182,11 +182,7 @@ long startInBackground(const fs::path& work) {
   return pid;
 }
 
-void waitForExit(long pid) {
-  for (int i = 0; i < 3000 && fs::exists("/proc/" + std::to_string(pid)); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-}
+void waitForExit(long pid) { waitForProcessExit(pid); }
 
 json slowWorkflow() {
   json cfg = smallWorkflow();

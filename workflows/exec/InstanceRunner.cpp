@@ -62,8 +62,9 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
     const stages::StageType* type = registry.find(task.stageType);
     if (type == nullptr) throw Error("unknown stage type '" + task.stageType + "'");
     if (leader) {
-      // We hold the lease, so a leftover partial folder is from a killed run: start afresh.
-      fs::remove_all(partialDir);
+      // We hold the lease, so a leftover partial folder is from a killed or interrupted run:
+      // resume it if its stage left a checkpoint, otherwise start afresh.
+      if (!fs::exists(partialDir / "checkpoint")) fs::remove_all(partialDir);
       fs::create_directories(partialDir);
     }
     if (comm.isMpi() && comm.size() > 1) MPI_Barrier(comm.raw());

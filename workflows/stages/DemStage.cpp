@@ -1,8 +1,11 @@
 #include "workflows/stages/DemStage.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -12,6 +15,7 @@
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
 #include "core/io/ParticleFrameWriter.hpp"
+#include "engines/dem/Checkpoint.hpp"
 #include "engines/dem/DomainStress.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "workflows/stages/DemSetup.hpp"
@@ -127,6 +131,11 @@ DemStage::DemStage() {
                .doc("insertion region lower corner (default: the box)"))
       .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
                .doc("insertion region upper corner (default: the box)"))
+      .add(ParamSpec::quantity("checkpoint_interval", Dimension::timeDim())
+               .defaultValue("600 s")
+               .positive()
+               .doesNotAffectResults()
+               .doc("wall-clock time between checkpoints (one is also written on SIGTERM)"))
       .add(ParamSpec::boolean("progress").defaultValue(true).doesNotAffectResults().doc("show progress"));
 }
 
@@ -209,21 +218,10 @@ std::string csvHeader(const DemSetup& s) {
   return h + "\n";
 }
 
-}  // namespace
-
-void DemStage::run(StageContext& ctx) const {
+// Every species at random, without overlap, in the insertion region (inside a cylinder wall
+// if there is one).
+dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
   const json& p = ctx.params();
-  const DemSetup setup = makeDemSetup(p);
-  for (const auto& t : setup.timings) {
-    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {:.4g} s, largest safe dt (t_c/10) = {:.4g} s", ctx.stage(), t.pair,
-                 t.restitution, t.contactTime, t.contactTime / 10.0);
-    if (setup.engine.dt > t.contactTime / 20.0) {
-      spdlog::warn("{}: dt = {:.4g} s is above t_c/20 for pair {} (the reference recommends about t_c/50)", ctx.stage(),
-                   setup.engine.dt, t.pair);
-    }
-  }
-
-  // Insert every species at random, without overlap, in the insertion region.
   dem::InsertionRequest request;
   request.lo =
       p.contains("insert_lo") ? Vec3(p["insert_lo"][0], p["insert_lo"][1], p["insert_lo"][2]) : setup.engine.lo;
@@ -255,8 +253,38 @@ void DemStage::run(StageContext& ctx) const {
     particles.addOwned(static_cast<std::int64_t>(i), speciesOf[i], sp.radius, sp.mass, centres[i], Vec3::Zero(),
                        Vec3::Zero(), sp.frozen);
   }
-  dem::Simulation sim(setup.engine, std::move(particles));
+  return particles;
+}
 
+}  // namespace
+
+void DemStage::run(StageContext& ctx) const {
+  const json& p = ctx.params();
+  const DemSetup setup = makeDemSetup(p);
+  for (const auto& t : setup.timings) {
+    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {:.4g} s, largest safe dt (t_c/10) = {:.4g} s", ctx.stage(), t.pair,
+                 t.restitution, t.contactTime, t.contactTime / 10.0);
+    if (setup.engine.dt > t.contactTime / 20.0) {
+      spdlog::warn("{}: dt = {:.4g} s is above t_c/20 for pair {} (the reference recommends about t_c/50)", ctx.stage(),
+                   setup.engine.dt, t.pair);
+    }
+  }
+
+  const std::filesystem::path checkpointFile = ctx.checkpointDir() / "engine.h5";
+  const std::filesystem::path checkpointSeries = ctx.checkpointDir() / "series.csv";
+  std::optional<dem::Simulation> simulation;
+  std::ostringstream series;
+  series.precision(17);
+  if (std::filesystem::exists(checkpointFile)) {
+    // Resume: the state continues bit for bit, and the series rows written so far come back.
+    simulation.emplace(setup.engine, dem::readCheckpoint(checkpointFile, ctx.key()));
+    series << core::readFile(checkpointSeries);
+    spdlog::info("{}: resuming from the checkpoint at step {}", ctx.stage(), simulation->stepCount());
+  } else {
+    simulation.emplace(setup.engine, insertSpecies(ctx, setup));
+    series << csvHeader(setup);
+  }
+  dem::Simulation& sim = *simulation;
   const auto totalSteps = static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / setup.engine.dt - 1e-9));
   const auto frames = p.at("frames").get<std::int64_t>();
   const auto seriesPoints = p.at("series_points").get<std::int64_t>();
@@ -266,9 +294,6 @@ void DemStage::run(StageContext& ctx) const {
   };
 
   core::io::ParticleFrameWriter writer(ctx.outputDir(), core::io::ArtifactStamp{ctx.key()});
-  std::ostringstream series;
-  series.precision(17);
-  series << csvHeader(setup);
   const Vec3 box = setup.engine.hi - setup.engine.lo;
   const double volume = box.prod();
   std::int64_t mobile = 0;
@@ -292,10 +317,17 @@ void DemStage::run(StageContext& ctx) const {
     series << '\n';
   };
 
-  writer.write(sim.frame());  // the initial state, with the contacts of the first force evaluation
+  auto checkpoint = [&] {
+    std::filesystem::create_directories(ctx.checkpointDir());
+    core::writeFileAtomically(checkpointSeries, series.str());
+    dem::writeCheckpoint(checkpointFile, sim.captureState(), ctx.key());
+  };
+  if (sim.stepCount() == 0) writer.write(sim.frame());  // the initial state, with its first contacts
   std::optional<core::Progress> progress;
   if (p.at("progress").get<bool>()) progress.emplace(ctx.stage(), static_cast<double>(totalSteps), "steps");
-  for (std::int64_t s = 1; s <= totalSteps; ++s) {
+  const auto checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
+  auto lastCheckpoint = std::chrono::steady_clock::now();
+  for (std::int64_t s = sim.stepCount() + 1; s <= totalSteps; ++s) {
     const bool frameStep = isMultiple(s, frames);
     const bool seriesStep = isMultiple(s, seriesPoints) || s == totalSteps;
     sim.step(frameStep || seriesStep);
@@ -305,13 +337,23 @@ void DemStage::run(StageContext& ctx) const {
       if (frameStep) writer.write(f);
     }
     if ((s & 255) == 0) {
-      if (ctx.stopRequested()) throw StageInterrupted{};
+      if (ctx.stopRequested()) {
+        checkpoint();  // a batch system's SIGTERM: save, then stop cleanly
+        spdlog::warn("{}: stopped at step {} of {}; checkpoint written, the next run resumes here", ctx.stage(), s,
+                     totalSteps);
+        throw StageInterrupted{};
+      }
+      if (std::chrono::steady_clock::now() - lastCheckpoint > checkpointEvery) {
+        checkpoint();
+        lastCheckpoint = std::chrono::steady_clock::now();
+      }
       if (progress) progress->update(static_cast<double>(s));
     }
   }
   if (progress) progress->finish();
 
   core::writeFileAtomically(ctx.outputDir() / "series.csv", series.str());
+  std::filesystem::remove_all(ctx.checkpointDir());  // complete: the checkpoint has served
   for (const auto& f : core::io::listParticleFrames(ctx.outputDir())) {
     ctx.addArtifact(f.lexically_relative(ctx.outputDir()).string(), "particle_frame");
   }

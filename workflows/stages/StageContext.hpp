@@ -59,6 +59,9 @@ class StageContext {
     return s;
   }
   static constexpr std::string_view kPartialSuffix = ".partial";
+  // A stage that can resume keeps its checkpoint here; the executor keeps a partial folder that
+  // has one (instead of starting afresh), so a killed or interrupted instance resumes.
+  [[nodiscard]] std::filesystem::path checkpointDir() const { return outputDir_ / "checkpoint"; }
   [[nodiscard]] const std::vector<UpstreamInstance>& inputs() const { return inputs_; }
   [[nodiscard]] core::parallel::Communicator& comm() { return comm_; }
   [[nodiscard]] const core::units::UnitSystem& units() const { return units_; }

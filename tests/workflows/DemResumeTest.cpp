@@ -1,0 +1,91 @@
+// A `dem` instance stopped by SIGTERM (a batch system's time limit) or killed with SIGKILL
+// resumes from its checkpoint on the next `run`, and the result is bit for bit the result of an
+// uninterrupted run: every artifact has the same sha256 (DESIGN.md failure behaviour; issue 4's
+// exact restart).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <thread>
+
+#include "db/Database.hpp"
+#include "db/ProvenanceStore.hpp"
+#include "tests/support/Cli.hpp"
+
+namespace fs = std::filesystem;
+using namespace grainbridge;
+using namespace grainbridge::testing;
+
+namespace {
+
+const char* kWorkflow = R"({
+  "name": "wf",
+  "units": {"system": "reduced", "d0": "1 mm", "m0": "1e-6 kg", "g": "9.81 m/s2"},
+  "stages": {
+    "bed": {"type": "dem", "params": {
+      "box_lo": [0, 0, 0], "box_hi": [12, 12, 24], "periodic": "xy", "gravity": [0, 0, -1],
+      "dt": 2e-4, "duration": 16, "frames": 4, "series_points": 50, "progress": false,
+      "checkpoint_interval": "0.3 s",
+      "species": [{"name": "small", "diameter": 1, "density": 1.91, "count": 900}],
+      "contact": {"kn": 2e5, "gamma_n": 40, "mu": 0.5},
+      "walls": [{"kind": "plane", "point": [0, 0, 0], "direction": [0, 0, 1],
+                 "kn": 2e5, "gamma_n": 40, "gamma_t": 20, "mu": 0.5}]}}
+  }
+})";
+
+std::map<std::string, std::string> artifactDigests(const fs::path& work) {
+  auto database = db::Database::openReadOnly(work / "results/wf/grainbridge.sqlite");
+  db::ProvenanceStore store(database);
+  std::map<std::string, std::string> out;
+  for (const auto& r : store.runs("wf")) {
+    if (r.status != "done") continue;
+    for (const auto& a : store.artifactsOfRun(r.id)) out[a.path] = a.sha256;
+  }
+  return out;
+}
+
+// Starts a run in the background, waits `delayMs`, sends `signal`, waits for the process.
+std::string interruptedRun(const fs::path& work, int delayMs, const std::string& signal) {
+  runCommand("cd '" + work.string() + "' && (" + grainbridgeBinary() +
+             " run wf.json > bg.log 2>&1 & echo $! > bg.pid)");
+  const std::string pid = readText(work / "bg.pid");
+  std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
+  runCommand("kill -" + signal + " " + pid);
+  waitForProcessExit(std::stol(pid));
+  return readText(work / "bg.log");
+}
+
+class DemResume : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    writeText(reference.path() / "wf.json", kWorkflow);
+    writeText(work.path() / "wf.json", kWorkflow);
+    auto r = runGrainbridge(reference.path(), "run wf.json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+  }
+  TempDir reference;
+  TempDir work;
+};
+
+TEST_F(DemResume, AfterSigtermTheResumedRunIsBitIdentical) {
+  const std::string log = interruptedRun(work.path(), 900, "TERM");
+  ASSERT_NE(log.find("checkpoint written"), std::string::npos) << log;
+  auto resumed = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resuming from the checkpoint at step"), std::string::npos) << resumed.output;
+  EXPECT_EQ(artifactDigests(work.path()), [&] {
+    // Same relative paths: both live under results/wf/bed/<same key>.
+    return artifactDigests(reference.path());
+  }());
+}
+
+TEST_F(DemResume, AfterSigkillTheRunResumesFromTheLastPeriodicCheckpoint) {
+  interruptedRun(work.path(), 1800, "KILL");
+  auto resumed = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resuming from the checkpoint at step"), std::string::npos) << resumed.output;
+  EXPECT_EQ(artifactDigests(work.path()), artifactDigests(reference.path()));
+  auto database = db::Database::openReadOnly(work.path() / "results/wf/grainbridge.sqlite");
+  EXPECT_EQ(database.integrityCheck(), "ok");
+}
+
+}  // namespace
