@@ -68,3 +68,18 @@ TEST(Plan, KeyMaterialHasNoPathsHostsOrVersions) {
   EXPECT_EQ(plan::stageKey(m), gas.key);
   EXPECT_EQ(gas.key.size(), 64u);
 }
+
+TEST(Plan, SweepIntoNestedParametersByPath) {
+  // Wall friction of the Brazil-nut container is a field of one wall: swept as "walls/0/mu".
+  auto p = planOf(R"({"name": "w", "stages": {"bed": {"type": "dem", "params": {
+    "box_lo": [0, 0, 0], "box_hi": [0.02, 0.02, 0.02], "dt": 1e-6, "duration": 1e-5,
+    "species": [{"name": "s", "diameter": 0.001, "density": 2500, "count": 5}],
+    "contact": {"kn": 2000, "restitution": 0.9},
+    "walls": [{"kind": "plane", "point": [0, 0, 0], "direction": [0, 0, 1], "kn": 2000, "restitution": 0.9}]},
+    "sweep": {"walls/0/mu": [0, 0.5]}}}})");
+  ASSERT_EQ(p.byStage.at("bed").size(), 2u);
+  EXPECT_EQ(only(p, "bed", 0).params["walls"][0]["mu"].get<double>(), 0.0);
+  EXPECT_EQ(only(p, "bed", 1).params["walls"][0]["mu"].get<double>(), 0.5);
+  EXPECT_NE(only(p, "bed", 0).key, only(p, "bed", 1).key);
+  EXPECT_EQ(only(p, "bed", 1).label(), "bed[walls/0/mu=0.5]");
+}

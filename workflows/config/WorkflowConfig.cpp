@@ -21,6 +21,27 @@ const StageConfig* WorkflowConfig::findStage(const std::string& stageName) const
   return nullptr;
 }
 
+std::vector<json> sweepPoints(const std::vector<SweepAxis>& axes) {
+  std::vector<json> points{json::object()};
+  for (const auto& axis : axes) {
+    std::vector<json> next;
+    for (const auto& p : points) {
+      for (const auto& v : axis.values) {
+        json q = p;
+        q[axis.param] = v;
+        next.push_back(std::move(q));
+      }
+    }
+    points = std::move(next);
+  }
+  return points;
+}
+
+json withSweepPoint(json params, const json& point) {
+  for (const auto& [k, v] : point.items()) params[json::json_pointer("/" + k)] = v;
+  return params;
+}
+
 namespace {
 
 std::string found(const json& v) { return cj::describeFound(v.dump(), v.type_name()); }
@@ -245,12 +266,10 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
               d.add(sp, "\"" + param + "\" is given both in params and in sweep; keep one");
             }
             if (sc.type == nullptr) continue;
-            const auto* spec = sc.type->params().find(param);
+            std::string why;
+            const auto* spec = sc.type->params().findPath(param, why);
             if (spec == nullptr) {
-              std::string msg = "cannot sweep unknown parameter \"" + param + "\" of stage type " + sc.type->name();
-              const auto hint = cj::closestMatch(param, sc.type->params().names());
-              if (!hint.empty()) msg += " (did you mean \"" + hint + "\"?)";
-              d.add(sp, msg);
+              d.add(sp, "cannot sweep \"" + param + "\" of stage type " + sc.type->name() + ": " + why);
               continue;
             }
             SweepAxis axis{param, {}};
@@ -267,25 +286,22 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
       if (sc.type != nullptr) {
         const json params = stage.contains("params") ? stage["params"] : json::object();
         sc.params = sc.type->params().resolve(params, swept, cfg.units, ptr + "/params", d);
+        // A swept path into nested parameters must name an element that exists.
+        for (const auto& axis : sc.sweep) {
+          const auto slash = axis.param.rfind('/');
+          if (slash != std::string::npos && d.size() == problemsBefore &&
+              !sc.params.contains(json::json_pointer("/" + axis.param.substr(0, slash)))) {
+            d.add(ptr + "/sweep/" + cj::pointerToken(axis.param),
+                  "\"" + axis.param.substr(0, slash) + "\" does not exist in this stage's params");
+          }
+        }
         // Cross-parameter checks for every sweep point; a problem shared by several points is
         // reported once.
         if (d.size() == problemsBefore) {  // only on parameters that are individually valid
-          std::vector<json> points{json::object()};
-          for (const auto& axis : sc.sweep) {
-            std::vector<json> next;
-            for (const auto& p : points) {
-              for (const auto& v : axis.values) {
-                json q = p;
-                q[axis.param] = v;
-                next.push_back(std::move(q));
-              }
-            }
-            points = std::move(next);
-          }
+          const std::vector<json> points = sweepPoints(sc.sweep);
           std::set<std::string> seen;
           for (const auto& point : points) {
-            json merged = sc.params;
-            for (const auto& [k, v] : point.items()) merged[k] = v;
+            const json merged = withSweepPoint(sc.params, point);
             cj::Diagnostics local;
             sc.type->checkParams(merged, ptr + "/params", local);
             for (const auto& item : local.items()) {

@@ -41,6 +41,12 @@ struct WorkflowConfig {
   [[nodiscard]] const StageConfig* findStage(const std::string& stageName) const;
 };
 
+// The points of the Cartesian product of sweep axes, first axis slowest: {param: value}.
+std::vector<nlohmann::json> sweepPoints(const std::vector<SweepAxis>& axes);
+// `params` with a sweep point applied; a swept name with '/' is a path into nested
+// parameters ("walls/1/mu").
+nlohmann::json withSweepPoint(nlohmann::json params, const nlohmann::json& point);
+
 // Throws core::json::InputError listing every problem found.
 WorkflowConfig loadWorkflow(const std::filesystem::path& path, const stages::StageRegistry& registry);
 WorkflowConfig parseWorkflow(const nlohmann::json& document, const std::string& sourceName,

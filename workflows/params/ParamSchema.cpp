@@ -33,6 +33,45 @@ const ParamSpec* ParamSchema::find(const std::string& name) const {
   return nullptr;
 }
 
+const ParamSpec* ParamSchema::findPath(const std::string& path, std::string& error) const {
+  const ParamSchema* schema = this;
+  const ParamSpec* spec = nullptr;
+  bool needIndex = false;  // the previous step was an object list: an element index comes next
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t slash = path.find('/', start);
+    const std::string token = path.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+    if (needIndex) {
+      if (token.empty() || token.find_first_not_of("0123456789") != std::string::npos) {
+        error = "expected an element index after \"" + spec->name() + "/\", found \"" + token + "\"";
+        return nullptr;
+      }
+      needIndex = false;
+    } else {
+      if (schema == nullptr) {
+        error = "\"" + spec->name() + "\" has no fields";
+        return nullptr;
+      }
+      spec = schema->find(token);
+      if (spec == nullptr) {
+        error = "unknown parameter \"" + token + "\"";
+        const auto hint = core::json::closestMatch(token, schema->names());
+        if (!hint.empty()) error += " (did you mean \"" + hint + "\"?)";
+        return nullptr;
+      }
+      schema = spec->nested();
+      needIndex = spec->kind() == ParamKind::ObjectList;
+    }
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  if (spec->kind() == ParamKind::Object || spec->kind() == ParamKind::ObjectList || needIndex) {
+    error = "\"" + path + "\" is a whole object; sweep one of its fields";
+    return nullptr;
+  }
+  return spec;
+}
+
 std::vector<std::string> ParamSchema::names() const {
   std::vector<std::string> out;
   for (const auto& s : specs_) out.push_back(s.name());

@@ -20,6 +20,9 @@ class ParamSchema {
   [[nodiscard]] const std::vector<ParamSpec>& specs() const { return specs_; }
   [[nodiscard]] const ParamSpec* find(const std::string& name) const;
   [[nodiscard]] std::vector<std::string> names() const;
+  // The declaration behind a path into nested parameters, "walls/1/mu" (an object list takes
+  // an index), or nullptr with the reason in `error`. A plain name is a path of one step.
+  [[nodiscard]] const ParamSpec* findPath(const std::string& path, std::string& error) const;
 
   // Resolves one value (SI number, integer, bool, string, list); nullopt after adding a
   // diagnostic at `pointer` if it is invalid.

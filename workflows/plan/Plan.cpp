@@ -38,23 +38,6 @@ std::string stageKey(const json& material) {
 
 namespace {
 
-// Cartesian product of the sweep axes, first axis slowest.
-std::vector<json> sweepPoints(const std::vector<config::SweepAxis>& axes) {
-  std::vector<json> points{json::object()};
-  for (const auto& axis : axes) {
-    std::vector<json> next;
-    for (const auto& p : points) {
-      for (const auto& v : axis.values) {
-        json q = p;
-        q[axis.param] = v;
-        next.push_back(std::move(q));
-      }
-    }
-    points = std::move(next);
-  }
-  return points;
-}
-
 // Combinations of upstream instances a per-instance stage runs over (one from each `from`).
 std::vector<std::vector<std::size_t>> upstreamCombinations(const config::StageConfig& stage, const Plan& plan) {
   std::vector<std::vector<std::size_t>> combos{{}};
@@ -90,13 +73,12 @@ Plan makePlan(const config::WorkflowConfig& config) {
       inputSets.push_back(std::move(all));
     }
     for (const auto& inputs : inputSets) {
-      for (const auto& point : sweepPoints(stage.sweep)) {
+      for (const auto& point : config::sweepPoints(stage.sweep)) {
         StageInstance inst;
         inst.index = plan.instances.size();
         inst.stage = stage.name;
         inst.type = stage.type;
-        inst.params = stage.params;
-        for (const auto& [k, v] : point.items()) inst.params[k] = v;
+        inst.params = config::withSweepPoint(stage.params, point);
         inst.sweepPoint = point;
         inst.upstream = inputs;
         inst.ranks = stage.ranksPerInstance;
