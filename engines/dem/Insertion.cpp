@@ -13,7 +13,8 @@ std::vector<Vec3> insertRandomly(const InsertionRequest& rq, std::mt19937_64& rn
   const std::size_t n = rq.radii.size();
   std::vector<Vec3> centre(n, Vec3::Zero());
   if (n == 0) return centre;
-  const double maxRadius = *std::max_element(rq.radii.begin(), rq.radii.end());
+  double maxRadius = *std::max_element(rq.radii.begin(), rq.radii.end());
+  for (double a : rq.fixedRadii) maxRadius = std::max(maxRadius, a);
   const Vec3 extent = rq.hi - rq.lo;
   // Cells of side >= the largest diameter: an overlap can only be with the 27 neighbours.
   Vec3i cells;
@@ -26,6 +27,15 @@ std::vector<Vec3> insertRandomly(const InsertionRequest& rq, std::mt19937_64& rn
     return c;
   };
   auto flat = [&](const Vec3i& c) { return (static_cast<std::size_t>(c[2]) * cells[1] + c[1]) * cells[0] + c[0]; };
+
+  // Fixed spheres take indices n.. in the grid's view.
+  std::vector<Vec3> all = centre;
+  std::vector<double> radius = rq.radii;
+  for (std::size_t k = 0; k < rq.fixedCentres.size(); ++k) {
+    all.push_back(rq.fixedCentres[k]);
+    radius.push_back(rq.fixedRadii[k]);
+    grid[flat(cellOf(rq.fixedCentres[k]))].push_back(n + k);
+  }
 
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
@@ -63,11 +73,11 @@ std::vector<Vec3> insertRandomly(const InsertionRequest& rq, std::mt19937_64& rn
             }
             if (skip) continue;
             for (std::size_t j : grid[flat(q)]) {
-              Vec3 r = x - centre[j];
+              Vec3 r = x - all[j];
               for (int d = 0; d < 3; ++d) {
                 if (rq.periodic[static_cast<std::size_t>(d)]) r[d] -= extent[d] * std::round(r[d] / extent[d]);
               }
-              const double reach = a + rq.radii[j];
+              const double reach = a + radius[j];
               if (r.squaredNorm() < reach * reach) {
                 overlap = true;
                 break;
@@ -76,6 +86,7 @@ std::vector<Vec3> insertRandomly(const InsertionRequest& rq, std::mt19937_64& rn
           }
       if (overlap) continue;
       centre[i] = x;
+      all[i] = x;
       grid[flat(c)].push_back(i);
       placed = true;
     }

@@ -18,7 +18,10 @@ struct InsertionRequest {
   Vec3 hi = Vec3::Ones();
   std::array<bool, 3> periodic{false, false, false};  // wrap the overlap test on these axes
   std::vector<double> radii;                          // one per sphere, inserted largest first
-  std::int64_t maxAttempts = 100000;                  // per sphere
+  // Spheres already in place (e.g. the Brazil nut held at the bottom): new ones avoid them.
+  std::vector<Vec3> fixedCentres;
+  std::vector<double> fixedRadii;
+  std::int64_t maxAttempts = 100000;  // per sphere
   // Optional cylinder (axis along z through cylinderCentre) the spheres must lie inside.
   bool insideCylinder = false;
   Vec3 cylinderCentre = Vec3::Zero();

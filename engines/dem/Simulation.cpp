@@ -80,6 +80,33 @@ void Simulation::validateSetup() {
   wallForce_.assign(setup_.walls.size(), Vec3::Zero());
 }
 
+void Simulation::setFrozen(std::int64_t id, bool frozen) {
+  const auto i = indexOf(id);
+  if (!i) throw Error("DEM: no particle with id " + std::to_string(id));
+  const double m = p_.mass[*i];
+  const double a = p_.radius[*i];
+  p_.invMass[*i] = frozen ? 0.0 : 1.0 / m;
+  p_.invInertia[*i] = frozen ? 0.0 : 1.0 / (0.4 * m * a * a);
+  if (frozen) {
+    p_.v[*i].setZero();
+    p_.omega[*i].setZero();
+    p_.force[*i].setZero();
+    p_.torque[*i].setZero();
+  }
+  // Ghost copies and the frozen-pair exclusion of the list follow at the rebuild.
+  rebuild(false);
+}
+
+void Simulation::setWallVibration(std::size_t wall, const Vibration& vibration) {
+  GB_ASSERT(wall < setup_.walls.size(), "no such wall");
+  setup_.walls[wall].vibration = vibration;
+}
+
+void Simulation::restartClock() {
+  time_ = 0.0;
+  step_ = 0;
+}
+
 std::optional<std::size_t> Simulation::indexOf(std::int64_t id) const {
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     if (p_.id[i] == id) return i;

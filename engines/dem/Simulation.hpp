@@ -89,6 +89,12 @@ class Simulation {
   // The current state as a frame of the data model; contacts as recorded by the last step.
   [[nodiscard]] core::data::ParticleFrame frame() const;
 
+  // Preparation protocols (Section 6.2's two-step preparation): hold particles in place with
+  // infinite mass, change a wall's vibration between phases, start the clock of a new phase.
+  void setFrozen(std::int64_t id, bool frozen);
+  void setWallVibration(std::size_t wall, const Vibration& vibration);
+  void restartClock();
+
   // Index of the owned particle with this global id (linear search; for tests and setup).
   [[nodiscard]] std::optional<std::size_t> indexOf(std::int64_t id) const;
 

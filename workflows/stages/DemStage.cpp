@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <random>
@@ -97,6 +99,35 @@ std::shared_ptr<ParamSchema> wallSchema() {
   return s;
 }
 
+std::shared_ptr<ParamSchema> placeSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("species").required().doc("species of the placed particle (counted in its count)"))
+      .add(ParamSpec::quantityList("position", Dimension::lengthDim(), 3).required().doc("centre"));
+  return s;
+}
+
+// Section 6.2's two-step preparation: shake the whole container at high frequency with some
+// particles held in place, then let the bed relax, then release them.
+std::shared_ptr<ParamSchema> preparationSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(
+       ParamSpec::string("hold_species").defaultValue("").doc("species held fixed (infinite mass) during preparation"))
+      .add(ParamSpec::quantity("shake_amplitude", Dimension::lengthDim())
+               .required()
+               .min(0.0)
+               .doc("amplitude of the preparation shaking (all walls, along z)"))
+      .add(ParamSpec::quantity("shake_frequency", Dimension::frequency())
+               .required()
+               .min(0.0)
+               .doc("frequency of the preparation shaking"))
+      .add(ParamSpec::quantity("shake_duration", Dimension::timeDim()).required().min(0.0).doc("time shaken"))
+      .add(ParamSpec::quantity("relax_duration", Dimension::timeDim())
+               .required()
+               .min(0.0)
+               .doc("time left to relax without shaking"));
+  return s;
+}
+
 }  // namespace
 
 DemStage::DemStage() {
@@ -127,6 +158,10 @@ DemStage::DemStage() {
       .add(ParamSpec::objectList("species", speciesSchema()).required().doc("particle species"))
       .add(ParamSpec::object("contact", contactSchema()).required().doc("particle-particle contact coefficients"))
       .add(ParamSpec::objectList("walls", wallSchema()).doc("rigid walls (infinite mass), each with its own material"))
+      .add(ParamSpec::objectList("place", placeSchema())
+               .doc("particles placed at given positions before random insertion"))
+      .add(ParamSpec::object("preparation", preparationSchema())
+               .doc("two-step preparation before the run (Section 6.2); the run's clock starts after it"))
       .add(ParamSpec::quantityList("insert_lo", Dimension::lengthDim(), 3)
                .doc("insertion region lower corner (default: the box)"))
       .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
@@ -160,6 +195,25 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   for (std::size_t i = 0; i < p.at("species").size(); ++i) {
     if (!names.insert(p["species"][i].at("name").get<std::string>()).second)
       d.add(ptr + "/species/" + std::to_string(i) + "/name", "species name used twice");
+  }
+  std::map<std::string, std::int64_t> placedOf;
+  if (p.contains("place")) {
+    for (std::size_t k = 0; k < p["place"].size(); ++k) {
+      const std::string sp = p["place"][k].at("species");
+      if (names.count(sp) == 0)
+        d.add(ptr + "/place/" + std::to_string(k) + "/species", "no species named \"" + sp + "\"");
+      ++placedOf[sp];
+    }
+    for (const auto& s : p.at("species")) {
+      if (placedOf[s.at("name")] > s.at("count").get<std::int64_t>())
+        d.add(ptr + "/place",
+              "more particles of species \"" + s.at("name").get<std::string>() + "\" placed than its count");
+    }
+  }
+  if (p.contains("preparation")) {
+    const std::string hold = p["preparation"].at("hold_species");
+    if (!hold.empty() && names.count(hold) == 0)
+      d.add(ptr + "/preparation/hold_species", "no species named \"" + hold + "\"");
   }
   if (p.contains("walls")) {
     for (std::size_t w = 0; w < p["walls"].size(); ++w) {
@@ -215,6 +269,7 @@ std::string csvHeader(const DemSetup& s) {
     for (const char* c : {"x", "y", "z"}) h += ",wall" + std::to_string(w) + "_f" + c;
   }
   for (const auto& sp : s.species) h += ",com_z_" + sp.name;
+  for (const auto& sp : s.species) h += ",top_z_" + sp.name;  // highest z + a: the free surface
   return h + "\n";
 }
 
@@ -235,9 +290,28 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
       request.cylinderRadius = w.radius;
     }
   }
+  auto speciesIndex = [&](const std::string& name) {
+    for (std::size_t s = 0; s < setup.species.size(); ++s) {
+      if (setup.species[s].name == name) return static_cast<int>(s);
+    }
+    throw Error("no species named " + name);  // checked at load
+  };
+  // Placed particles come first (ids 0..), then the rest of each species at random.
+  std::vector<int> placedSpecies;
+  std::vector<std::int64_t> remaining;
+  for (const auto& s : setup.species) remaining.push_back(s.count);
+  if (p.contains("place")) {
+    for (const auto& pl : p["place"]) {
+      const int s = speciesIndex(pl.at("species"));
+      placedSpecies.push_back(s);
+      --remaining[static_cast<std::size_t>(s)];
+      request.fixedCentres.emplace_back(pl["position"][0], pl["position"][1], pl["position"][2]);
+      request.fixedRadii.push_back(setup.species[static_cast<std::size_t>(s)].radius);
+    }
+  }
   std::vector<int> speciesOf;
   for (std::size_t s = 0; s < setup.species.size(); ++s) {
-    for (std::int64_t k = 0; k < setup.species[s].count; ++k) {
+    for (std::int64_t k = 0; k < remaining[s]; ++k) {
       request.radii.push_back(setup.species[s].radius);
       speciesOf.push_back(static_cast<int>(s));
     }
@@ -248,12 +322,60 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
   std::mt19937_64 rng(p.at("seed").get<std::uint64_t>());
   const auto centres = dem::insertRandomly(request, rng);
   dem::Particles particles;
+  std::int64_t id = 0;
+  for (std::size_t k = 0; k < placedSpecies.size(); ++k) {
+    const auto& sp = setup.species[static_cast<std::size_t>(placedSpecies[k])];
+    particles.addOwned(id++, placedSpecies[k], sp.radius, sp.mass, request.fixedCentres[k], Vec3::Zero(), Vec3::Zero(),
+                       sp.frozen);
+  }
   for (std::size_t i = 0; i < centres.size(); ++i) {
     const auto& sp = setup.species[static_cast<std::size_t>(speciesOf[i])];
-    particles.addOwned(static_cast<std::int64_t>(i), speciesOf[i], sp.radius, sp.mass, centres[i], Vec3::Zero(),
-                       Vec3::Zero(), sp.frozen);
+    particles.addOwned(id++, speciesOf[i], sp.radius, sp.mass, centres[i], Vec3::Zero(), Vec3::Zero(), sp.frozen);
   }
   return particles;
+}
+
+// Section 6.2's two-step preparation: the held species fixed, the whole container shaken at
+// high frequency until the bed reaches its equilibrium height, then left to relax; then the
+// held particles are released and the run's clock starts. Not checkpointed: a stop during
+// preparation restarts it.
+void prepare(StageContext& ctx, const DemSetup& setup, dem::Simulation& sim) {
+  const json& prep = ctx.params().at("preparation");
+  const std::string hold = prep.at("hold_species");
+  std::vector<std::int64_t> held;
+  const auto& particles = sim.particles();
+  for (std::size_t i = 0; i < particles.nOwned; ++i) {
+    if (!hold.empty() && setup.species[static_cast<std::size_t>(particles.species[i])].name == hold) {
+      held.push_back(particles.id[i]);
+    }
+  }
+  for (auto id : held) sim.setFrozen(id, true);
+  const double dt = setup.engine.dt;
+  auto runFor = [&](std::int64_t steps, const char* what) {
+    for (std::int64_t s = 1; s <= steps; ++s) {
+      sim.step(false);
+      if ((s & 255) == 0 && ctx.stopRequested()) throw StageInterrupted{};
+    }
+    spdlog::info("{}: preparation: {} for {} steps, kinetic energy now {:.4g} J", ctx.stage(), what, steps,
+                 sim.energies().kinetic());
+  };
+  dem::Vibration shake;
+  shake.direction = Vec3::UnitZ();
+  shake.amplitude = prep.at("shake_amplitude");
+  shake.frequency = prep.at("shake_frequency");
+  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, shake);
+  // Whole periods, so the walls are back at rest position when the shaking stops.
+  const double periods =
+      shake.frequency > 0 ? std::ceil(prep.at("shake_duration").get<double>() * shake.frequency) : 0.0;
+  const auto shakeSteps = shake.frequency > 0
+                              ? static_cast<std::int64_t>(std::llround(periods / shake.frequency / dt))
+                              : static_cast<std::int64_t>(std::ceil(prep.at("shake_duration").get<double>() / dt));
+  runFor(shakeSteps, "shaking");
+  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, dem::Vibration{});
+  runFor(static_cast<std::int64_t>(std::ceil(prep.at("relax_duration").get<double>() / dt)), "relaxing");
+  for (auto id : held) sim.setFrozen(id, false);
+  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, setup.engine.walls[w].vibration);
+  sim.restartClock();
 }
 
 }  // namespace
@@ -282,6 +404,7 @@ void DemStage::run(StageContext& ctx) const {
     spdlog::info("{}: resuming from the checkpoint at step {}", ctx.stage(), simulation->stepCount());
   } else {
     simulation.emplace(setup.engine, insertSpecies(ctx, setup));
+    if (p.contains("preparation")) prepare(ctx, setup, *simulation);
     series << csvHeader(setup);
   }
   dem::Simulation& sim = *simulation;
@@ -314,6 +437,12 @@ void DemStage::run(StageContext& ctx) const {
       m[static_cast<std::size_t>(f.species[i])] += f.mass[i];
     }
     for (std::size_t s = 0; s < z.size(); ++s) series << ',' << (m[s] > 0 ? z[s] / m[s] : 0.0);
+    std::vector<double> top(setup.species.size(), -std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      auto& t = top[static_cast<std::size_t>(f.species[i])];
+      t = std::max(t, f.position[i][2] + f.radius[i]);
+    }
+    for (double t : top) series << ',' << t;
     series << '\n';
   };
 

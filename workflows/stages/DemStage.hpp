@@ -11,7 +11,8 @@ class DemStage final : public StageType {
  public:
   DemStage();
   [[nodiscard]] std::string name() const override { return "dem"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  // 2: series.csv gains top_z_<species> (free surface)
+  [[nodiscard]] int implVersion() const override { return 2; }
   [[nodiscard]] std::string summary() const override {
     return "soft-sphere DEM: random insertion, gravity, frictional contacts with history, walls; frames and series";
   }

@@ -2,7 +2,11 @@
 // Small builders for DEM physics tests: Table 6.1 materials in reduced units (d0 = m0 = g = 1,
 // so t0 = 1 and k0 = 1), and one- or two-particle setups.
 #include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
 
+#include "engines/dem/Insertion.hpp"
 #include "engines/dem/Simulation.hpp"
 
 namespace grainbridge::dem::testing {
@@ -46,6 +50,70 @@ inline Wall floorWall(const PairMaterial& m, double z = 0.0, int species = 1) {
   w.direction = Vec3::UnitZ();
   w.material.assign(static_cast<std::size_t>(species), m);
   return w;
+}
+
+// A gas of n equal spheres (diameter 1, Table 6.1 small-particle density) at solid fraction phi
+// in a cubic box periodic on all axes, no gravity: random non-overlapping centres and
+// Maxwellian velocities with zero total momentum, rescaled so that T = <C^2>/3 (Eq. 5.6) is T0.
+struct Gas {
+  SimulationSetup setup;
+  Particles particles;
+  double side = 0.0;
+};
+
+inline Gas periodicGas(int n, double phi, double T0, const PairMaterial& m, double dt, std::uint64_t seed) {
+  Gas g;
+  g.side = std::cbrt(n * M_PI / 6.0 / phi);
+  g.setup = openBox(m, 1, dt);
+  g.setup.lo = Vec3::Zero();
+  g.setup.hi = Vec3::Constant(g.side);
+  g.setup.periodic = {true, true, true};
+  InsertionRequest rq;
+  rq.lo = g.setup.lo;
+  rq.hi = g.setup.hi;
+  rq.periodic = {true, true, true};
+  rq.radii.assign(static_cast<std::size_t>(n), 0.5);
+  std::mt19937_64 rng(seed);
+  const auto centres = insertRandomly(rq, rng);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<Vec3> v(centres.size());
+  Vec3 mean = Vec3::Zero();
+  for (auto& vi : v) {
+    vi = Vec3(normal(rng), normal(rng), normal(rng));
+    mean += vi / static_cast<double>(n);
+  }
+  double c2 = 0.0;
+  for (auto& vi : v) {
+    vi -= mean;
+    c2 += vi.squaredNorm() / static_cast<double>(n);
+  }
+  const double scale = std::sqrt(3.0 * T0 / c2);
+  const double mass = sphereMass(1.0, 1.91);
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    g.particles.addOwned(static_cast<std::int64_t>(i), 0, 0.5, mass, centres[i], scale * v[i], Vec3::Zero(), false);
+  }
+  return g;
+}
+
+// Granular temperature T = <C^2>/3 (Eq. 5.6) of the owned particles about their mean velocity.
+inline double granularTemperature(const Particles& p) {
+  Vec3 mean = Vec3::Zero();
+  for (std::size_t i = 0; i < p.nOwned; ++i) mean += p.v[i];
+  mean /= static_cast<double>(p.nOwned);
+  double c2 = 0.0;
+  for (std::size_t i = 0; i < p.nOwned; ++i) c2 += (p.v[i] - mean).squaredNorm();
+  return c2 / (3.0 * static_cast<double>(p.nOwned));
+}
+
+// Elastic energy stored in the contacts of a frame recorded with the linear law (f = 1):
+// 1/2 k_n delta^2 + 1/2 k_t |u_t|^2, recovered from the spring forces k_n delta and -k_t u_t.
+inline double elasticEnergy(const core::data::ParticleFrame& f, const PairMaterial& m) {
+  double e = 0.0;
+  for (std::size_t k = 0; k < f.contacts.size(); ++k) {
+    e += 0.5 * f.contacts.forceNormalElastic[k].squaredNorm() / m.kn;
+    if (m.kt > 0.0) e += 0.5 * f.contacts.forceTangentialElastic[k].squaredNorm() / m.kt;
+  }
+  return e;
 }
 
 }  // namespace grainbridge::dem::testing
