@@ -1,10 +1,12 @@
 #include "workflows/params/ParamSchema.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "core/Sha256.hpp"
 #include "core/json/StrictParse.hpp"
 #include "core/units/Quantity.hpp"
 
@@ -156,6 +158,25 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
       }
       return value;
     }
+    case ParamKind::InputFile: {
+      if (!value.is_string() || value.get<std::string>().empty()) {
+        diagnostics.add(pointer, "expected a file path, found " + found(value));
+        return std::nullopt;
+      }
+      const std::string path = value.get<std::string>();
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) {
+        diagnostics.add(pointer,
+                        "cannot read file '" + path + "' (relative paths start at the folder grainbridge runs in)");
+        return std::nullopt;
+      }
+      try {
+        return json{{"path", path}, {"sha256", core::sha256File(path)}};
+      } catch (const Error& e) {
+        diagnostics.add(pointer, e.what());
+        return std::nullopt;
+      }
+    }
     case ParamKind::Object: {
       const std::size_t before = diagnostics.size();
       json out = spec.nested()->resolve(value, {}, units, pointer, diagnostics);
@@ -236,7 +257,10 @@ json ParamSchema::keyParams(const json& resolved) const {
   json out = json::object();
   for (const auto& [key, value] : resolved.items()) {
     const ParamSpec* spec = find(key);
-    if (spec == nullptr || spec->affectsResults()) out[key] = value;
+    if (spec != nullptr && spec->kind() == ParamKind::InputFile)
+      out[key] = value.at("sha256");  // content, not place
+    else if (spec == nullptr || spec->affectsResults())
+      out[key] = value;
   }
   return out;
 }

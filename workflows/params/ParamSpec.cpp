@@ -27,6 +27,8 @@ ParamSpec ParamSpec::object(std::string name, std::shared_ptr<const ParamSchema>
   return p;
 }
 
+ParamSpec ParamSpec::inputFile(std::string name) { return ParamSpec(std::move(name), ParamKind::InputFile, {}); }
+
 ParamSpec ParamSpec::objectList(std::string name, std::shared_ptr<const ParamSchema> schema) {
   ParamSpec p(std::move(name), ParamKind::ObjectList, {});
   p.nested_ = std::move(schema);
@@ -81,6 +83,8 @@ std::string ParamSpec::typeDescription() const {
     }
     case ParamKind::Object:
       return "object";
+    case ParamKind::InputFile:
+      return "file path";
     case ParamKind::ObjectList:
       return "list of objects";
     case ParamKind::QuantityList:

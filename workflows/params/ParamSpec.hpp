@@ -12,7 +12,7 @@
 
 namespace grainbridge::workflows::params {
 
-enum class ParamKind { Quantity, Integer, Boolean, String, QuantityList, Object, ObjectList };
+enum class ParamKind { Quantity, Integer, Boolean, String, QuantityList, Object, ObjectList, InputFile };
 
 class ParamSchema;
 
@@ -34,6 +34,10 @@ class ParamSpec {
   // A nested object, or a non-empty list of objects, each validated by `schema` (species,
   // walls, per-pair materials): errors name the element, e.g. /stages/bed/params/walls/2/mu.
   static ParamSpec object(std::string name, std::shared_ptr<const ParamSchema> schema);
+  // A file the stage reads (a LAMMPS data file, a saved frame): a path relative to the folder
+  // grainbridge runs in. It resolves to {"path", "sha256"}, and only the sha256 enters the stage
+  // key: a moved file changes nothing, an edited one reruns the stage. Top level only.
+  static ParamSpec inputFile(std::string name);
   static ParamSpec objectList(std::string name, std::shared_ptr<const ParamSchema> schema);
 
   ParamSpec& required();

@@ -16,6 +16,7 @@
 #include "core/Files.hpp"
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
+#include "core/io/LammpsDataReader.hpp"
 #include "core/io/ParticleFrameWriter.hpp"
 #include "engines/dem/Checkpoint.hpp"
 #include "engines/dem/DomainStress.hpp"
@@ -59,7 +60,8 @@ std::shared_ptr<ParamSchema> speciesSchema() {
   s->add(ParamSpec::string("name").required().doc("species name"))
       .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("sphere diameter"))
       .add(ParamSpec::quantity("density", Dimension::density()).required().positive().doc("material density"))
-      .add(ParamSpec::integer("count").required().min(0).doc("number of spheres"))
+      .add(ParamSpec::integer("count").defaultValue(0).min(0).doc(
+          "number of spheres inserted at random (0 with lammps_data)"))
       .add(ParamSpec::boolean("frozen").defaultValue(false).doc("fixed in place with infinite mass (rough bases)"));
   return s;
 }
@@ -128,6 +130,14 @@ std::shared_ptr<ParamSchema> preparationSchema() {
   return s;
 }
 
+std::shared_ptr<ParamSchema> lammpsTypeSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::integer("type").required().min(1).doc("LAMMPS atom type"))
+      .add(ParamSpec::string("species").required().doc("species its atoms become"))
+      .add(ParamSpec::boolean("frozen").defaultValue(false).doc("hold these atoms fixed (a frozen rough base)"));
+  return s;
+}
+
 }  // namespace
 
 DemStage::DemStage() {
@@ -158,6 +168,9 @@ DemStage::DemStage() {
       .add(ParamSpec::objectList("species", speciesSchema()).required().doc("particle species"))
       .add(ParamSpec::object("contact", contactSchema()).required().doc("particle-particle contact coefficients"))
       .add(ParamSpec::objectList("walls", wallSchema()).doc("rigid walls (infinite mass), each with its own material"))
+      .add(ParamSpec::inputFile("lammps_data")
+               .doc("start from a LAMMPS data file (atom_style sphere) instead of random insertion"))
+      .add(ParamSpec::objectList("lammps_types", lammpsTypeSchema()).doc("LAMMPS atom type -> species (and frozen)"))
       .add(ParamSpec::objectList("place", placeSchema())
                .doc("particles placed at given positions before random insertion"))
       .add(ParamSpec::object("preparation", preparationSchema())
@@ -208,6 +221,17 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
       if (placedOf[s.at("name")] > s.at("count").get<std::int64_t>())
         d.add(ptr + "/place",
               "more particles of species \"" + s.at("name").get<std::string>() + "\" placed than its count");
+    }
+  }
+  if (p.contains("lammps_data") != p.contains("lammps_types")) {
+    d.add(ptr + (p.contains("lammps_data") ? "/lammps_types" : "/lammps_data"),
+          "lammps_data and lammps_types go together");
+  }
+  if (p.contains("lammps_types")) {
+    for (std::size_t k = 0; k < p["lammps_types"].size(); ++k) {
+      const std::string sp = p["lammps_types"][k].at("species");
+      if (names.count(sp) == 0)
+        d.add(ptr + "/lammps_types/" + std::to_string(k) + "/species", "no species named \"" + sp + "\"");
     }
   }
   if (p.contains("preparation")) {
@@ -335,6 +359,38 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
   return particles;
 }
 
+// Particles from a LAMMPS data file (atom_style sphere): per-atom diameter, density, velocity
+// and angular velocity as written, each type mapped to a species (and frozen if asked).
+dem::Particles readLammpsParticles(const json& p, const DemSetup& setup) {
+  const std::string path = p.at("lammps_data").at("path");
+  const auto data = core::io::readLammpsData(path);
+  std::map<int, std::pair<int, bool>> typeMap;
+  for (const auto& t : p.at("lammps_types")) {
+    int species = -1;
+    for (std::size_t s = 0; s < setup.species.size(); ++s) {
+      if (setup.species[s].name == t.at("species")) species = static_cast<int>(s);
+    }
+    typeMap[t.at("type").get<int>()] = {species, t.at("frozen").get<bool>()};
+  }
+  dem::Particles particles;
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const auto it = typeMap.find(data.type[i]);
+    if (it == typeMap.end()) {
+      throw Error("LAMMPS data file '" + path + "': atom " + std::to_string(data.id[i]) + " has type " +
+                  std::to_string(data.type[i]) + ", which lammps_types does not map to a species");
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (data.position[i][a] < setup.engine.lo[a] || data.position[i][a] > setup.engine.hi[a]) {
+        throw Error("LAMMPS data file '" + path + "': atom " + std::to_string(data.id[i]) +
+                    " lies outside box_lo/box_hi of the config");
+      }
+    }
+    particles.addOwned(data.id[i], it->second.first, 0.5 * data.diameter[i], data.mass(i), data.position[i],
+                       data.velocity[i], data.angularVelocity[i], it->second.second);
+  }
+  return particles;
+}
+
 // Section 6.2's two-step preparation: the held species fixed, the whole container shaken at
 // high frequency until the bed reaches its equilibrium height, then left to relax; then the
 // held particles are released and the run's clock starts. Not checkpointed: a stop during
@@ -403,7 +459,8 @@ void DemStage::run(StageContext& ctx) const {
     series << core::readFile(checkpointSeries);
     spdlog::info("{}: resuming from the checkpoint at step {}", ctx.stage(), simulation->stepCount());
   } else {
-    simulation.emplace(setup.engine, insertSpecies(ctx, setup));
+    simulation.emplace(setup.engine,
+                       p.contains("lammps_data") ? readLammpsParticles(p, setup) : insertSpecies(ctx, setup));
     if (p.contains("preparation")) prepare(ctx, setup, *simulation);
     series << csvHeader(setup);
   }
@@ -456,7 +513,9 @@ void DemStage::run(StageContext& ctx) const {
   if (p.at("progress").get<bool>()) progress.emplace(ctx.stage(), static_cast<double>(totalSteps), "steps");
   const auto checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
   auto lastCheckpoint = std::chrono::steady_clock::now();
-  for (std::int64_t s = sim.stepCount() + 1; s <= totalSteps; ++s) {
+  const std::int64_t firstStep = sim.stepCount() + 1;
+  const auto loopStart = std::chrono::steady_clock::now();
+  for (std::int64_t s = firstStep; s <= totalSteps; ++s) {
     const bool frameStep = isMultiple(s, frames);
     const bool seriesStep = isMultiple(s, seriesPoints) || s == totalSteps;
     sim.step(frameStep || seriesStep);
@@ -480,6 +539,16 @@ void DemStage::run(StageContext& ctx) const {
     }
   }
   if (progress) progress->finish();
+  {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
+    const double steps = static_cast<double>(totalSteps - firstStep + 1);
+    spdlog::info(
+        "{}: {} steps of {} particles in {:.3f} s: {:.4g} particle-steps/s, {:.3f} contacts per particle (2 x particle "
+        "pairs / N, walls not counted)",
+        ctx.stage(), totalSteps - firstStep + 1, sim.particles().nOwned, seconds,
+        steps * static_cast<double>(sim.particles().nOwned) / seconds,
+        2.0 * static_cast<double>(sim.contactCount()) / static_cast<double>(sim.particles().nOwned));
+  }
 
   core::writeFileAtomically(ctx.outputDir() / "series.csv", series.str());
   std::filesystem::remove_all(ctx.checkpointDir());  // complete: the checkpoint has served
