@@ -13,8 +13,11 @@ Mat3 wholeDomainStress(const core::data::ParticleFrame& f, double volume) {
     mass += f.mass[i];
   }
   const Vec3 mean = mass > 0 ? Vec3(momentum / mass) : Vec3::Zero();
+  // Under Lees-Edwards shear, fluctuations are about the imposed streaming profile.
+  const double yMid = 0.5 * (f.domain.lo[1] + f.domain.hi[1]);
   for (std::size_t i = 0; i < f.size(); ++i) {
-    const Vec3 c = f.velocity[i] - mean;
+    Vec3 c = f.velocity[i] - mean;
+    c[0] -= f.domain.leesEdwardsShearRate * (f.position[i][1] - yMid);
     kinetic += f.mass[i] * c * c.transpose();
   }
   Mat3 contact = Mat3::Zero();

@@ -4,7 +4,8 @@
 // which the engine writes per step in its series. Each particle pair is stored once, so its
 // two halves add to r_ij F_ij; a wall contact counts with the wall as j at the contact point
 // (branch r_i - contact point, full length). C_i is the velocity about the mean of the mobile
-// particles. Sign: positive in compression (r_ij F_ij > 0 for repulsion), as in the reference.
+// particles, and under Lees-Edwards shear also about the streaming profile
+// u_x = shear rate (y - y_mid). Sign: positive in compression (r_ij F_ij > 0 for repulsion), as in the reference.
 #include "core/Types.hpp"
 #include "core/data/ParticleFrame.hpp"
 

@@ -32,9 +32,10 @@ void Particles::clearGhosts() {
   ghostOwner.clear();
   ghostShift.clear();
   ghostVelocityShift.clear();
+  ghostShearCrossings.clear();
 }
 
-void Particles::addGhost(std::size_t owner, const Vec3& shift, const Vec3& velocityShift) {
+void Particles::addGhost(std::size_t owner, const Vec3& shift, const Vec3& velocityShift, std::int8_t shearCrossings) {
   id.push_back(id[owner]);
   species.push_back(species[owner]);
   radius.push_back(radius[owner]);
@@ -49,13 +50,15 @@ void Particles::addGhost(std::size_t owner, const Vec3& shift, const Vec3& veloc
   ghostOwner.push_back(owner);
   ghostShift.push_back(shift);
   ghostVelocityShift.push_back(velocityShift);
+  ghostShearCrossings.push_back(shearCrossings);
 }
 
-void Particles::refreshGhosts() {
+void Particles::refreshGhosts(double shearDrift) {
   for (std::size_t k = 0; k < ghostOwner.size(); ++k) {
     const std::size_t g = nOwned + k;
     const std::size_t o = ghostOwner[k];
     x[g] = x[o] + ghostShift[k];
+    x[g][0] += ghostShearCrossings[k] * shearDrift;
     v[g] = v[o] + ghostVelocityShift[k];
     omega[g] = omega[o];
   }

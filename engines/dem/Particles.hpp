@@ -38,6 +38,9 @@ struct Particles {
   std::vector<std::size_t> ghostOwner;
   std::vector<Vec3> ghostShift;
   std::vector<Vec3> ghostVelocityShift;
+  // Net number of Lees-Edwards boundary crossings of a ghost (+1: image above, -1: below). Its
+  // x shift follows the growing offset: + crossings * (offset drift since the list was built).
+  std::vector<std::int8_t> ghostShearCrossings;
 
   [[nodiscard]] std::size_t size() const { return id.size(); }
   [[nodiscard]] bool isFrozen(std::size_t i) const { return invMass[i] == 0.0; }
@@ -46,9 +49,10 @@ struct Particles {
   void addOwned(std::int64_t globalId, std::int32_t speciesIndex, double a, double m, const Vec3& position,
                 const Vec3& velocity, const Vec3& angularVelocity, bool frozen);
   void clearGhosts();
-  void addGhost(std::size_t owner, const Vec3& shift, const Vec3& velocityShift);
-  // Copies owners' current state into their ghosts (every step between rebuilds).
-  void refreshGhosts();
+  void addGhost(std::size_t owner, const Vec3& shift, const Vec3& velocityShift, std::int8_t shearCrossings = 0);
+  // Copies owners' current state into their ghosts (every step between rebuilds);
+  // `shearDrift` is the growth of the Lees-Edwards offset since the ghosts were built.
+  void refreshGhosts(double shearDrift = 0.0);
   // Reorders owned particles by `order` (order[k] = old index of the new k-th particle);
   // requires no ghosts.
   void permuteOwned(const std::vector<std::size_t>& order);

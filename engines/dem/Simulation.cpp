@@ -37,10 +37,11 @@ Simulation::Simulation(SimulationSetup setup, EngineState state)
   // pairs (and ghosts) come in the same order.
   const std::vector<Vec3> current = p_.x;
   p_.x = state.buildPositions;
-  buildGhosts();
+  buildTime_ = state.buildTime;
+  buildGhosts(shearOffset(buildTime_));
   list_.build(p_, setup_.lo, setup_.hi, cutoff_, &state.pairHistory);
   for (std::size_t i = 0; i < p_.nOwned; ++i) p_.x[i] = current[i];
-  p_.refreshGhosts();
+  p_.refreshGhosts(shearDrift());
 }
 
 EngineState Simulation::captureState() const {
@@ -51,6 +52,7 @@ EngineState Simulation::captureState() const {
   s.particles = p_;
   s.particles.clearGhosts();
   s.buildPositions = list_.referencePositions();
+  s.buildTime = buildTime_;
   s.pairHistory = list_.exportHistory();
   s.wallHistory = wallHistory_;
   return s;
@@ -77,7 +79,20 @@ void Simulation::validateSetup() {
                   " m (largest diameter + skin)");
     }
   }
+  if (setup_.shearRate != 0.0 && !(setup_.periodic[0] && setup_.periodic[1])) {
+    throw Error("DEM: Lees-Edwards shear needs a box periodic in x (flow) and y (gradient)");
+  }
   wallForce_.assign(setup_.walls.size(), Vec3::Zero());
+}
+
+double Simulation::shearOffset(double t) const {
+  const double lx = setup_.hi[0] - setup_.lo[0];
+  const double offset = std::fmod(setup_.shearRate * (setup_.hi[1] - setup_.lo[1]) * t, lx);
+  return offset < 0 ? offset + lx : offset;
+}
+
+double Simulation::shearDrift() const {
+  return setup_.shearRate * (setup_.hi[1] - setup_.lo[1]) * (time_ - buildTime_);
 }
 
 void Simulation::setFrozen(std::int64_t id, bool frozen) {
@@ -150,7 +165,7 @@ void Simulation::step(bool recordContacts) {
   if (needsRebuild())
     rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
   else
-    p_.refreshGhosts();
+    p_.refreshGhosts(shearDrift());
   computeForces(recordContacts);
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     p_.v[i] += (half * p_.invMass[i]) * p_.force[i];
@@ -167,6 +182,9 @@ void Simulation::forceRebuild(bool sort) {
 
 bool Simulation::needsRebuild() const {
   const double limit2 = 0.25 * setup_.skin * setup_.skin;
+  // Ghosts across the shearing boundary move with the offset: it counts like a displacement.
+  const double drift = shearDrift();
+  if (drift * drift > limit2) return true;
   const auto& x0 = list_.referencePositions();
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     if ((p_.x[i] - x0[i]).squaredNorm() > limit2) return true;
@@ -182,6 +200,21 @@ void Simulation::wrapAndCheck() {
       throw Error("DEM: particle " + std::to_string(p_.id[i]) + " has a non-finite position or velocity at step " +
                   std::to_string(step_) + " (time step too large, or overlapping initial particles?)");
     }
+    if (setup_.shearRate != 0.0) {
+      // Crossing the shearing boundary: the particle re-enters as its image, displaced by the
+      // offset and with the image's streaming velocity.
+      const double ly = length[1];
+      const double offset = shearOffset(time_);
+      if (x[1] >= setup_.hi[1]) {
+        x[1] -= ly;
+        x[0] -= offset;
+        p_.v[i][0] -= setup_.shearRate * ly;
+      } else if (x[1] < setup_.lo[1]) {
+        x[1] += ly;
+        x[0] += offset;
+        p_.v[i][0] += setup_.shearRate * ly;
+      }
+    }
     for (int a = 0; a < 3; ++a) {
       if (setup_.periodic[static_cast<std::size_t>(a)]) {
         x[a] -= length[a] * std::floor((x[a] - setup_.lo[a]) / length[a]);
@@ -194,26 +227,42 @@ void Simulation::wrapAndCheck() {
   }
 }
 
-void Simulation::buildGhosts() {
+void Simulation::buildGhosts(double shearOffsetNow) {
   p_.clearGhosts();
   const Vec3 length = setup_.hi - setup_.lo;
-  // Axis by axis, including ghosts made for earlier axes, so edges and corners get images.
-  for (int a = 0; a < 3; ++a) {
+  const bool sheared = setup_.shearRate != 0.0;
+  // Axis by axis, including ghosts made for earlier axes, so edges and corners get images. With
+  // Lees-Edwards the gradient axis y goes first: its images are displaced in x, and the x pass
+  // then images them across x as well.
+  const std::array<int, 3> order = sheared ? std::array<int, 3>{1, 0, 2} : std::array<int, 3>{0, 1, 2};
+  for (int a : order) {
     if (!setup_.periodic[static_cast<std::size_t>(a)]) continue;
     const std::size_t existing = p_.size();
     for (std::size_t k = 0; k < existing; ++k) {
-      const std::size_t owner = k < p_.nOwned ? k : p_.ghostOwner[k - p_.nOwned];
-      const Vec3 baseShift = k < p_.nOwned ? Vec3::Zero() : p_.ghostShift[k - p_.nOwned];
-      const Vec3 baseVel = k < p_.nOwned ? Vec3::Zero() : p_.ghostVelocityShift[k - p_.nOwned];
-      const double xa = p_.x[k][a];
-      Vec3 shift = Vec3::Zero();
-      if (xa < setup_.lo[a] + cutoff_) {
-        shift[a] = length[a];
-        p_.addGhost(owner, baseShift + shift, baseVel);
-      }
-      if (xa >= setup_.hi[a] - cutoff_) {
-        shift[a] = -length[a];
-        p_.addGhost(owner, baseShift + shift, baseVel);
+      const bool ghost = k >= p_.nOwned;
+      const std::size_t owner = ghost ? p_.ghostOwner[k - p_.nOwned] : k;
+      const Vec3 baseShift = ghost ? p_.ghostShift[k - p_.nOwned] : Vec3::Zero();
+      const Vec3 baseVel = ghost ? p_.ghostVelocityShift[k - p_.nOwned] : Vec3::Zero();
+      const std::int8_t baseCrossings = ghost ? p_.ghostShearCrossings[k - p_.nOwned] : std::int8_t{0};
+      const Vec3 xk = p_.x[k];
+      for (int side : {+1, -1}) {
+        // side +1: a particle near the lower face gets an image above; -1: near the upper face.
+        const bool near = side > 0 ? xk[a] < setup_.lo[a] + cutoff_ : xk[a] >= setup_.hi[a] - cutoff_;
+        if (!near) continue;
+        Vec3 shift = baseShift;
+        Vec3 vel = baseVel;
+        shift[a] += side * length[a];
+        std::int8_t crossings = baseCrossings;
+        if (sheared && a == 1) {
+          shift[0] += side * shearOffsetNow;
+          // keep the image's x inside the box; the x pass adds its x images
+          const double xImage = xk[0] + side * shearOffsetNow;
+          if (xImage >= setup_.hi[0]) shift[0] -= length[0];
+          if (xImage < setup_.lo[0]) shift[0] += length[0];
+          vel[0] += side * setup_.shearRate * length[1];
+          crossings = static_cast<std::int8_t>(crossings + side);
+        }
+        p_.addGhost(owner, shift, vel, crossings);
       }
     }
   }
@@ -256,7 +305,8 @@ void Simulation::rebuild(bool sort) {
   } else {
     ++rebuildsSinceSort_;
   }
-  buildGhosts();
+  buildTime_ = time_;
+  buildGhosts(shearOffset(time_));
   list_.build(p_, setup_.lo, setup_.hi, cutoff_);
 }
 
@@ -269,6 +319,7 @@ void Simulation::computeForces(bool record) {
   if (record) {
     recordedContacts_ = {};
     recordedWallContacts_ = {};
+    dissipation_ = 0.0;
   }
   contactCount_ = 0;
   if (setup_.model == NormalModel::Hertz) {
@@ -356,6 +407,7 @@ void Simulation::pairForces() {
         rc.forceNormalDissipative.push_back(f.normalDissipative);
         rc.forceTangentialElastic.push_back(f.tangentialElastic);
         rc.forceTangentialDissipative.push_back(f.tangentialDissipative);
+        dissipation_ -= f.normalDissipative.dot(c.vn) + f.tangentialDissipative.dot(c.vt);
       }
     }
     p_.force[i] += fi;
@@ -417,6 +469,7 @@ void Simulation::wallForces() {
         rw.point.push_back(p_.x[i] - ai * n);
         rw.forceNormal.push_back(fn);
         rw.forceTangential.push_back(ft);
+        dissipation_ -= f.normalDissipative.dot(c.vn) + f.tangentialDissipative.dot(c.vt);
       }
     }
   }
@@ -430,6 +483,8 @@ core::data::ParticleFrame Simulation::frame() const {
   f.domain.lo = setup_.lo;
   f.domain.hi = setup_.hi;
   f.domain.periodic = setup_.periodic;
+  f.domain.leesEdwardsOffset = shearOffset(time_);
+  f.domain.leesEdwardsShearRate = setup_.shearRate;
   for (const auto& w : setup_.walls) {
     f.domain.walls.push_back({w.kind == Wall::Kind::Plane ? "plane" : "cylinder", w.positionAt(time_), w.direction,
                               w.radius, w.velocityAt(time_)});

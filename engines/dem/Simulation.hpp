@@ -23,6 +23,10 @@ struct SimulationSetup {
   std::array<bool, 3> periodic{false, false, false};
   Vec3 gravity = Vec3::Zero();
   double backgroundDamping = 0.0;  // b of Eq. 6.7 [kg/s]
+  // Lees-Edwards simple shear when non-zero: streaming velocity u_x = shearRate (y - y_mid); the
+  // periodic image above (y + L_y) is displaced by the offset shearRate L_y t (mod L_x) in x and
+  // moves with + shearRate L_y. Needs x and y periodic.
+  double shearRate = 0.0;
   double dt = 0.0;
   double skin = 0.0;  // Verlet skin [m]
   NormalModel model = NormalModel::Linear;
@@ -47,6 +51,7 @@ struct EngineState {
   std::int64_t rebuildsSinceSort = 0;
   Particles particles;               // owned only
   std::vector<Vec3> buildPositions;  // owned positions at the last list build
+  double buildTime = 0.0;            // time of the last list build (Lees-Edwards offset then)
   std::vector<PairHistory> pairHistory;
   std::vector<Vec3> wallHistory;  // per (particle, wall), particle-major
 };
@@ -78,7 +83,12 @@ class Simulation {
   [[nodiscard]] Energies energies() const;
   [[nodiscard]] Vec3 momentum() const;
   [[nodiscard]] std::int64_t rebuilds() const { return list_.builds(); }
+  // Lees-Edwards offset of the image above at time t, in [0, L_x).
+  [[nodiscard]] double shearOffset(double t) const;
   [[nodiscard]] std::size_t contactCount() const { return contactCount_; }
+  // Power dissipated by the dashpots (-F_n,diss . v_n - F_t,diss . v_t summed over contacts) at
+  // the last force evaluation that recorded contacts; Coulomb sliding losses are not included.
+  [[nodiscard]] double dashpotDissipation() const { return dissipation_; }
   // Total force each wall received from the particles at the last force evaluation.
   [[nodiscard]] const std::vector<Vec3>& wallForces() const { return wallForce_; }
 
@@ -103,7 +113,8 @@ class Simulation {
   void rebuild(bool sort);
   bool needsRebuild() const;
   void wrapAndCheck();
-  void buildGhosts();
+  void buildGhosts(double shearOffsetNow);
+  [[nodiscard]] double shearDrift() const;  // offset growth since the last build
   void computeForces(bool record);
   template <class Law, bool Record>
   void pairForces();
@@ -116,9 +127,11 @@ class Simulation {
   NeighborList list_;
   double cutoff_ = 0.0;
   double time_ = 0.0;
+  double buildTime_ = 0.0;
   std::int64_t step_ = 0;
   std::int64_t rebuildsSinceSort_ = 0;
   std::size_t contactCount_ = 0;
+  double dissipation_ = 0.0;
   // Wall contact history u_t per (owned particle, wall), carried with the particle on re-sort.
   std::vector<Vec3> wallHistory_;
   std::vector<Vec3> wallForce_;

@@ -43,6 +43,7 @@ DemSetup makeDemSetup(const json& p) {
   for (int a = 0; a < 3; ++a) e.periodic[static_cast<std::size_t>(a)] = periodic.find("xyz"[a]) != std::string::npos;
   e.gravity = vec(p.at("gravity"));
   e.backgroundDamping = p.at("background_damping");
+  e.shearRate = p.at("shear_rate");
   e.dt = p.at("dt");
   e.model = p.at("normal_model") == "hertz" ? dem::NormalModel::Hertz : dem::NormalModel::Linear;
 

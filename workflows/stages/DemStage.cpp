@@ -160,6 +160,9 @@ DemStage::DemStage() {
                .defaultValue("linear")
                .options({"linear", "hertz"})
                .doc("f(delta/d) of Eq. 6.5: 1 or sqrt(delta/d)"))
+      .add(ParamSpec::quantity("shear_rate", Dimension::frequency())
+               .defaultValue(0.0)
+               .doc("Lees-Edwards simple shear rate: u_x = shear_rate (y - y_mid), needs periodic \"xy\""))
       .add(ParamSpec::quantity("background_damping", Dimension{0, 1, -1})
                .defaultValue(0.0)
                .min(0.0)
@@ -197,6 +200,10 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     if (!(p.at("box_hi")[a].get<double>() > p.at("box_lo")[a].get<double>())) {
       d.add(ptr + "/box_hi/" + std::to_string(a), "box_hi must exceed box_lo on every axis");
     }
+  }
+  if (p.at("shear_rate").get<double>() != 0.0 &&
+      (periodic.find('x') == std::string::npos || periodic.find('y') == std::string::npos)) {
+    d.add(ptr + "/shear_rate", "Lees-Edwards shear needs periodic \"x\" (flow) and \"y\" (gradient)");
   }
   auto checkContact = [&](const json& c, const std::string& where) {
     if (c.contains("gamma_n") == c.contains("restitution")) {
@@ -354,7 +361,12 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
   }
   for (std::size_t i = 0; i < centres.size(); ++i) {
     const auto& sp = setup.species[static_cast<std::size_t>(speciesOf[i])];
-    particles.addOwned(id++, speciesOf[i], sp.radius, sp.mass, centres[i], Vec3::Zero(), Vec3::Zero(), sp.frozen);
+    // Under Lees-Edwards shear the particles start on the streaming profile.
+    const double ux = setup.engine.shearRate == 0.0
+                          ? 0.0
+                          : setup.engine.shearRate * (centres[i][1] - 0.5 * (setup.engine.lo[1] + setup.engine.hi[1]));
+    particles.addOwned(id++, speciesOf[i], sp.radius, sp.mass, centres[i], Vec3(sp.frozen ? 0.0 : ux, 0, 0),
+                       Vec3::Zero(), sp.frozen);
   }
   return particles;
 }

@@ -1,0 +1,133 @@
+// Lees-Edwards simple shear (VALIDATION.md, DEM): in steady state the mean velocity profile is
+// the imposed linear one, and the work done by the shear, -sigma_xy gammadot V (sigma of
+// Eq. 2.3, positive in compression), equals the dissipation rate measured at the contacts.
+// Frictionless spheres, e = 0.9, k* = k_n/(rho d^3 gammadot^2) = 1e5, dt = t_c/50.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "engines/dem/DomainStress.hpp"
+#include "engines/dem/Insertion.hpp"
+#include "tests/engines/dem/DemTestSupport.hpp"
+
+using namespace grainbridge;
+using namespace grainbridge::dem;
+using namespace grainbridge::dem::testing;
+
+namespace {
+
+struct ShearRun {
+  double slope;         // fitted d<u_x>/dy
+  double intercept;     // <u_x> at the box centre
+  double shearWork;     // time-averaged -sigma_xy gammadot V
+  double dissipation;   // time-averaged dashpot dissipation rate
+  double sigmaXyLower;  // sigma_xy from contacts in the lower and upper halves of the box
+  double sigmaXyUpper;
+};
+
+ShearRun shear(int n, double phi, double strainsDiscarded, double strainsAveraged) {
+  const double d = 1.0;
+  const double rho = 6.0 / M_PI;  // m = 1
+  const double gammadot = 1.0;
+  PairMaterial mat;
+  mat.kn = 1e5 * rho * d * d * d * gammadot * gammadot;  // k* = 1e5
+  mat.kt = 0.0;
+  mat.mu = 0.0;
+  mat.gammaN = gammaForRestitution(0.9, mat.kn, 0.5);
+  const double tc = linearContactTime(mat.kn, mat.gammaN, 0.5);
+  const double box = std::cbrt(n * M_PI / 6.0 / phi);
+  SimulationSetup s;
+  s.lo = Vec3::Zero();
+  s.hi = Vec3::Constant(box);
+  s.periodic = {true, true, true};
+  s.dt = tc / 50.0;
+  s.skin = 0.3;
+  s.species = 1;
+  s.pairMaterial = {mat};
+  s.shearRate = gammadot;
+
+  InsertionRequest rq;
+  rq.lo = s.lo;
+  rq.hi = s.hi;
+  rq.periodic = {true, true, true};
+  rq.radii.assign(static_cast<std::size_t>(n), 0.5 * d);
+  std::mt19937_64 rng(7);
+  const auto centres = insertRandomly(rq, rng);
+  // Fluctuations with zero mean: a net y momentum P_y would make the momentum about the
+  // streaming profile drift as -gammadot P_y t (shear couples y motion into x).
+  std::normal_distribution<double> noise(0.0, 0.3);
+  std::vector<Vec3> fluct(static_cast<std::size_t>(n));
+  Vec3 mean = Vec3::Zero();
+  for (auto& c : fluct) {
+    c = Vec3(noise(rng), noise(rng), noise(rng));
+    mean += c / n;
+  }
+  Particles p;
+  for (int i = 0; i < n; ++i) {
+    const Vec3& x = centres[static_cast<std::size_t>(i)];
+    const Vec3 v = Vec3(gammadot * (x[1] - 0.5 * box), 0, 0) + fluct[static_cast<std::size_t>(i)] - mean;
+    p.addOwned(i, 0, 0.5 * d, 1.0, x, v, Vec3::Zero(), false);
+  }
+  Simulation sim(s, std::move(p));
+  const auto discard = static_cast<std::int64_t>(strainsDiscarded / gammadot / s.dt);
+  const auto average = static_cast<std::int64_t>(strainsAveraged / gammadot / s.dt);
+  sim.run(discard);
+
+  const int bins = 6;
+  std::vector<double> sumU(bins, 0.0), count(bins, 0.0);
+  double work = 0.0, dissipation = 0.0, lower = 0.0, upper = 0.0;
+  int samples = 0;
+  const double volume = box * box * box;
+  for (std::int64_t k = 0; k < average; ++k) {
+    const bool sample = k % 20 == 0;
+    sim.step(sample);
+    if (!sample) continue;
+    const auto f = sim.frame();
+    const Mat3 sigma = wholeDomainStress(f, volume);
+    work += -sigma(0, 1) * gammadot * volume;
+    dissipation += sim.dashpotDissipation();
+    for (std::size_t c = 0; c < f.contacts.size(); ++c) {
+      // contact part of sigma_xy attributed to the half of the box holding particle i
+      const auto i = *sim.indexOf(f.contacts.i[c]);
+      const double part = f.contacts.branch[c][0] * (f.contacts.forceNormal[c] + f.contacts.forceTangential[c])[1];
+      (f.position[i][1] < 0.5 * box ? lower : upper) += part / (0.5 * volume);
+    }
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const int b = std::min(bins - 1, static_cast<int>(f.position[i][1] / box * bins));
+      sumU[static_cast<std::size_t>(b)] += f.velocity[i][0];
+      count[static_cast<std::size_t>(b)] += 1.0;
+    }
+    ++samples;
+  }
+  // Least-squares line through the bin means.
+  double sy = 0, su = 0, syy = 0, syu = 0;
+  for (int b = 0; b < bins; ++b) {
+    const double y = (b + 0.5) * box / bins - 0.5 * box;
+    const double u = sumU[static_cast<std::size_t>(b)] / count[static_cast<std::size_t>(b)];
+    sy += y;
+    su += u;
+    syy += y * y;
+    syu += y * u;
+  }
+  const double slope = (bins * syu - sy * su) / (bins * syy - sy * sy);
+  return {slope, su / bins, work / samples, dissipation / samples, lower / samples, upper / samples};
+}
+
+}  // namespace
+
+TEST(LeesEdwards, SteadyShearHasLinearProfileAndShearWorkEqualsDissipation) {
+  const auto r = shear(300, 0.2, 20.0, 60.0);
+  RecordProperty("slope", std::to_string(r.slope));
+  RecordProperty("shear_work", std::to_string(r.shearWork));
+  RecordProperty("dissipation", std::to_string(r.dissipation));
+  std::printf("slope %.5f intercept %.5f work %.6g dissipation %.6g (ratio %.4f) sigma_xy lower %.5g upper %.5g\n",
+              r.slope, r.intercept, r.shearWork, r.dissipation, r.shearWork / r.dissipation, r.sigmaXyLower,
+              r.sigmaXyUpper);
+  EXPECT_NEAR(r.slope, 1.0, 0.02);
+  EXPECT_NEAR(r.intercept, 0.0, 0.02 * 0.5 * std::cbrt(300 * M_PI / 6.0 / 0.2));
+  EXPECT_GT(r.shearWork, 0.0);
+  // sigma_xy is uniform: the halves on either side of the box centre (and so of the shearing
+  // boundary, which joins the top half to the bottom one) agree.
+  EXPECT_NEAR(r.sigmaXyLower / r.sigmaXyUpper, 1.0, 0.05);
+  EXPECT_NEAR(r.shearWork / r.dissipation, 1.0, 0.02);
+}
