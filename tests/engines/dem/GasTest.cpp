@@ -72,7 +72,7 @@ TEST(ElasticGas, CollisionEnergyErrorIsSecondOrder) {
   const PairMaterial m = elastic();
   const double mass = sphereMass(1.0, 1.91);
   const double tc = linearContactTime(m.kn, 0.0, 0.5 * mass);
-  std::mt19937_64 rng(13);
+  std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   auto collide = [&](double dt, double b, double entry) {
     Particles p;

@@ -96,7 +96,8 @@ CollisionResult engineWall(double v, double dt) {
   p.addOwned(0, 0, a, sphereMass(kLargeD, kLargeRho), Vec3(0, 0, a + 0.01), Vec3(0, 0, -v), Vec3::Zero(), false);
   Simulation sim(setup, p);
   const auto& q = sim.particles();
-  return measure(sim, [&] { return q.x[0].z() - a; }, [&] { return q.v[0].z(); }, v);
+  return measure(
+      sim, [&] { return q.x[0].z() - a; }, [&] { return q.v[0].z(); }, v);
 }
 
 void expectWithin(const CollisionResult& got, const CollisionResult& want, const char* what, double v) {
