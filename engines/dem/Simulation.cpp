@@ -19,6 +19,14 @@ std::string vecText(const Vec3& v) {
 Simulation::Simulation(SimulationSetup setup, Particles particles)
     : setup_(std::move(setup)), p_(std::move(particles)) {
   validateSetup();
+  if (setup_.planarAxis >= 0) {
+    for (std::size_t i = 0; i < p_.nOwned; ++i) {
+      p_.v[i][setup_.planarAxis] = 0.0;
+      const double spin = p_.omega[i][setup_.planarAxis];
+      p_.omega[i].setZero();
+      p_.omega[i][setup_.planarAxis] = spin;
+    }
+  }
   wallHistory_.assign(p_.nOwned * setup_.walls.size(), Vec3::Zero());
   rebuild(false);
   computeForces(true);  // the initial frame gets its contacts too
@@ -79,6 +87,7 @@ void Simulation::validateSetup() {
                   " m (largest diameter + skin)");
     }
   }
+  if (setup_.planarAxis < -1 || setup_.planarAxis > 2) throw Error("DEM: planar axis must be -1, 0, 1 or 2");
   if (setup_.shearRate != 0.0 && !(setup_.periodic[0] && setup_.periodic[1])) {
     throw Error("DEM: Lees-Edwards shear needs a box periodic in x (flow) and y (gradient)");
   }
@@ -120,6 +129,19 @@ void Simulation::setWallVibration(std::size_t wall, const Vibration& vibration) 
 void Simulation::restartClock() {
   time_ = 0.0;
   step_ = 0;
+}
+
+Simulation::Overlap Simulation::largestOverlap() const {
+  Overlap worst;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    for (std::size_t s = list_.begin(i); s < list_.end(i); ++s) {
+      const std::size_t j = list_.partner(s);
+      const double gap = (p_.x[i] - p_.x[j]).norm() - (p_.radius[i] + p_.radius[j]);
+      const double relative = -gap / (2.0 * std::min(p_.radius[i], p_.radius[j]));
+      if (relative > worst.relative) worst = {relative, p_.id[i], p_.id[j]};
+    }
+  }
+  return worst;
 }
 
 std::optional<std::size_t> Simulation::indexOf(std::int64_t id) const {
@@ -345,6 +367,18 @@ void Simulation::computeForces(bool record) {
     }
     p_.force[i] +=
         p_.mass[i] * setup_.gravity - b * p_.v[i] + p_.couplingA[i] + p_.couplingB[i] * (p_.couplingU[i] - p_.v[i]);
+  }
+  if (setup_.planarAxis >= 0) constrainToPlane();
+}
+
+void Simulation::constrainToPlane() {
+  // 2-D beds: the layer stays in its plane and spins only about the plane's normal.
+  const int a = setup_.planarAxis;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+    p_.force[i][a] = 0.0;
+    const double spin = p_.torque[i][a];
+    p_.torque[i].setZero();
+    p_.torque[i][a] = spin;
   }
 }
 

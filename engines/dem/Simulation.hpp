@@ -27,6 +27,9 @@ struct SimulationSetup {
   // periodic image above (y + L_y) is displaced by the offset shearRate L_y t (mod L_x) in x and
   // moves with + shearRate L_y. Needs x and y periodic.
   double shearRate = 0.0;
+  // Planar mode for 2-D beds (one particle layer): no motion along this axis (0, 1, 2) and
+  // rotation about it only; -1 for full 3-D.
+  int planarAxis = -1;
   double dt = 0.0;
   double skin = 0.0;  // Verlet skin [m]
   NormalModel model = NormalModel::Linear;
@@ -105,6 +108,15 @@ class Simulation {
   void setWallVibration(std::size_t wall, const Vibration& vibration);
   void restartClock();
 
+  // The largest overlap between two particles, relative to the smaller diameter, with the ids
+  // of that pair (a check of initial states read from files).
+  struct Overlap {
+    double relative = 0.0;
+    std::int64_t i = -1;
+    std::int64_t j = -1;
+  };
+  [[nodiscard]] Overlap largestOverlap() const;
+
   // Index of the owned particle with this global id (linear search; for tests and setup).
   [[nodiscard]] std::optional<std::size_t> indexOf(std::int64_t id) const;
 
@@ -116,6 +128,7 @@ class Simulation {
   void buildGhosts(double shearOffsetNow);
   [[nodiscard]] double shearDrift() const;  // offset growth since the last build
   void computeForces(bool record);
+  void constrainToPlane();
   template <class Law, bool Record>
   void pairForces();
   template <class Law, bool Record>

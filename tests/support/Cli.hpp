@@ -72,7 +72,7 @@ inline std::string readText(const std::filesystem::path& p) {
 
 // Waits (up to `timeoutMs`) until process `pid` has exited. A zombie counts as exited: a
 // background process whose shell is gone may never be reaped in a container.
-inline void waitForProcessExit(long pid, int timeoutMs = 60000) {
+inline void waitForProcessExit(long pid, int timeoutMs = 240000) {
   const std::filesystem::path stat = "/proc/" + std::to_string(pid) + "/stat";
   for (int waited = 0; waited < timeoutMs; waited += 20) {
     std::ifstream in(stat);

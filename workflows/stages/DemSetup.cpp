@@ -44,6 +44,8 @@ DemSetup makeDemSetup(const json& p) {
   e.gravity = vec(p.at("gravity"));
   e.backgroundDamping = p.at("background_damping");
   e.shearRate = p.at("shear_rate");
+  const std::string planar = p.at("planar");
+  e.planarAxis = planar.empty() ? -1 : planar[0] - 'x';
   e.dt = p.at("dt");
   e.model = p.at("normal_model") == "hertz" ? dem::NormalModel::Hertz : dem::NormalModel::Linear;
 
@@ -64,10 +66,20 @@ DemSetup makeDemSetup(const json& p) {
       const auto& sa = out.species[static_cast<std::size_t>(a)];
       const auto& sb = out.species[static_cast<std::size_t>(b)];
       const double meff = effectiveMass(sa.mass, sa.frozen, sb.mass, sb.frozen);
-      e.pairMaterial[static_cast<std::size_t>(a * ns + b)] = material(contact, std::isfinite(meff) ? meff : 1.0);
+      // A pair_contacts entry for this pair (either order) replaces `contact`.
+      const json* c = &contact;
+      if (p.contains("pair_contacts")) {
+        for (const auto& pc : p.at("pair_contacts")) {
+          if ((pc.at("species") == sa.name && pc.at("with") == sb.name) ||
+              (pc.at("species") == sb.name && pc.at("with") == sa.name))
+            c = &pc;
+        }
+      }
+      e.pairMaterial[static_cast<std::size_t>(a * ns + b)] = material(*c, std::isfinite(meff) ? meff : 1.0);
       if (b >= a && std::isfinite(meff)) {
         const auto& m = e.pairMaterial[static_cast<std::size_t>(a * ns + b)];
-        out.timings.push_back({sa.name + "-" + sb.name, "/contact", dem::linearRestitution(m.kn, m.gammaN, meff),
+        out.timings.push_back({sa.name + "-" + sb.name, c == &contact ? "/contact" : "/pair_contacts",
+                               dem::linearRestitution(m.kn, m.gammaN, meff),
                                dem::linearContactTime(m.kn, m.gammaN, meff)});
       }
     }

@@ -17,6 +17,7 @@
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
 #include "core/io/LammpsDataReader.hpp"
+#include "core/io/ParticleFrameReader.hpp"
 #include "core/io/ParticleFrameWriter.hpp"
 #include "engines/dem/Checkpoint.hpp"
 #include "engines/dem/DomainStress.hpp"
@@ -68,6 +69,15 @@ std::shared_ptr<ParamSchema> speciesSchema() {
 
 std::shared_ptr<ParamSchema> contactSchema() {
   auto s = std::make_shared<ParamSchema>();
+  addContactParams(*s);
+  return s;
+}
+
+// Coefficients for one species pair, replacing `contact` for it.
+std::shared_ptr<ParamSchema> pairContactSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("species").required().doc("one species of the pair"))
+      .add(ParamSpec::string("with").required().doc("the other species (may be the same)"));
   addContactParams(*s);
   return s;
 }
@@ -170,7 +180,19 @@ DemStage::DemStage() {
       .add(ParamSpec::integer("seed").defaultValue(1).min(0).doc("random seed of the insertion"))
       .add(ParamSpec::objectList("species", speciesSchema()).required().doc("particle species"))
       .add(ParamSpec::object("contact", contactSchema()).required().doc("particle-particle contact coefficients"))
+      .add(ParamSpec::objectList("pair_contacts", pairContactSchema())
+               .doc("coefficients of particular species pairs (others use contact)"))
       .add(ParamSpec::objectList("walls", wallSchema()).doc("rigid walls (infinite mass), each with its own material"))
+      .add(ParamSpec::string("planar")
+               .defaultValue("")
+               .options({"", "x", "y", "z"})
+               .doc("2-D bed: no motion along this axis, rotation about it only"))
+      .add(ParamSpec::number("max_initial_overlap")
+               .defaultValue(0.01)
+               .min(0.0)
+               .doc("largest overlap of a state read from a file, in smaller diameters"))
+      .add(ParamSpec::inputFile("initial_frame")
+               .doc("start from a saved particle frame (frames/particles_*.h5); species by index"))
       .add(ParamSpec::inputFile("lammps_data")
                .doc("start from a LAMMPS data file (atom_style sphere) instead of random insertion"))
       .add(ParamSpec::objectList("lammps_types", lammpsTypeSchema()).doc("LAMMPS atom type -> species (and frozen)"))
@@ -211,6 +233,9 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     }
   };
   checkContact(p.at("contact"), ptr + "/contact");
+  if (p.contains("lammps_data") && p.contains("initial_frame")) {
+    d.add(ptr + "/initial_frame", "give one initial state: lammps_data or initial_frame");
+  }
   std::set<std::string> names;
   for (std::size_t i = 0; i < p.at("species").size(); ++i) {
     if (!names.insert(p["species"][i].at("name").get<std::string>()).second)
@@ -228,6 +253,17 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
       if (placedOf[s.at("name")] > s.at("count").get<std::int64_t>())
         d.add(ptr + "/place",
               "more particles of species \"" + s.at("name").get<std::string>() + "\" placed than its count");
+    }
+  }
+  if (p.contains("pair_contacts")) {
+    for (std::size_t k = 0; k < p["pair_contacts"].size(); ++k) {
+      const json& pc = p["pair_contacts"][k];
+      const std::string where = ptr + "/pair_contacts/" + std::to_string(k);
+      checkContact(pc, where);
+      for (const char* f : {"species", "with"}) {
+        if (names.count(pc.at(f).get<std::string>()) == 0)
+          d.add(where + "/" + f, "no species named \"" + pc.at(f).get<std::string>() + "\"");
+      }
     }
   }
   if (p.contains("lammps_data") != p.contains("lammps_types")) {
@@ -403,6 +439,24 @@ dem::Particles readLammpsParticles(const json& p, const DemSetup& setup) {
   return particles;
 }
 
+// Particles from a saved frame of the data model; the frame's species index selects the
+// species (and so whether it is frozen).
+dem::Particles readFrameParticles(const json& p, const DemSetup& setup) {
+  const std::string path = p.at("initial_frame").at("path");
+  const auto frame = core::io::readParticleFrame(path);
+  dem::Particles particles;
+  for (std::size_t i = 0; i < frame.size(); ++i) {
+    const auto s = frame.species[i];
+    if (s < 0 || static_cast<std::size_t>(s) >= setup.species.size()) {
+      throw Error("initial frame '" + path + "': particle " + std::to_string(frame.id[i]) + " has species index " +
+                  std::to_string(s) + ", but the config declares " + std::to_string(setup.species.size()) + " species");
+    }
+    particles.addOwned(frame.id[i], s, frame.radius[i], frame.mass[i], frame.position[i], frame.velocity[i],
+                       frame.angularVelocity[i], setup.species[static_cast<std::size_t>(s)].frozen);
+  }
+  return particles;
+}
+
 // Section 6.2's two-step preparation: the held species fixed, the whole container shaken at
 // high frequency until the bed reaches its equilibrium height, then left to relax; then the
 // held particles are released and the run's clock starts. Not checkpointed: a stop during
@@ -471,8 +525,22 @@ void DemStage::run(StageContext& ctx) const {
     series << core::readFile(checkpointSeries);
     spdlog::info("{}: resuming from the checkpoint at step {}", ctx.stage(), simulation->stepCount());
   } else {
-    simulation.emplace(setup.engine,
-                       p.contains("lammps_data") ? readLammpsParticles(p, setup) : insertSpecies(ctx, setup));
+    const bool fromFile = p.contains("lammps_data") || p.contains("initial_frame");
+    simulation.emplace(setup.engine, p.contains("lammps_data")     ? readLammpsParticles(p, setup)
+                                     : p.contains("initial_frame") ? readFrameParticles(p, setup)
+                                                                   : insertSpecies(ctx, setup));
+    if (fromFile) {
+      // A state from a file may overlap: refuse it before the first step rather than let the
+      // springs explode.
+      const auto worst = simulation->largestOverlap();
+      if (worst.relative > p.at("max_initial_overlap").get<double>()) {
+        throw Error("/stages/" + ctx.stage() + "/params/" +
+                    (p.contains("lammps_data") ? "lammps_data" : "initial_frame") + ": particles " +
+                    std::to_string(worst.i) + " and " + std::to_string(worst.j) + " overlap by " +
+                    std::to_string(worst.relative) + " of the smaller diameter, above max_initial_overlap = " +
+                    std::to_string(p.at("max_initial_overlap").get<double>()));
+      }
+    }
     if (p.contains("preparation")) prepare(ctx, setup, *simulation);
     series << csvHeader(setup);
   }

@@ -1,0 +1,79 @@
+// The TF-DEM coupling force a_p + B_p (u_p - v_p) (issue 4) is evaluated every DEM step with
+// the particle's current velocity: a sphere settling under gravity in a linear (Stokes-like)
+// drag relaxes exponentially with time constant m/B to the terminal velocity u + m g / B
+// (STYLE.md 9: terminal velocity under drag). And planar mode keeps a 2-D bed in its plane.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/engines/dem/DemTestSupport.hpp"
+
+using namespace grainbridge;
+using namespace grainbridge::dem;
+using namespace grainbridge::dem::testing;
+
+namespace {
+// Largest deviation from the exact exponential relaxation over 10 relaxation times, relative to
+// the terminal speed, and the final deviation from the terminal velocity.
+std::pair<double, double> relax(double dt) {
+  SimulationSetup s = openBox(table61Particle());
+  s.gravity = Vec3(0, 0, -9.81);
+  s.dt = dt;
+  Particles p;
+  const double m = 2e-3;
+  p.addOwned(0, 0, 0.5, m, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), false);
+  const double beta = 0.05;       // B_p [kg/s]: relaxation time m/B = 0.04 s
+  const Vec3 gas(0.3, 0.0, 0.1);  // u_p
+  p.couplingB[0] = beta;
+  p.couplingU[0] = gas;
+  p.couplingA[0] = Vec3(0.0, 1e-3, 0.0);  // a_p, e.g. a pressure-gradient force
+  Simulation sim(s, std::move(p));
+  const double tau = m / beta;
+  const Vec3 terminal = gas + (m * s.gravity + Vec3(0.0, 1e-3, 0.0)) / beta;
+  double worst = 0.0;
+  const auto steps = static_cast<int>(std::lround(10.0 * tau / dt));
+  for (int k = 1; k <= steps; ++k) {
+    sim.step();
+    const Vec3 exact = terminal * (1.0 - std::exp(-sim.time() / tau));  // v(0) = 0
+    worst = std::max(worst, (sim.particles().v[0] - exact).norm() / terminal.norm());
+  }
+  return {worst, (sim.particles().v[0] - terminal).norm() / terminal.norm()};
+}
+}  // namespace
+
+TEST(Coupling, LinearDragRelaxesToTerminalVelocity) {
+  const auto [coarse, coarseFinal] = relax(1e-4);  // dt = tau/400
+  const auto [fine, fineFinal] = relax(5e-5);
+  // The drag uses the velocity at the middle of the step (velocity Verlet), so the transient
+  // converges at first order in dt/tau: halving dt halves the error. The terminal velocity
+  // u + (m g + a) / B is reached exactly.
+  EXPECT_LT(coarse, 1e-3);
+  EXPECT_NEAR(coarse / fine, 2.0, 0.2);
+  EXPECT_LT(coarseFinal, 1e-4);
+  EXPECT_LT(fineFinal, 1e-4);
+}
+
+TEST(Planar, BedStaysInItsPlaneAndSpinsAboutItsNormal) {
+  SimulationSetup s = openBox(table61Particle());
+  s.gravity = Vec3(0, 0, -1);
+  s.planarAxis = 1;  // motion in x-z
+  s.walls.push_back(floorWall(table61Wall()));
+  Particles p;
+  for (int i = 0; i < 20; ++i) {
+    p.addOwned(i, 0, 0.5, 1.0, Vec3(1.05 * i - 10.0, 0.0, 0.6 + 0.3 * (i % 3)), Vec3(0.2 * (i % 5) - 0.4, 0.7, 0.0),
+               Vec3(0.3, 0.2, 0.1), false);
+  }
+  Simulation sim(s, std::move(p));
+  std::size_t contacts = 0;
+  for (int k = 0; k < 20000; ++k) {
+    sim.step();
+    contacts = std::max(contacts, sim.contactCount());
+  }
+  for (std::size_t i = 0; i < sim.particles().nOwned; ++i) {
+    EXPECT_EQ(sim.particles().x[i][1], 0.0);
+    EXPECT_EQ(sim.particles().v[i][1], 0.0);
+    EXPECT_EQ(sim.particles().omega[i][0], 0.0);
+    EXPECT_EQ(sim.particles().omega[i][2], 0.0);
+  }
+  EXPECT_GT(contacts, 0u);  // the layer did interact
+}

@@ -1,0 +1,101 @@
+// The dem stage's inputs as a user gives them: a start from a saved frame, refusal of an
+// overlapping initial state, per-pair contact coefficients (Eqs. 6.9-6.10 per pair).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/data/ParticleFrame.hpp"
+#include "core/io/ParticleFrameReader.hpp"
+#include "core/io/ParticleFrameWriter.hpp"
+#include "tests/support/Cli.hpp"
+
+namespace fs = std::filesystem;
+using namespace grainbridge;
+using namespace grainbridge::testing;
+using nlohmann::json;
+
+namespace {
+
+json bed() {
+  return json::parse(R"({
+    "name": "wf",
+    "units": {"system": "reduced", "d0": "1 mm", "m0": "1e-6 kg", "g": "9.81 m/s2"},
+    "stages": {"bed": {"type": "dem", "params": {
+      "box_lo": [0, 0, 0], "box_hi": [6, 6, 10], "periodic": "xy", "gravity": [0, 0, -1],
+      "dt": 2e-4, "duration": 0.2, "frames": 1, "series_points": 2, "progress": false,
+      "species": [{"name": "small", "diameter": 1, "density": 1.91, "count": 30},
+                  {"name": "large", "diameter": 2, "density": 1.91, "count": 2}],
+      "contact": {"kn": 2e5, "gamma_n": 40, "mu": 0.5},
+      "walls": [{"kind": "plane", "point": [0, 0, 0], "direction": [0, 0, 1], "kn": 2e5, "gamma_n": 40}]}}}
+  })");
+}
+
+fs::path lastFrame(const fs::path& work) {
+  fs::path last;
+  for (const auto& e : fs::recursive_directory_iterator(work / "results/wf/bed")) {
+    if (e.path().extension() == ".h5" && e.path().string() > last.string()) last = e.path();
+  }
+  return last;
+}
+
+}  // namespace
+
+TEST(DemStage, StartsFromASavedFrame) {
+  TempDir work;
+  writeText(work.path() / "wf.json", bed().dump());
+  ASSERT_EQ(runGrainbridge(work.path(), "run wf.json").exitCode, 0);
+  const fs::path frame = lastFrame(work.path());
+  ASSERT_FALSE(frame.empty());
+  fs::copy_file(frame, work.path() / "start.h5");
+  json next = bed();
+  next["stages"]["bed"]["params"]["initial_frame"] = "start.h5";
+  next["stages"]["bed"]["params"]["species"][0]["count"] = 0;
+  next["stages"]["bed"]["params"]["species"][1]["count"] = 0;
+  writeText(work.path() / "wf.json", next.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto first = core::io::readParticleFrame(work.path() / "start.h5");
+  const auto continued = core::io::readParticleFrame(lastFrame(work.path()));
+  EXPECT_EQ(continued.size(), first.size());
+  EXPECT_EQ(continued.id, first.id);
+}
+
+TEST(DemStage, RefusesAnOverlappingInitialStateNamingThePair) {
+  TempDir work;
+  core::data::ParticleFrame f;
+  f.units = "SI";
+  f.domain.lo = Vec3::Zero();
+  f.domain.hi = Vec3(0.006, 0.006, 0.01);
+  for (int i = 0; i < 2; ++i) {
+    f.id.push_back(10 + i);
+    f.species.push_back(0);
+    f.radius.push_back(0.0005);
+    f.mass.push_back(1e-6);
+    f.position.emplace_back(0.003 + 0.0008 * i, 0.003, 0.002);  // 20 % of a diameter overlap
+    f.velocity.emplace_back(Vec3::Zero());
+    f.angularVelocity.emplace_back(Vec3::Zero());
+  }
+  core::io::ParticleFrameWriter writer(work.path() / "made", core::io::ArtifactStamp{"test"});
+  const fs::path file = writer.write(f);
+  json cfg = bed();
+  cfg["stages"]["bed"]["params"]["initial_frame"] = file.string();
+  cfg["stages"]["bed"]["params"]["species"][0]["count"] = 0;
+  cfg["stages"]["bed"]["params"]["species"][1]["count"] = 0;
+  writeText(work.path() / "wf.json", cfg.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("/stages/bed/params/initial_frame: particles 10 and 11 overlap by 0.2"), std::string::npos)
+      << r.output;
+}
+
+TEST(DemStage, PairContactsOverrideOnePair) {
+  TempDir work;
+  json cfg = bed();
+  cfg["stages"]["bed"]["params"]["pair_contacts"] =
+      json::parse(R"([{"species": "large", "with": "small", "kn": 2e5, "restitution": 0.5, "mu": 0.3}])");
+  writeText(work.path() / "wf.json", cfg.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("pair small-large: e_n = 0.5000"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("pair small-small: e_n = 0.9054"), std::string::npos) << r.output;
+}
