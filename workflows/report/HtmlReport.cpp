@@ -9,6 +9,7 @@
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/Log.hpp"
+#include "core/io/XdmfText.hpp"
 
 namespace grainbridge::workflows::report {
 
@@ -17,28 +18,8 @@ using nlohmann::json;
 
 namespace {
 
-std::string escapeHtml(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+// The page's text goes through the same escaping as the XDMF sidecars.
+std::string escapeHtml(const std::string& s) { return core::io::xmlEscape(s); }
 
 std::string csvField(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
