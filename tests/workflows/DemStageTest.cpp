@@ -99,3 +99,23 @@ TEST(DemStage, PairContactsOverrideOnePair) {
   EXPECT_NE(r.output.find("pair small-large: e_n = 0.5000"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("pair small-small: e_n = 0.9054"), std::string::npos) << r.output;
 }
+
+TEST(DemStage, AParticleLeavingTheDomainStopsTheRunNamingStepAndParticle) {
+  // No floor: the bed falls out of the bottom of the (non-periodic in z) box.
+  TempDir work;
+  json cfg = bed();
+  cfg["stages"]["bed"]["params"].erase("walls");
+  cfg["stages"]["bed"]["params"]["duration"] = 20.0;
+  writeText(work.path() / "wf.json", cfg.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("left the domain at step"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("DEM: particle "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("are kept in"), std::string::npos) << r.output;
+  // The state at the failing step was written beside the periodic frames.
+  int frames = 0;
+  for (const auto& e : fs::recursive_directory_iterator(work.path() / "results/wf/bed")) {
+    if (e.path().extension() == ".h5") ++frames;
+  }
+  EXPECT_GE(frames, 2);
+}

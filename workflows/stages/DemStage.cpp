@@ -598,7 +598,19 @@ void DemStage::run(StageContext& ctx) const {
   for (std::int64_t s = firstStep; s <= totalSteps; ++s) {
     const bool frameStep = isMultiple(s, frames);
     const bool seriesStep = isMultiple(s, seriesPoints) || s == totalSteps;
-    sim.step(frameStep || seriesStep);
+    try {
+      sim.step(frameStep || seriesStep);
+    } catch (const Error& e) {
+      // A particle left the domain or went non-finite: keep the last good state on disk next to
+      // the periodic frames (for a non-finite state, the last periodic frame is the good one).
+      bool finite = true;
+      for (std::size_t i = 0; i < sim.particles().nOwned && finite; ++i) {
+        finite = sim.particles().x[i].allFinite() && sim.particles().v[i].allFinite();
+      }
+      if (finite) writer.write(sim.frame());
+      throw Error(std::string(e.what()) + "; frames up to step " + std::to_string(finite ? sim.stepCount() : s - 1) +
+                  " are kept in " + ctx.outputDir().string());
+    }
     if (frameStep || seriesStep) {
       const auto f = sim.frame();
       if (seriesStep) writeSeriesRow(f);
