@@ -1,0 +1,177 @@
+#include "workflows/stages/DemInitialState.hpp"
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/io/LammpsDataReader.hpp"
+#include "core/io/ParticleFrameReader.hpp"
+#include "engines/dem/Insertion.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using nlohmann::json;
+
+// Every species at random, without overlap, in the insertion region (inside a cylinder wall
+// if there is one).
+dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
+  const json& p = ctx.params();
+  dem::InsertionRequest request;
+  request.lo =
+      p.contains("insert_lo") ? Vec3(p["insert_lo"][0], p["insert_lo"][1], p["insert_lo"][2]) : setup.engine.lo;
+  request.hi =
+      p.contains("insert_hi") ? Vec3(p["insert_hi"][0], p["insert_hi"][1], p["insert_hi"][2]) : setup.engine.hi;
+  request.periodic = setup.engine.periodic;
+  for (const auto& w : setup.engine.walls) {
+    if (w.kind == dem::Wall::Kind::Cylinder) {
+      request.insideCylinder = true;
+      request.cylinderCentre = w.origin;
+      request.cylinderRadius = w.radius;
+    }
+  }
+  auto speciesIndex = [&](const std::string& name) {
+    for (std::size_t s = 0; s < setup.species.size(); ++s) {
+      if (setup.species[s].name == name) return static_cast<int>(s);
+    }
+    throw Error("no species named " + name);  // checked at load
+  };
+  // Placed particles come first (ids 0..), then the rest of each species at random.
+  std::vector<int> placedSpecies;
+  std::vector<std::int64_t> remaining;
+  for (const auto& s : setup.species) remaining.push_back(s.count);
+  if (p.contains("place")) {
+    for (const auto& pl : p["place"]) {
+      const int s = speciesIndex(pl.at("species"));
+      placedSpecies.push_back(s);
+      --remaining[static_cast<std::size_t>(s)];
+      request.fixedCentres.emplace_back(pl["position"][0], pl["position"][1], pl["position"][2]);
+      request.fixedRadii.push_back(setup.species[static_cast<std::size_t>(s)].radius);
+    }
+  }
+  std::vector<int> speciesOf;
+  for (std::size_t s = 0; s < setup.species.size(); ++s) {
+    for (std::int64_t k = 0; k < remaining[s]; ++k) {
+      request.radii.push_back(setup.species[s].radius);
+      speciesOf.push_back(static_cast<int>(s));
+    }
+  }
+  request.progress = [&](std::size_t) {
+    if (ctx.stopRequested()) throw StageInterrupted{};
+  };
+  std::mt19937_64 rng(p.at("seed").get<std::uint64_t>());
+  const auto centres = dem::insertRandomly(request, rng);
+  dem::Particles particles;
+  std::int64_t id = 0;
+  for (std::size_t k = 0; k < placedSpecies.size(); ++k) {
+    const auto& sp = setup.species[static_cast<std::size_t>(placedSpecies[k])];
+    particles.addOwned(id++, placedSpecies[k], sp.radius, sp.mass, request.fixedCentres[k], Vec3::Zero(), Vec3::Zero(),
+                       sp.frozen);
+  }
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const auto& sp = setup.species[static_cast<std::size_t>(speciesOf[i])];
+    // Under Lees-Edwards shear the particles start on the streaming profile.
+    const double ux = setup.engine.shearRate == 0.0
+                          ? 0.0
+                          : setup.engine.shearRate * (centres[i][1] - 0.5 * (setup.engine.lo[1] + setup.engine.hi[1]));
+    particles.addOwned(id++, speciesOf[i], sp.radius, sp.mass, centres[i], Vec3(sp.frozen ? 0.0 : ux, 0, 0),
+                       Vec3::Zero(), sp.frozen);
+  }
+  return particles;
+}
+
+// Particles from a LAMMPS data file (atom_style sphere): per-atom diameter, density, velocity
+// and angular velocity as written, each type mapped to a species (and frozen if asked).
+dem::Particles readLammpsParticles(const json& p, const DemSetup& setup) {
+  const std::string path = p.at("lammps_data").at("path");
+  const auto data = core::io::readLammpsData(path);
+  std::map<int, std::pair<int, bool>> typeMap;
+  for (const auto& t : p.at("lammps_types")) {
+    int species = -1;
+    for (std::size_t s = 0; s < setup.species.size(); ++s) {
+      if (setup.species[s].name == t.at("species")) species = static_cast<int>(s);
+    }
+    typeMap[t.at("type").get<int>()] = {species, t.at("frozen").get<bool>()};
+  }
+  dem::Particles particles;
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const auto it = typeMap.find(data.type[i]);
+    if (it == typeMap.end()) {
+      throw Error("LAMMPS data file '" + path + "': atom " + std::to_string(data.id[i]) + " has type " +
+                  std::to_string(data.type[i]) + ", which lammps_types does not map to a species");
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (data.position[i][a] < setup.engine.lo[a] || data.position[i][a] > setup.engine.hi[a]) {
+        throw Error("LAMMPS data file '" + path + "': atom " + std::to_string(data.id[i]) +
+                    " lies outside box_lo/box_hi of the config");
+      }
+    }
+    particles.addOwned(data.id[i], it->second.first, 0.5 * data.diameter[i], data.mass(i), data.position[i],
+                       data.velocity[i], data.angularVelocity[i], it->second.second);
+  }
+  return particles;
+}
+
+// Particles from a saved frame of the data model; the frame's species index selects the
+// species (and so whether it is frozen).
+dem::Particles readFrameParticles(const json& p, const DemSetup& setup) {
+  const std::string path = p.at("initial_frame").at("path");
+  const auto frame = core::io::readParticleFrame(path);
+  dem::Particles particles;
+  for (std::size_t i = 0; i < frame.size(); ++i) {
+    const auto s = frame.species[i];
+    if (s < 0 || static_cast<std::size_t>(s) >= setup.species.size()) {
+      throw Error("initial frame '" + path + "': particle " + std::to_string(frame.id[i]) + " has species index " +
+                  std::to_string(s) + ", but the config declares " + std::to_string(setup.species.size()) + " species");
+    }
+    particles.addOwned(frame.id[i], s, frame.radius[i], frame.mass[i], frame.position[i], frame.velocity[i],
+                       frame.angularVelocity[i], setup.species[static_cast<std::size_t>(s)].frozen);
+  }
+  return particles;
+}
+
+// Section 6.2's two-step preparation: the held species fixed, the whole container shaken at
+// high frequency until the bed reaches its equilibrium height, then left to relax; then the
+// held particles are released and the run's clock starts. Not checkpointed: a stop during
+// preparation restarts it.
+void prepare(StageContext& ctx, const DemSetup& setup, dem::Simulation& sim) {
+  const json& prep = ctx.params().at("preparation");
+  const std::string hold = prep.at("hold_species");
+  std::vector<std::int64_t> held;
+  const auto& particles = sim.particles();
+  for (std::size_t i = 0; i < particles.nOwned; ++i) {
+    if (!hold.empty() && setup.species[static_cast<std::size_t>(particles.species[i])].name == hold) {
+      held.push_back(particles.id[i]);
+    }
+  }
+  for (auto id : held) sim.setFrozen(id, true);
+  const double dt = setup.engine.dt;
+  auto runFor = [&](std::int64_t steps, const char* what) {
+    for (std::int64_t s = 1; s <= steps; ++s) {
+      sim.step(false);
+      if ((s & 255) == 0 && ctx.stopRequested()) throw StageInterrupted{};
+    }
+    spdlog::info("{}: preparation: {} for {} steps, kinetic energy now {:.4g} J", ctx.stage(), what, steps,
+                 sim.energies().kinetic());
+  };
+  dem::Vibration shake;
+  shake.direction = Vec3::UnitZ();
+  shake.amplitude = prep.at("shake_amplitude");
+  shake.frequency = prep.at("shake_frequency");
+  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, shake);
+  // Whole periods, so the walls are back at rest position when the shaking stops.
+  const double periods =
+      shake.frequency > 0 ? std::ceil(prep.at("shake_duration").get<double>() * shake.frequency) : 0.0;
+  const auto shakeSteps = shake.frequency > 0
+                              ? static_cast<std::int64_t>(std::llround(periods / shake.frequency / dt))
+                              : static_cast<std::int64_t>(std::ceil(prep.at("shake_duration").get<double>() / dt));
+  runFor(shakeSteps, "shaking");
+  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, dem::Vibration{});
+  runFor(static_cast<std::int64_t>(std::ceil(prep.at("relax_duration").get<double>() / dt)), "relaxing");
+  for (auto id : held) sim.setFrozen(id, false);
+  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, setup.engine.walls[w].vibration);
+  sim.restartClock();
+}
+
+}  // namespace grainbridge::workflows::stages
