@@ -13,10 +13,7 @@ namespace grainbridge::core::io {
 
 FieldFrameWriter::FieldFrameWriter(std::filesystem::path directory, ArtifactStamp stamp, int deflateLevel)
     : directory_(std::move(directory)), stamp_(std::move(stamp)), deflateLevel_(deflateLevel) {
-  std::error_code ec;
-  std::filesystem::create_directories(directory_ / "frames", ec);
-  if (ec) throw Error("cannot create output folder '" + (directory_ / "frames").string() + "': " + ec.message());
-  removeStaleFrameTemporaries(directory_, "fields");
+  prepareFrameFolder(directory_, "fields");
   for (const auto& path : listFieldFrames(directory_)) {
     try {
       FieldFrameSummary s = readFieldFrameSummary(path);
@@ -32,15 +29,7 @@ std::filesystem::path FieldFrameWriter::write(const data::FieldFrame& frame) {
   frame.validate();
   if (frame.step < 0) throw Error("field frame step " + std::to_string(frame.step) + " is negative");
   const std::filesystem::path path = directory_ / "frames" / frameFileName("fields", frame.step);
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  try {
-    writeFile(temporary, frame);
-    publishFile(temporary, path);
-  } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove(temporary, ec);
-    throw;
-  }
+  writeFrameFile(path, [&](const std::filesystem::path& temporary) { writeFile(temporary, frame); });
   FieldFrameSummary s{path, frame.step, frame.time, frame.grid, {}};
   for (const auto& phase : frame.solids) s.solidsPhases.push_back(phase.name);
   frames_[frame.step] = std::move(s);

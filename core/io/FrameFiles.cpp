@@ -81,4 +81,11 @@ void publishFile(const std::filesystem::path& temporary, const std::filesystem::
   syncDirectory(destination.parent_path());
 }
 
+void prepareFrameFolder(const std::filesystem::path& directory, std::string_view prefix) {
+  std::error_code ec;
+  std::filesystem::create_directories(directory / "frames", ec);
+  if (ec) throw Error("cannot create output folder '" + (directory / "frames").string() + "': " + ec.message());
+  removeStaleFrameTemporaries(directory, prefix);
+}
+
 }  // namespace grainbridge::core::io

@@ -24,4 +24,22 @@ void removeStaleFrameTemporaries(const std::filesystem::path& directory, std::st
 // crash the destination holds either its old or its new content.
 void publishFile(const std::filesystem::path& temporary, const std::filesystem::path& destination);
 
+// Creates `<directory>/frames` and removes temporaries a killed writer left there.
+void prepareFrameFolder(const std::filesystem::path& directory, std::string_view prefix);
+
+// Writes `destination` through `write(temporary)` and publishes it; a failure removes the
+// temporary and leaves frames already written untouched.
+template <class WriteFn>
+void writeFrameFile(const std::filesystem::path& destination, WriteFn&& write) {
+  const std::filesystem::path temporary = destination.string() + ".tmp";
+  try {
+    write(temporary);
+    publishFile(temporary, destination);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(temporary, ec);
+    throw;
+  }
+}
+
 }  // namespace grainbridge::core::io

@@ -14,10 +14,7 @@ namespace grainbridge::core::io {
 
 ParticleFrameWriter::ParticleFrameWriter(std::filesystem::path directory, ArtifactStamp stamp, int deflateLevel)
     : directory_(std::move(directory)), stamp_(std::move(stamp)), deflateLevel_(deflateLevel) {
-  std::error_code ec;
-  std::filesystem::create_directories(directory_ / "frames", ec);
-  if (ec) throw Error("cannot create output folder '" + (directory_ / "frames").string() + "': " + ec.message());
-  removeStaleFrameTemporaries(directory_, "particles");
+  prepareFrameFolder(directory_, "particles");
   for (const auto& path : listParticleFrames(directory_)) {
     try {
       ParticleFrameSummary s = readParticleFrameSummary(path);
@@ -35,15 +32,7 @@ std::filesystem::path ParticleFrameWriter::write(const data::ParticleFrame& fram
   frame.validate();
   if (frame.step < 0) throw Error("particle frame step " + std::to_string(frame.step) + " is negative");
   const std::filesystem::path path = directory_ / "frames" / frameFileName("particles", frame.step);
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  try {
-    writeFile(temporary, frame);
-    publishFile(temporary, path);
-  } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove(temporary, ec);
-    throw;
-  }
+  writeFrameFile(path, [&](const std::filesystem::path& temporary) { writeFile(temporary, frame); });
   frames_[frame.step] = ParticleFrameSummary{
       path, frame.step, frame.time, frame.size(), frame.contacts.size(), !frame.externalForce.empty()};
   writeXdmf();

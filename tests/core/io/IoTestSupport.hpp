@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the core/io tests: frames with every field filled by distinct, non-round
-// values (so a round trip that swapped, dropped or truncated any array would show), a
-// self-removing temp folder, and an error-message matcher.
+// values (so a round trip that swapped, dropped or truncated any array would show) and an
+// error-message matcher.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -15,27 +15,11 @@
 #include "core/Error.hpp"
 #include "core/data/FieldFrame.hpp"
 #include "core/data/ParticleFrame.hpp"
+#include "tests/support/Cli.hpp"
 
 namespace grainbridge::iotest {
 
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "grainbridge-io-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) std::abort();
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+using grainbridge::testing::TempDir;  // tests/support/Cli.hpp
 
 // Runs `f`, expecting a grainbridge::Error whose message contains every one of `parts`.
 template <class F>
