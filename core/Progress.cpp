@@ -19,18 +19,19 @@ std::string formatDuration(double seconds) {
 }
 }  // namespace
 
-Progress::Progress(std::string label, double total, std::string unit, double logIntervalSeconds)
+Progress::Progress(std::string label, double total, std::string unit, double logIntervalSeconds, double alreadyDone)
     : label_(std::move(label)),
       total_(total),
       unit_(std::move(unit)),
       logInterval_(logIntervalSeconds),
+      startDone_(alreadyDone),
       terminal_(::isatty(STDERR_FILENO) != 0 && spdlog::get_level() <= spdlog::level::info),
       start_(std::chrono::steady_clock::now()),
       lastShown_(start_) {}
 
 std::string Progress::line(double done, double elapsed) const {
   const double fraction = total_ > 0 ? done / total_ : 0.0;
-  const double rate = elapsed > 0 ? done / elapsed : 0.0;
+  const double rate = elapsed > 0 ? (done - startDone_) / elapsed : 0.0;
   const double eta = rate > 0 ? (total_ - done) / rate : NAN;
   char buf[256];
   std::snprintf(buf, sizeof buf, "%s: %5.1f%%  %.3g %s/s  elapsed %s  ETA %s", label_.c_str(), 100.0 * fraction, rate,

@@ -9,8 +9,10 @@ namespace grainbridge::core {
 
 class Progress {
  public:
-  // `unit` names what is counted ("steps", "frames").
-  Progress(std::string label, double total, std::string unit, double logIntervalSeconds = 10.0);
+  // `unit` names what is counted ("steps", "frames"). `alreadyDone` is where a resumed run
+  // starts: the rate and ETA count only the work done since, not the checkpointed part.
+  Progress(std::string label, double total, std::string unit, double logIntervalSeconds = 10.0,
+           double alreadyDone = 0.0);
   void update(double done);
   void finish();
 
@@ -21,6 +23,7 @@ class Progress {
   double total_;
   std::string unit_;
   double logInterval_;
+  double startDone_;
   bool terminal_;
   bool finished_ = false;
   std::chrono::steady_clock::time_point start_;

@@ -88,4 +88,48 @@ TEST_F(DemResume, AfterSigkillTheRunResumesFromTheLastPeriodicCheckpoint) {
   EXPECT_EQ(database.integrityCheck(), "ok");
 }
 
+// Section 6.2's preparation (hold, shake, relax) is a long phase of its own in the Brazil-nut
+// runs: a crash during it resumes from the preparation checkpoint, not from scratch, and the
+// result is again bit for bit that of an uninterrupted run.
+const char* kPreparedWorkflow = R"({
+  "name": "wf",
+  "units": {"system": "reduced", "d0": "1 mm", "m0": "1e-6 kg", "g": "9.81 m/s2"},
+  "stages": {
+    "bed": {"type": "dem", "params": {
+      "box_lo": [-5, -5, -1], "box_hi": [5, 5, 30], "gravity": [0, 0, -1],
+      "dt": 2e-4, "duration": 1, "frames": 2, "series_points": 20, "progress": false,
+      "checkpoint_interval": "1e-9 s",
+      "species": [{"name": "small", "diameter": 1, "density": 1.91, "count": 300},
+                  {"name": "large", "diameter": 3, "density": 1.91, "count": 1}],
+      "place": [{"species": "large", "position": [0, 0, 1.5]}],
+      "insert_lo": [-4, -4, 0], "insert_hi": [4, 4, 12],
+      "preparation": {"hold_species": "large", "shake_amplitude": 0.1, "shake_frequency": 2,
+                      "shake_duration": 1, "relax_duration": 1},
+      "contact": {"kn": 2e5, "gamma_n": 40, "mu": 0.5},
+      "walls": [{"kind": "plane", "point": [0, 0, 0], "direction": [0, 0, 1],
+                 "kn": 2e5, "gamma_n": 40, "gamma_t": 20, "mu": 0.5},
+                {"kind": "cylinder", "point": [0, 0, 0], "direction": [0, 0, 1], "radius": 4.5,
+                 "kn": 2e5, "gamma_n": 40, "gamma_t": 20, "mu": 0.5}]}}
+  }
+})";
+
+TEST(DemPreparationResume, ACrashDuringThePreparationResumesFromItsCheckpointBitForBit) {
+  TempDir reference;
+  TempDir work;
+  writeText(reference.path() / "wf.json", kPreparedWorkflow);
+  writeText(work.path() / "wf.json", kPreparedWorkflow);
+  auto r = runGrainbridge(reference.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+
+  // The third preparation checkpoint (step 768, inside the 5000 shaking steps) is followed by
+  // a SIGKILL.
+  auto crashed = runGrainbridge(work.path(), "run wf.json", "GRAINBRIDGE_FAILPOINT=dem.preparation_checkpoint:3");
+  ASSERT_NE(crashed.exitCode, 0) << crashed.output;
+  auto resumed = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resuming the preparation from its checkpoint at step 768"), std::string::npos)
+      << resumed.output;
+  EXPECT_EQ(artifactDigests(work.path()), artifactDigests(reference.path()));
+}
+
 }  // namespace

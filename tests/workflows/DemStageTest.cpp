@@ -2,6 +2,9 @@
 // overlapping initial state, per-pair contact coefficients (Eqs. 6.9-6.10 per pair).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <sstream>
+
 #include <nlohmann/json.hpp>
 
 #include "core/data/ParticleFrame.hpp"
@@ -118,4 +121,42 @@ TEST(DemStage, AParticleLeavingTheDomainStopsTheRunNamingStepAndParticle) {
     if (e.path().extension() == ".h5") ++frames;
   }
   EXPECT_GE(frames, 2);
+}
+
+TEST(DemStage, SeriesRecordsTheHeightOfTrackedParticles) {
+  TempDir work;
+  json config = bed();
+  config["stages"]["bed"]["params"]["species"][1]["count"] = 1;
+  config["stages"]["bed"]["params"]["track_ids"] = json::array({30});  // the one large particle
+  config["stages"]["bed"]["params"]["series_points"] = 5;
+  writeText(work.path() / "wf.json", config.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  fs::path seriesFile;
+  for (const auto& e : fs::recursive_directory_iterator(work.path() / "results/wf/bed")) {
+    if (e.path().filename() == "series.csv") seriesFile = e.path();
+  }
+  ASSERT_FALSE(seriesFile.empty());
+  std::istringstream lines(readText(seriesFile));
+  std::string header;
+  std::getline(lines, header);
+  auto columns = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::istringstream in(line);
+    for (std::string c; std::getline(in, c, ',');) out.push_back(c);
+    return out;
+  };
+  const auto names = columns(header);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  ASSERT_LT(column("z_id30"), names.size()) << header;
+  ASSERT_LT(column("com_z_large"), names.size()) << header;
+  int rows = 0;
+  for (std::string line; std::getline(lines, line); ++rows) {
+    const auto values = columns(line);
+    // The large species is that one particle, so its centre of mass is its height.
+    EXPECT_NEAR(std::stod(values[column("z_id30")]), std::stod(values[column("com_z_large")]), 1e-12);
+  }
+  EXPECT_EQ(rows, 5);
 }

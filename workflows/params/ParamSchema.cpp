@@ -197,7 +197,7 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
       return out;
     }
     case ParamKind::QuantityList: {
-      if (!value.is_array() || static_cast<int>(value.size()) != spec.listLength()) {
+      if (!value.is_array() || (spec.listLength() > 0 && static_cast<int>(value.size()) != spec.listLength())) {
         diagnostics.add(pointer, "expected a " + spec.typeDescription() + ", found " + found(value));
         return std::nullopt;
       }

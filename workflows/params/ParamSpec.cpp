@@ -88,7 +88,7 @@ std::string ParamSpec::typeDescription() const {
     case ParamKind::ObjectList:
       return "list of objects";
     case ParamKind::QuantityList:
-      return "list of " + std::to_string(listLength_) +
+      return "list of " + (listLength_ > 0 ? std::to_string(listLength_) : std::string("any number of")) +
              (dim_.isNone() ? " numbers" : " quantities [" + dim_.siUnit() + "]");
   }
   return "?";

@@ -29,7 +29,8 @@ class ParamSpec {
   static ParamSpec integer(std::string name);
   static ParamSpec boolean(std::string name);
   static ParamSpec string(std::string name);
-  // A fixed-length list of quantities, e.g. gravity [0, 0, "-9.81 m/s2"].
+  // A fixed-length list of quantities, e.g. gravity [0, 0, "-9.81 m/s2"]; length 0 accepts any
+  // length.
   static ParamSpec quantityList(std::string name, core::units::Dimension dim, int length);
   // A nested object, or a non-empty list of objects, each validated by `schema` (species,
   // walls, per-pair materials): errors name the element, e.g. /stages/bed/params/walls/2/mu.

@@ -135,7 +135,8 @@ dem::Particles readFrameParticles(const json& p, const DemSetup& setup) {
 // high frequency until the bed reaches its equilibrium height, then left to relax; then the
 // held particles are released and the run's clock starts. Not checkpointed: a stop during
 // preparation restarts it.
-void prepare(StageContext& ctx, const DemSetup& setup, dem::Simulation& sim) {
+void prepare(StageContext& ctx, const DemSetup& setup, dem::Simulation& sim,
+             const PreparationCheckpoints& checkpoints) {
   const json& prep = ctx.params().at("preparation");
   const std::string hold = prep.at("hold_species");
   std::vector<std::int64_t> held;
@@ -145,30 +146,53 @@ void prepare(StageContext& ctx, const DemSetup& setup, dem::Simulation& sim) {
       held.push_back(particles.id[i]);
     }
   }
-  for (auto id : held) sim.setFrozen(id, true);
+  // The engine's step counter runs through both phases, so a state restored from a
+  // preparation checkpoint says where to continue; the held particles' infinite mass is part
+  // of that state already.
+  const std::int64_t resumedAt = sim.stepCount();
+  if (resumedAt == 0) {
+    for (auto id : held) sim.setFrozen(id, true);
+  } else {
+    spdlog::info("{}: resuming the preparation from its checkpoint at step {}", ctx.stage(), resumedAt);
+  }
   const double dt = setup.engine.dt;
-  auto runFor = [&](std::int64_t steps, const char* what) {
-    for (std::int64_t s = 1; s <= steps; ++s) {
+  auto lastCheckpoint = std::chrono::steady_clock::now();
+  // Runs the engine up to step `end` of the preparation.
+  auto runUntil = [&](std::int64_t end, const char* what) {
+    for (std::int64_t s = sim.stepCount() + 1; s <= end; ++s) {
       sim.step(false);
-      if ((s & 255) == 0 && ctx.stopRequested()) throw StageInterrupted{};
+      if ((s & 255) != 0) continue;
+      if (ctx.stopRequested()) {
+        checkpoints.save();
+        spdlog::warn("{}: stopped during the preparation at step {}; checkpoint written, the next run resumes here",
+                     ctx.stage(), s);
+        throw StageInterrupted{};
+      }
+      if (std::chrono::steady_clock::now() - lastCheckpoint > checkpoints.every) {
+        checkpoints.save();
+        lastCheckpoint = std::chrono::steady_clock::now();
+      }
     }
-    spdlog::info("{}: preparation: {} for {} steps, kinetic energy now {:.4g} J", ctx.stage(), what, steps,
+    spdlog::info("{}: preparation: {} until step {}, kinetic energy now {:.4g} J", ctx.stage(), what, end,
                  sim.energies().kinetic());
   };
   dem::Vibration shake;
   shake.direction = Vec3::UnitZ();
   shake.amplitude = prep.at("shake_amplitude");
   shake.frequency = prep.at("shake_frequency");
-  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, shake);
   // Whole periods, so the walls are back at rest position when the shaking stops.
   const double periods =
       shake.frequency > 0 ? std::ceil(prep.at("shake_duration").get<double>() * shake.frequency) : 0.0;
   const auto shakeSteps = shake.frequency > 0
                               ? static_cast<std::int64_t>(std::llround(periods / shake.frequency / dt))
                               : static_cast<std::int64_t>(std::ceil(prep.at("shake_duration").get<double>() / dt));
-  runFor(shakeSteps, "shaking");
+  const auto relaxSteps = static_cast<std::int64_t>(std::ceil(prep.at("relax_duration").get<double>() / dt));
+  if (sim.stepCount() < shakeSteps) {
+    for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, shake);
+    runUntil(shakeSteps, "shaking");
+  }
   for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, dem::Vibration{});
-  runFor(static_cast<std::int64_t>(std::ceil(prep.at("relax_duration").get<double>() / dt)), "relaxing");
+  runUntil(shakeSteps + relaxSteps, "relaxing");
   for (auto id : held) sim.setFrozen(id, false);
   for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, setup.engine.walls[w].vibration);
   sim.restartClock();

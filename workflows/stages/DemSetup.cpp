@@ -43,6 +43,7 @@ DemSetup makeDemSetup(const json& p) {
   for (int a = 0; a < 3; ++a) e.periodic[static_cast<std::size_t>(a)] = periodic.find("xyz"[a]) != std::string::npos;
   e.gravity = vec(p.at("gravity"));
   e.backgroundDamping = p.at("background_damping");
+  for (const auto& id : p.at("track_ids")) out.trackedIds.push_back(std::llround(id.get<double>()));
   e.shearRate = p.at("shear_rate");
   const std::string planar = p.at("planar");
   e.planarAxis = planar.empty() ? -1 : planar[0] - 'x';

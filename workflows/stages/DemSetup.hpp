@@ -31,6 +31,7 @@ struct DemSetup {
   dem::SimulationSetup engine;
   std::vector<DemSpecies> species;
   std::vector<PairTiming> timings;
+  std::vector<std::int64_t> trackedIds;  // particles whose height the series records
 };
 
 // Builds the setup; assumes individually valid parameters.

@@ -1,5 +1,6 @@
 #include "workflows/stages/DemStage.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "core/FailPoint.hpp"
 #include "core/Files.hpp"
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
@@ -201,6 +203,9 @@ DemStage::DemStage() {
                .doc("insertion region lower corner (default: the box)"))
       .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
                .doc("insertion region upper corner (default: the box)"))
+      .add(ParamSpec::quantityList("track_ids", Dimension::none(), 0)
+               .defaultValue(json::array())
+               .doc("particle ids whose height (z) series.csv records as z_id<N>"))
       .add(ParamSpec::quantity("checkpoint_interval", Dimension::timeDim())
                .defaultValue("600 s")
                .positive()
@@ -274,6 +279,20 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
         d.add(ptr + "/lammps_types/" + std::to_string(k) + "/species", "no species named \"" + sp + "\"");
     }
   }
+  std::int64_t particleCount = 0;
+  for (const auto& s : p.at("species")) particleCount += s.at("count").get<std::int64_t>();
+  const bool fromFile = p.contains("lammps_data") || p.contains("initial_frame");
+  for (std::size_t k = 0; k < p.at("track_ids").size(); ++k) {
+    const double id = p["track_ids"][k];
+    // Inserted particles get ids 0..count-1; a state from a file brings its own ids, checked at
+    // the start of the run.
+    if (id != std::floor(id) || id < 0 || (!fromFile && id >= static_cast<double>(particleCount))) {
+      std::ostringstream msg;
+      msg << "no particle with id " << id;
+      if (!fromFile) msg << " (ids run from 0 to " << particleCount - 1 << ")";
+      d.add(ptr + "/track_ids/" + std::to_string(k), msg.str());
+    }
+  }
   if (p.contains("preparation")) {
     const std::string hold = p["preparation"].at("hold_species");
     if (!hold.empty() && names.count(hold) == 0)
@@ -334,6 +353,7 @@ std::string csvHeader(const DemSetup& s) {
   }
   for (const auto& sp : s.species) h += ",com_z_" + sp.name;
   for (const auto& sp : s.species) h += ",top_z_" + sp.name;  // highest z + a: the free surface
+  for (const auto id : s.trackedIds) h += ",z_id" + std::to_string(id);
   return h + "\n";
 }
 
@@ -353,6 +373,10 @@ void DemStage::run(StageContext& ctx) const {
 
   const std::filesystem::path checkpointFile = ctx.checkpointDir() / "engine.h5";
   const std::filesystem::path checkpointSeries = ctx.checkpointDir() / "series.csv";
+  // A checkpoint taken during the preparation lives in its own file: its step counter counts
+  // preparation steps, and the run proper has not started.
+  const std::filesystem::path preparationCheckpointFile = ctx.checkpointDir() / "preparation.h5";
+  const auto checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
   std::optional<dem::Simulation> simulation;
   std::ostringstream series;
   series.precision(17);
@@ -362,26 +386,47 @@ void DemStage::run(StageContext& ctx) const {
     series << core::readFile(checkpointSeries);
     spdlog::info("{}: resuming from the checkpoint at step {}", ctx.stage(), simulation->stepCount());
   } else {
-    const bool fromFile = p.contains("lammps_data") || p.contains("initial_frame");
-    simulation.emplace(setup.engine, p.contains("lammps_data")     ? readLammpsParticles(p, setup)
-                                     : p.contains("initial_frame") ? readFrameParticles(p, setup)
-                                                                   : insertSpecies(ctx, setup));
-    if (fromFile) {
-      // A state from a file may overlap: refuse it before the first step rather than let the
-      // springs explode.
-      const auto worst = simulation->largestOverlap();
-      if (worst.relative > p.at("max_initial_overlap").get<double>()) {
-        throw Error("/stages/" + ctx.stage() + "/params/" +
-                    (p.contains("lammps_data") ? "lammps_data" : "initial_frame") + ": particles " +
-                    std::to_string(worst.i) + " and " + std::to_string(worst.j) + " overlap by " +
-                    std::to_string(worst.relative) + " of the smaller diameter, above max_initial_overlap = " +
-                    std::to_string(p.at("max_initial_overlap").get<double>()));
+    if (std::filesystem::exists(preparationCheckpointFile)) {
+      simulation.emplace(setup.engine, dem::readCheckpoint(preparationCheckpointFile, ctx.key()));
+    } else {
+      const bool fromFile = p.contains("lammps_data") || p.contains("initial_frame");
+      simulation.emplace(setup.engine, p.contains("lammps_data")     ? readLammpsParticles(p, setup)
+                                       : p.contains("initial_frame") ? readFrameParticles(p, setup)
+                                                                     : insertSpecies(ctx, setup));
+      if (fromFile) {
+        // A state from a file may overlap: refuse it before the first step rather than let the
+        // springs explode.
+        const auto worst = simulation->largestOverlap();
+        if (worst.relative > p.at("max_initial_overlap").get<double>()) {
+          throw Error("/stages/" + ctx.stage() + "/params/" +
+                      (p.contains("lammps_data") ? "lammps_data" : "initial_frame") + ": particles " +
+                      std::to_string(worst.i) + " and " + std::to_string(worst.j) + " overlap by " +
+                      std::to_string(worst.relative) + " of the smaller diameter, above max_initial_overlap = " +
+                      std::to_string(p.at("max_initial_overlap").get<double>()));
+        }
       }
     }
-    if (p.contains("preparation")) prepare(ctx, setup, *simulation);
+    if (p.contains("preparation")) {
+      PreparationCheckpoints checkpoints;
+      checkpoints.every = checkpointEvery;
+      checkpoints.save = [&] {
+        std::filesystem::create_directories(ctx.checkpointDir());
+        dem::writeCheckpoint(preparationCheckpointFile, simulation->captureState(), ctx.key());
+        core::failPoint("dem.preparation_checkpoint");
+      };
+      prepare(ctx, setup, *simulation, checkpoints);
+    }
     series << csvHeader(setup);
   }
   dem::Simulation& sim = *simulation;
+  for (std::size_t k = 0; k < setup.trackedIds.size(); ++k) {
+    const auto& ids = sim.particles().id;
+    if (std::find(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(sim.particles().nOwned),
+                  setup.trackedIds[k]) == ids.begin() + static_cast<std::ptrdiff_t>(sim.particles().nOwned)) {
+      throw Error("/stages/" + ctx.stage() + "/params/track_ids/" + std::to_string(k) + ": no particle with id " +
+                  std::to_string(setup.trackedIds[k]) + " in the initial state");
+    }
+  }
   const auto totalSteps = static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / setup.engine.dt - 1e-9));
   const auto frames = p.at("frames").get<std::int64_t>();
   const auto seriesPoints = p.at("series_points").get<std::int64_t>();
@@ -417,6 +462,10 @@ void DemStage::run(StageContext& ctx) const {
       t = std::max(t, f.position[i][2] + f.radius[i]);
     }
     for (double t : top) series << ',' << t;
+    for (const auto id : setup.trackedIds) {
+      const auto it = std::find(f.id.begin(), f.id.end(), id);
+      series << ',' << f.position[static_cast<std::size_t>(it - f.id.begin())][2];
+    }
     series << '\n';
   };
 
@@ -427,8 +476,9 @@ void DemStage::run(StageContext& ctx) const {
   };
   if (sim.stepCount() == 0) writer.write(sim.frame());  // the initial state, with its first contacts
   std::optional<core::Progress> progress;
-  if (p.at("progress").get<bool>()) progress.emplace(ctx.stage(), static_cast<double>(totalSteps), "steps");
-  const auto checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
+  if (p.at("progress").get<bool>()) {
+    progress.emplace(ctx.stage(), static_cast<double>(totalSteps), "steps", 10.0, static_cast<double>(sim.stepCount()));
+  }
   auto lastCheckpoint = std::chrono::steady_clock::now();
   const std::int64_t firstStep = sim.stepCount() + 1;
   const auto loopStart = std::chrono::steady_clock::now();
