@@ -83,6 +83,90 @@ CREATE TABLE leases(
   heartbeat_at TEXT NOT NULL);
 CREATE INDEX leases_run ON leases(run_id);
 )sql",
+      // 2: the closure database (DESIGN.md "Closures"). A closure point is one DEM state and what
+      // was measured there, SI and dimensionless, each with its uncertainty, tied to the run that
+      // produced it (and through runs/run_inputs to everything upstream). Force and structure
+      // statistics are per frame or per set of frames. A closure table is a named grid of one
+      // dimensionless quantity that loads into core::ClosureTable.
+      R"sql(
+CREATE TABLE closure_points(
+  id INTEGER PRIMARY KEY,
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  family TEXT NOT NULL,
+  species TEXT NOT NULL DEFAULT 'all',
+  solid_fraction REAL NOT NULL CHECK(solid_fraction >= 0 AND solid_fraction < 1),
+  restitution REAL,
+  friction REAL,
+  shear_rate REAL,
+  diameter REAL NOT NULL CHECK(diameter > 0),
+  density REAL NOT NULL CHECK(density > 0),
+  frames INTEGER NOT NULL,
+  granular_temperature REAL, granular_temperature_err REAL,
+  pressure REAL, pressure_err REAL,
+  shear_stress REAL, shear_stress_err REAL,
+  viscosity REAL, viscosity_err REAL,
+  dissipation_rate REAL, dissipation_rate_err REAL,
+  coordination REAL, coordination_err REAL,
+  force_correlation_length REAL, force_correlation_length_err REAL,
+  velocity_correlation_length REAL, velocity_correlation_length_err REAL,
+  p_theta REAL, p_theta_err REAL,
+  eta_theta REAL, eta_theta_err REAL,
+  j_theta REAL, j_theta_err REAL,
+  p_shear REAL, p_shear_err REAL,
+  tau_shear REAL, tau_shear_err REAL,
+  t_shear REAL, t_shear_err REAL,
+  extra_json TEXT);
+CREATE INDEX closure_points_state ON closure_points(family, solid_fraction, restitution, friction);
+CREATE INDEX closure_points_run ON closure_points(run_id);
+
+CREATE TABLE force_statistics(
+  id INTEGER PRIMARY KEY,
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  family TEXT NOT NULL,
+  source TEXT NOT NULL,
+  frame_step INTEGER,
+  time REAL,
+  forces INTEGER NOT NULL,
+  mean_force REAL,
+  model TEXT NOT NULL,
+  a REAL, a_err REAL, b REAL, b_err REAL, beta REAL, beta_err REAL,
+  alpha REAL, alpha_err REAL, gamma REAL, gamma_err REAL,
+  chi2_dof REAL, density_integral REAL,
+  correlation_length REAL, correlation_length_err REAL,
+  extra_json TEXT);
+CREATE INDEX force_statistics_run ON force_statistics(run_id);
+
+CREATE TABLE structure_statistics(
+  id INTEGER PRIMARY KEY,
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  family TEXT NOT NULL,
+  kind TEXT NOT NULL CHECK(kind IN ('force_networks','mst')),
+  pass INTEGER NOT NULL DEFAULT 0,
+  frame_step INTEGER,
+  time REAL,
+  networks INTEGER,
+  largest_particles INTEGER, largest_edges INTEGER,
+  largest_coordination REAL,
+  strong_particles INTEGER,
+  largest_extent REAL,
+  other_trees INTEGER, other_edges INTEGER,
+  extra_json TEXT);
+CREATE INDEX structure_statistics_run ON structure_statistics(run_id);
+
+CREATE TABLE closure_tables(
+  id INTEGER PRIMARY KEY,
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  name TEXT NOT NULL,
+  quantity TEXT NOT NULL,
+  second_variable TEXT NOT NULL DEFAULT '',
+  solid_fractions_json TEXT NOT NULL,
+  seconds_json TEXT NOT NULL,
+  values_json TEXT NOT NULL,
+  uncertainties_json TEXT NOT NULL,
+  filters_json TEXT NOT NULL DEFAULT '{}',
+  UNIQUE(run_id, name, quantity));
+CREATE INDEX closure_tables_name ON closure_tables(name, quantity);
+)sql",
   };
   return scripts;
 }

@@ -131,4 +131,23 @@ int Statement::columnCount() const {
   return sqlite3_column_count(stmt_);
 }
 
+std::string Statement::columnName(int index) const {
+  checkColumn(index);
+  return sqlite3_column_name(stmt_, index);
+}
+
+nlohmann::json Statement::columnJson(int index) const {
+  checkColumn(index);
+  switch (sqlite3_column_type(stmt_, index)) {
+    case SQLITE_NULL:
+      return nullptr;
+    case SQLITE_INTEGER:
+      return columnInt64(index);
+    case SQLITE_FLOAT:
+      return columnDouble(index);
+    default:
+      return columnText(index);
+  }
+}
+
 }  // namespace grainbridge::db

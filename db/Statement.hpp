@@ -5,6 +5,7 @@
 // programmer error (GB_ASSERT).
 #include <cstdint>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 struct sqlite3;
@@ -42,6 +43,9 @@ class Statement {
   std::string columnText(int index) const;  // "" for NULL
   bool columnIsNull(int index) const;
   int columnCount() const;
+  std::string columnName(int index) const;
+  // The value as JSON: null, an integer, a real or a string (blobs are not used here).
+  nlohmann::json columnJson(int index) const;
   const std::string& sql() const { return sql_; }
 
  private:

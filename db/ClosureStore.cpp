@@ -1,0 +1,180 @@
+#include "db/ClosureStore.hpp"
+
+#include <algorithm>
+
+#include "core/Error.hpp"
+#include "db/Database.hpp"
+#include "db/Statement.hpp"
+
+namespace grainbridge::db {
+
+using nlohmann::json;
+
+namespace {
+
+void bindJson(Statement& st, int index, const json& value, const std::string& where) {
+  if (value.is_null()) {
+    st.bindNull(index);
+  } else if (value.is_number_integer() || value.is_boolean()) {
+    st.bind(index, value.is_boolean() ? static_cast<std::int64_t>(value.get<bool>()) : value.get<std::int64_t>());
+  } else if (value.is_number()) {
+    st.bind(index, value.get<double>());
+  } else if (value.is_string()) {
+    st.bind(index, value.get<std::string>());
+  } else if (value.is_object() || value.is_array()) {
+    st.bind(index, value.dump());  // extra_json and the like
+  } else {
+    throw Error(where + ": unsupported value " + value.dump());
+  }
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
+ClosureStore::ClosureStore(Database& db) : db_(db) {}
+
+const std::vector<std::string>& ClosureStore::recordTables() {
+  static const std::vector<std::string> tables = {"closure_points", "force_statistics", "structure_statistics",
+                                                  "closure_tables"};
+  return tables;
+}
+
+std::vector<std::string> ClosureStore::columns(const std::string& table) {
+  const auto& known = recordTables();
+  if (std::find(known.begin(), known.end(), table) == known.end()) {
+    throw Error("closure database: no table \"" + table + "\" (tables: " + joined(known) + ")");
+  }
+  std::vector<std::string> out;
+  auto st = db_.prepare("SELECT name FROM pragma_table_info(?1) ORDER BY cid");
+  st.bind(1, table);
+  while (st.step()) out.push_back(st.columnText(0));
+  return out;
+}
+
+void ClosureStore::insertRecords(std::int64_t runId, const json& records) {
+  if (records.is_null()) return;
+  if (!records.is_object())
+    throw Error("closure database: records must be an object of tables, found " + records.dump());
+  for (const auto& [table, rows] : records.items()) {
+    const auto cols = columns(table);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      const json& row = rows[r];
+      const std::string where = "records/" + table + "/" + std::to_string(r);
+      if (!row.is_object()) throw Error("closure database: " + where + " is not an object");
+      if (table == "closure_tables") {
+        insertClosureTable(runId, row, where);
+        continue;
+      }
+      std::vector<std::string> names = {"run_id"};
+      for (const auto& [column, value] : row.items()) {
+        if (column == "id" || column == "run_id" || std::find(cols.begin(), cols.end(), column) == cols.end()) {
+          throw Error("closure database: " + where + ": no column \"" + column + "\" in " + table);
+        }
+        names.push_back(column);
+      }
+      std::string sql = "INSERT INTO " + table + "(" + joined(names) + ") VALUES(";
+      for (std::size_t k = 0; k < names.size(); ++k) sql += (k ? ",?" : "?") + std::to_string(k + 1);
+      sql += ")";
+      auto st = db_.prepare(sql);
+      st.bind(1, runId);
+      int index = 2;
+      for (const auto& [column, value] : row.items()) bindJson(st, index++, value, where + "/" + column);
+      st.step();
+    }
+  }
+}
+
+void ClosureStore::insertClosureTable(std::int64_t runId, const json& row, const std::string& where) {
+  // Validate by building the table: a malformed grid fails here, not when an engine loads it.
+  try {
+    const auto second = row.value("seconds", json::array()).get<std::vector<double>>();
+    core::ClosureTable check(
+        row.at("quantity").get<std::string>(), row.at("solid_fractions").get<std::vector<double>>(),
+        row.value("second_variable", std::string()), second, row.at("values").get<std::vector<double>>());
+    (void)check;
+  } catch (const json::exception& e) {
+    throw Error("closure database: " + where + ": " + e.what());
+  }
+  auto st = db_.prepare(
+      "INSERT INTO closure_tables(run_id, name, quantity, second_variable, solid_fractions_json, seconds_json, "
+      "values_json, uncertainties_json, filters_json) VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9)");
+  st.bind(1, runId)
+      .bind(2, row.at("name").get<std::string>())
+      .bind(3, row.at("quantity").get<std::string>())
+      .bind(4, row.value("second_variable", std::string()))
+      .bind(5, row.at("solid_fractions").dump())
+      .bind(6, row.value("seconds", json::array()).dump())
+      .bind(7, row.at("values").dump())
+      .bind(8, row.value("uncertainties", json::array()).dump())
+      .bind(9, row.value("filters", json::object()).dump());
+  st.step();
+}
+
+json ClosureStore::query(const ClosureQuery& q) {
+  const auto cols = columns(q.table);
+  std::string sql = "SELECT t.*, r.workflow AS workflow, r.stage AS stage, r.key AS run_key FROM " + q.table +
+                    " t JOIN runs r ON r.id = t.run_id WHERE 1";
+  std::vector<json> args;
+  if (!q.family.empty()) {
+    sql += " AND t.family = ?" + std::to_string(args.size() + 1);
+    args.emplace_back(q.family);
+  }
+  if (!q.workflow.empty()) {
+    sql += " AND r.workflow = ?" + std::to_string(args.size() + 1);
+    args.emplace_back(q.workflow);
+  }
+  if (q.runId) {
+    sql += " AND t.run_id = ?" + std::to_string(args.size() + 1);
+    args.emplace_back(*q.runId);
+  }
+  for (const auto& range : q.ranges) {
+    if (std::find(cols.begin(), cols.end(), range.column) == cols.end()) {
+      throw Error("closure database: no column \"" + range.column + "\" in " + q.table + " (columns: " + joined(cols) +
+                  ")");
+    }
+    // Column names come from the schema (checked above), values are bound.
+    if (range.lo) {
+      sql += " AND t." + range.column + " >= ?" + std::to_string(args.size() + 1);
+      args.emplace_back(*range.lo);
+    }
+    if (range.hi) {
+      sql += " AND t." + range.column + " <= ?" + std::to_string(args.size() + 1);
+      args.emplace_back(*range.hi);
+    }
+  }
+  sql += " ORDER BY t.id";
+  auto st = db_.prepare(sql);
+  for (std::size_t k = 0; k < args.size(); ++k) bindJson(st, static_cast<int>(k + 1), args[k], "query");
+  json out = json::array();
+  while (st.step()) {
+    json row = json::object();
+    for (int c = 0; c < st.columnCount(); ++c) row[st.columnName(c)] = st.columnJson(c);
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
+core::ClosureTable ClosureStore::loadTable(const std::string& name, const std::string& quantity) {
+  auto st = db_.prepare(
+      "SELECT solid_fractions_json, second_variable, seconds_json, values_json FROM closure_tables "
+      "WHERE name = ?1 AND quantity = ?2 ORDER BY run_id DESC, id DESC LIMIT 1");
+  st.bind(1, name).bind(2, quantity);
+  if (!st.step()) {
+    std::string known;
+    auto all = db_.prepare("SELECT DISTINCT name || '/' || quantity FROM closure_tables ORDER BY 1");
+    while (all.step()) known += (known.empty() ? "" : ", ") + all.columnText(0);
+    throw Error("closure database " + db_.path().string() + ": no closure table \"" + name + "\" of quantity \"" +
+                quantity + "\" (tables: " + (known.empty() ? "none" : known) + ")");
+  }
+  const auto x = json::parse(st.columnText(0)).get<std::vector<double>>();
+  const auto y = json::parse(st.columnText(2)).get<std::vector<double>>();
+  const auto v = json::parse(st.columnText(3)).get<std::vector<double>>();
+  return core::ClosureTable(quantity, x, st.columnText(1), y, v);
+}
+
+}  // namespace grainbridge::db

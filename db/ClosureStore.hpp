@@ -1,0 +1,63 @@
+#pragma once
+// The closure database (DESIGN.md "Closures"): closure points, force and structure statistics
+// and closure tables. Stages never write the database; they report rows in their manifest
+// ("records": {table: [row, ...]}) and the executor inserts them here in the same transaction
+// that marks the run done, so a closure value exists exactly when its run completed and its
+// provenance (runs, run_inputs, artifacts) is there to follow. Like ProvenanceStore, it opens
+// no transaction itself.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/ClosureTable.hpp"
+
+namespace grainbridge::db {
+
+class Database;
+
+// A closed range on one numeric column; an absent bound is open.
+struct ColumnRange {
+  std::string column;
+  std::optional<double> lo, hi;
+};
+
+struct ClosureQuery {
+  std::string table = "closure_points";  // closure_points | force_statistics | structure_statistics
+  std::string family;                    // "" = any
+  std::vector<ColumnRange> ranges;
+  std::optional<std::int64_t> runId;
+  std::string workflow;  // "" = any; else only rows of that workflow's runs
+};
+
+class ClosureStore {
+ public:
+  explicit ClosureStore(Database& db);
+
+  // The tables a stage may report rows for.
+  static const std::vector<std::string>& recordTables();
+
+  // Inserts a manifest's "records" object for run `runId`. Every row is an object whose keys
+  // are columns of its table (run_id and id are set here). Throws grainbridge::Error naming
+  // the table, row and column for an unknown table or column or a value of the wrong type.
+  void insertRecords(std::int64_t runId, const nlohmann::json& records);
+
+  // Matching rows as objects (column -> value) plus workflow, stage and run key, by id.
+  // Throws Error naming an unknown column in a range.
+  nlohmann::json query(const ClosureQuery& query);
+
+  // The newest table `name` of `quantity` (highest run id). Throws Error listing the tables
+  // there are when none matches.
+  core::ClosureTable loadTable(const std::string& name, const std::string& quantity);
+
+  // Column names of a table, from the schema itself (so no list here can drift from it).
+  std::vector<std::string> columns(const std::string& table);
+
+ private:
+  void insertClosureTable(std::int64_t runId, const nlohmann::json& row, const std::string& where);
+
+  Database& db_;
+};
+
+}  // namespace grainbridge::db

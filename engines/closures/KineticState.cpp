@@ -1,0 +1,37 @@
+#include "engines/closures/KineticState.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/Error.hpp"
+
+namespace grainbridge::closures {
+
+namespace {
+
+[[noreturn]] void refuse(const char* quantity, const char* range, double value) {
+  std::ostringstream msg;
+  msg.precision(10);
+  msg << "kinetic theory: " << quantity << " must be " << range << ", got " << value;
+  throw Error(msg.str());
+}
+
+}  // namespace
+
+void validate(const KineticState& s) {
+  // Each test is written as !(valid) so that NaN is refused too; infinities are refused
+  // explicitly because they would pass a one-sided bound.
+  const auto finite = [](double v) { return std::isfinite(v); };
+  if (!(s.solidFraction >= 0.0 && s.solidFraction < 1.0)) refuse("solid fraction", "in [0, 1)", s.solidFraction);
+  if (!(finite(s.granularTemperature) && s.granularTemperature >= 0.0)) {
+    refuse("granular temperature [m^2/s^2]", "finite and >= 0", s.granularTemperature);
+  }
+  if (!(finite(s.diameter) && s.diameter > 0.0)) refuse("particle diameter [m]", "finite and > 0", s.diameter);
+  if (!(finite(s.density) && s.density > 0.0)) refuse("particle density [kg/m^3]", "finite and > 0", s.density);
+  if (!(s.restitution > 0.0 && s.restitution <= 1.0)) refuse("restitution", "in (0, 1]", s.restitution);
+  if (!(finite(s.gasDragCoefficient) && s.gasDragCoefficient >= 0.0)) {
+    refuse("gas drag coefficient [kg/(m^3 s)]", "finite and >= 0", s.gasDragCoefficient);
+  }
+}
+
+}  // namespace grainbridge::closures

@@ -1,0 +1,192 @@
+// The closure database: rows a stage reports are inserted against the schema's own columns,
+// queried by family, state range and run, and closure tables load into core::ClosureTable.
+// Two processes writing closure points at once lose nothing.
+#include "db/ClosureStore.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core/Error.hpp"
+#include "db/Database.hpp"
+#include "db/ProvenanceStore.hpp"
+#include "tests/db/TestSupport.hpp"
+
+namespace grainbridge::db {
+namespace {
+
+using nlohmann::json;
+using test::countRows;
+using test::sampleInvocation;
+using test::sampleRun;
+using test::TempDir;
+using ::testing::HasSubstr;
+
+json point(double solidFraction, double restitution, double pressure) {
+  return {{"family", "simple_shear"},
+          {"solid_fraction", solidFraction},
+          {"restitution", restitution},
+          {"friction", 0.0},
+          {"shear_rate", 1.0},
+          {"diameter", 1e-3},
+          {"density", 2500.0},
+          {"frames", 20},
+          {"pressure", pressure},
+          {"pressure_err", 0.01 * pressure},
+          {"extra_json", {{"note", "test"}}}};
+}
+
+std::int64_t newRun(Database& db, const std::string& key) {
+  return db.transaction([&](Database& d) {
+    ProvenanceStore store(d);
+    const auto invocation = store.insertInvocation(sampleInvocation());
+    return store.insertRun(sampleRun(invocation, key));
+  });
+}
+
+ClosureQuery withRanges(std::vector<ColumnRange> ranges, std::string table = "closure_points") {
+  ClosureQuery q;
+  q.table = std::move(table);
+  q.ranges = std::move(ranges);
+  return q;
+}
+
+std::string errorOf(const std::function<void()>& fn) {
+  try {
+    fn();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ClosureStore, InsertsReportedRowsAndQueriesThemByFamilyRangeAndRun) {
+  TempDir dir;
+  Database db = Database::open(dir / "gb.sqlite");
+  const auto run1 = newRun(db, "k1");
+  const auto run2 = newRun(db, "k2");
+  db.transaction([&](Database& d) {
+    ClosureStore store(d);
+    store.insertRecords(run1, {{"closure_points", {point(0.1, 0.9, 10.0), point(0.3, 0.9, 50.0)}}});
+    store.insertRecords(
+        run2, {{"closure_points", {point(0.2, 0.7, 20.0)}},
+               {"force_statistics",
+                {{{"family", "bnp"}, {"source", "contacts"}, {"forces", 1000}, {"model", "eq6.11"}, {"a", 2.4}}}}});
+  });
+  ClosureStore store(db);
+  EXPECT_EQ(store.query({}).size(), 3u);
+  const auto dense = store.query(withRanges({{"solid_fraction", 0.15, std::nullopt}}));
+  ASSERT_EQ(dense.size(), 2u);
+  EXPECT_DOUBLE_EQ(dense[0]["solid_fraction"].get<double>(), 0.3);
+  EXPECT_EQ(dense[0]["run_key"], "k1");  // the provenance link travels with the row
+  EXPECT_EQ(dense[1]["run_id"], run2);
+  EXPECT_EQ(store.query(withRanges({{"restitution", 0.8, 1.0}, {"solid_fraction", 0.0, 0.2}})).size(), 1u);
+  ClosureQuery ofRun;
+  ofRun.runId = run2;
+  EXPECT_EQ(store.query(ofRun).size(), 1u);
+  ClosureQuery ofFamily;
+  ofFamily.family = "fluidized_cell";
+  EXPECT_EQ(store.query(ofFamily).size(), 0u);
+  EXPECT_EQ(json::parse(store.query({})[0]["extra_json"].get<std::string>())["note"], "test");
+  const auto forces = store.query(withRanges({}, "force_statistics"));
+  ASSERT_EQ(forces.size(), 1u);
+  EXPECT_EQ(forces[0]["forces"], 1000);
+}
+
+TEST(ClosureStore, RefusesUnknownTablesAndColumnsNamingThem) {
+  TempDir dir;
+  Database db = Database::open(dir / "gb.sqlite");
+  const auto run = newRun(db, "k1");
+  ClosureStore store(db);
+  json bad = point(0.1, 0.9, 1.0);
+  bad["presure"] = 3.0;
+  EXPECT_THAT(errorOf([&] {
+                store.insertRecords(run, {{"closure_points", {point(0.2, 0.9, 1.0), bad}}});
+              }),
+              HasSubstr("records/closure_points/1: no column \"presure\" in closure_points"));
+  EXPECT_THAT(errorOf([&] {
+                store.insertRecords(run, {{"closure_pionts", json::array()}});
+              }),
+              HasSubstr("no table \"closure_pionts\""));
+  EXPECT_THAT(errorOf([&] { store.query(withRanges({{"phi", 0.1, 0.2}})); }), HasSubstr("no column \"phi\""));
+  // A schema CHECK holds too: a solid fraction of 1.2 is no state.
+  EXPECT_THROW(store.insertRecords(run, {{"closure_points", {point(1.2, 0.9, 1.0)}}}), Error);
+}
+
+TEST(ClosureStore, AClosureTableLoadsIntoCoreClosureTableNewestFirst) {
+  TempDir dir;
+  Database db = Database::open(dir / "gb.sqlite");
+  const auto older = newRun(db, "k1");
+  const auto newer = newRun(db, "k2");
+  const json table = {{"name", "shear"},
+                      {"quantity", "p_theta"},
+                      {"second_variable", "restitution"},
+                      {"solid_fractions", {0.1, 0.2, 0.3}},
+                      {"seconds", {0.7, 0.9}},
+                      {"values", {1.0, 2.0, 3.0, 1.5, 2.5, 3.5}},
+                      {"uncertainties", {0.1, 0.1, 0.1, 0.1, 0.1, 0.1}}};
+  json newerTable = table;
+  newerTable["values"] = {2.0, 4.0, 6.0, 3.0, 5.0, 7.0};
+  db.transaction([&](Database& d) {
+    ClosureStore(d).insertRecords(newer, {{"closure_tables", {newerTable}}});
+    ClosureStore(d).insertRecords(older, {{"closure_tables", {table}}});
+  });
+  ClosureStore store(db);
+  const auto loaded = store.loadTable("shear", "p_theta");
+  EXPECT_TRUE(loaded.twoDimensional());
+  EXPECT_EQ(loaded.secondVariable(), "restitution");
+  EXPECT_DOUBLE_EQ(loaded(0.2, 0.8).value, 4.5);  // the newer run's table, halfway between 4 and 5
+  EXPECT_THAT(errorOf([&] { store.loadTable("shear", "eta_theta"); }),
+              HasSubstr("no closure table \"shear\" of quantity \"eta_theta\" (tables: shear/p_theta)"));
+  json malformed = table;
+  malformed["values"] = {1.0, 2.0};
+  EXPECT_THAT(errorOf([&] {
+                store.insertRecords(newer, {{"closure_tables", {malformed}}});
+              }),
+              HasSubstr("2 values for a 3 x 2 grid"));
+}
+
+constexpr int kPointsPerWriter = 300;
+
+int writePoints(const std::filesystem::path& path, int writer) {
+  try {
+    Database db = Database::open(path);
+    const auto run = newRun(db, "writer" + std::to_string(writer));
+    for (int i = 0; i < kPointsPerWriter; ++i) {
+      db.transaction([&](Database& d) {
+        ClosureStore(d).insertRecords(run, {{"closure_points", {point(0.001 * i, 0.9, 1.0 + writer)}}});
+      });
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "writer %d: %s\n", writer, e.what());
+    return 1;
+  }
+}
+
+TEST(ClosureStore, TwoProcessesWritingClosurePointsAtOnceLoseNothing) {
+  TempDir dir;
+  const auto path = dir / "gb.sqlite";
+  Database::open(path);  // created and migrated, then closed: no connection crosses fork()
+  pid_t writers[2];
+  for (int w = 0; w < 2; ++w) {
+    writers[w] = ::fork();
+    ASSERT_GE(writers[w], 0);
+    if (writers[w] == 0) ::_exit(writePoints(path, w));
+  }
+  for (pid_t pid : writers) {
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "writer " << pid << " status " << status;
+  }
+  Database db = Database::open(path);
+  EXPECT_EQ(countRows(db, "closure_points"), 2 * kPointsPerWriter);
+  ClosureStore store(db);
+  EXPECT_EQ(store.query(withRanges({{"pressure", 1.5, 2.5}})).size(), static_cast<std::size_t>(kPointsPerWriter));
+  EXPECT_EQ(db.integrityCheck(), "ok");
+}
+
+}  // namespace
+}  // namespace grainbridge::db

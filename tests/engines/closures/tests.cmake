@@ -1,0 +1,10 @@
+# engines/closures: g0, the kinetic-theory models (lun1984, syamlal_algebraic and its MFIX form)
+# against hand values, limits and identities between the models.
+grainbridge_add_test(test_closures
+  SOURCES
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/RadialDistributionTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/Lun1984Test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/SyamlalAlgebraicTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/KineticModelTest.cpp
+  LIBS engines_closures
+  LABELS "unit;closures")
