@@ -6,6 +6,7 @@
 #include "core/Log.hpp"
 #include "core/Version.hpp"
 #include "db/Clock.hpp"
+#include "db/ClosureStore.hpp"
 #include "db/Leases.hpp"
 #include "db/ProvenanceStore.hpp"
 #include "db/StageCache.hpp"
@@ -104,29 +105,46 @@ Bookkeeper::Begun Bookkeeper::begin(const plan::StageInstance& instance, const I
 }
 
 void Bookkeeper::record(const plan::StageInstance& instance, const InstanceTask& task, std::int64_t runId,
-                        const InstanceOutcome& outcome) {
+                        InstanceOutcome& outcome) {
   const auto me = db::currentProcessHolder(runId);
   heartbeat_->remove(instance.key);
+  if (outcome.status == InstanceOutcome::Status::Done) {
+    try {
+      recordDone(instance, task, runId, outcome, me);
+      return;
+    } catch (const Error& e) {
+      // The closure database refused the rows the stage reported (a stage bug, or a schema
+      // CHECK such as a solid fraction >= 1): nothing of the completion was committed, so the
+      // run is failed and its published folder, having no cache entry, is redone next time.
+      outcome.status = InstanceOutcome::Status::Failed;
+      outcome.error = std::string("recording the results failed: ") + e.what();
+    }
+  }
+  db_.transaction([&](db::Database& d) {
+    const bool interrupted = outcome.status == InstanceOutcome::Status::Interrupted;
+    db::ProvenanceStore(d).finishRun(runId, interrupted ? "killed" : "failed", outcome.error, "{}");
+    db::Leases(d).release(instance.key, me);
+  });
+}
+
+void Bookkeeper::recordDone(const plan::StageInstance& instance, const InstanceTask& task, std::int64_t runId,
+                            const InstanceOutcome& outcome, const db::LeaseHolder& me) {
   db_.transaction([&](db::Database& d) {
     db::ProvenanceStore store(d);
     db::Leases leases(d);
-    if (outcome.status == InstanceOutcome::Status::Done) {
-      for (const auto& a : outcome.manifest.at("artifacts")) {
-        db::ArtifactRecord rec;
-        rec.runId = runId;
-        rec.key = instance.key;
-        rec.path = task.instanceDir + "/" + a.at("path").get<std::string>();
-        rec.kind = a.at("kind");
-        rec.sha256 = a.at("sha256");
-        rec.bytes = a.at("bytes");
-        store.addArtifact(rec);
-      }
-      store.finishRun(runId, "done", "", outcome.manifest.at("summary").dump());
-      db::StageCache(d).record({instance.key, runId, config_.name, instance.stage, task.instanceDir, db::nowUtc()});
-    } else {
-      const bool interrupted = outcome.status == InstanceOutcome::Status::Interrupted;
-      store.finishRun(runId, interrupted ? "killed" : "failed", outcome.error, "{}");
+    for (const auto& a : outcome.manifest.at("artifacts")) {
+      db::ArtifactRecord rec;
+      rec.runId = runId;
+      rec.key = instance.key;
+      rec.path = task.instanceDir + "/" + a.at("path").get<std::string>();
+      rec.kind = a.at("kind");
+      rec.sha256 = a.at("sha256");
+      rec.bytes = a.at("bytes");
+      store.addArtifact(rec);
     }
+    db::ClosureStore(d).insertRecords(runId, outcome.manifest.value("records", nlohmann::json::object()));
+    store.finishRun(runId, "done", "", outcome.manifest.at("summary").dump());
+    db::StageCache(d).record({instance.key, runId, config_.name, instance.stage, task.instanceDir, db::nowUtc()});
     leases.release(instance.key, me);
   });
 }

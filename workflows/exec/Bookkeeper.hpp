@@ -38,11 +38,15 @@ class Bookkeeper {
     std::string holder;  // "host:pid" of the live process holding it, when not claimed
   };
   Begun begin(const plan::StageInstance& instance, const InstanceTask& task, int rank, int ranks);
+  // Records how an instance ended. A Done outcome whose results the database refuses (the
+  // closure rows it reported) becomes Failed, with the reason in outcome.error.
   void record(const plan::StageInstance& instance, const InstanceTask& task, std::int64_t runId,
-              const InstanceOutcome& outcome);
+              InstanceOutcome& outcome);
   void finish(const std::string& status);
 
  private:
+  void recordDone(const plan::StageInstance& instance, const InstanceTask& task, std::int64_t runId,
+                  const InstanceOutcome& outcome, const db::LeaseHolder& me);
   db::Database& db_;
   const config::WorkflowConfig& config_;
   std::filesystem::path resultsRoot_;

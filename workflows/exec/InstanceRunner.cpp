@@ -103,6 +103,7 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
          }()},
         {"artifacts", hashArtifacts(ctx, partialDir)},
         {"summary", ctx.summary()},
+        {"records", ctx.records()},
         {"timing", {{"started_at", startedAt}, {"ended_at", db::nowUtc()}, {"seconds", seconds}}},
         {"code_version", core::codeVersion().gitSha},
         {"code_dirty", core::codeVersion().dirty},

@@ -121,7 +121,7 @@ RunSummary runWorkflow(const config::WorkflowConfig& config, const plan::Plan& p
       break;  // nothing running and nothing more can start
     }
     if (auto result = dispatcher.poll()) {
-      const auto [i, outcome] = std::move(*result);
+      auto [i, outcome] = std::move(*result);
       const auto& inst = plan.instances[i];
       books.record(inst, tasks[i], runIds[i], outcome);
       if (outcome.status == InstanceOutcome::Status::Done) {

@@ -77,7 +77,12 @@ class StageContext {
   // Deterministic results worth showing in status and reports (no timings, no hosts).
   void setSummary(nlohmann::json summary) { summary_ = std::move(summary); }
 
+  // Rows for the closure database (db::ClosureStore::recordTables(): closure_points,
+  // force_statistics, structure_statistics, closure_tables), keyed by column name. They travel
+  // in manifest.json and the executor inserts them in the transaction that marks the run done.
+  void addRecord(const std::string& table, nlohmann::json row) { records_[table].push_back(std::move(row)); }
   [[nodiscard]] const std::vector<ArtifactEntry>& artifacts() const { return artifacts_; }
+  [[nodiscard]] const nlohmann::json& records() const { return records_; }
   [[nodiscard]] const nlohmann::json& summary() const { return summary_; }
 
  private:
@@ -92,6 +97,7 @@ class StageContext {
   const std::atomic<bool>& stopFlag_;
   std::vector<ArtifactEntry> artifacts_;
   nlohmann::json summary_ = nlohmann::json::object();
+  nlohmann::json records_ = nlohmann::json::object();
 };
 
 }  // namespace grainbridge::workflows::stages
