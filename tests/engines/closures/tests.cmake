@@ -6,5 +6,6 @@ grainbridge_add_test(test_closures
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/Lun1984Test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/SyamlalAlgebraicTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/KineticModelTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/TabulatedClosureTest.cpp
   LIBS engines_closures
   LABELS "unit;closures")
