@@ -66,6 +66,22 @@ int main(int argc, char** argv) {
   dbShow->add_option("run", opt.runId, "run id (from db runs)")->required();
   auto* dbIntegrity = dbCmd->add_subcommand("integrity", "run SQLite's integrity check");
   addDbSource(dbIntegrity);
+  auto* dbQuery = dbCmd->add_subcommand(
+      "query", "closure points (or force / structure statistics) filtered by family, state ranges and run");
+  addDbSource(dbQuery);
+  dbQuery->add_option("--table", opt.table, "closure_points | force_statistics | structure_statistics")
+      ->check(CLI::IsMember({"closure_points", "force_statistics", "structure_statistics"}));
+  dbQuery->add_option("--family", opt.family, "only this family (simple_shear, fluidized_cell, bnp, ...)");
+  dbQuery->add_option("--where", opt.where, "COLUMN=LO:HI, COLUMN=VALUE, COLUMN=LO: or COLUMN=:HI (repeatable)");
+  dbQuery->add_option("--run", opt.runId, "only rows of this run");
+  dbQuery->add_option("--workflow", opt.workflowFilter, "only rows of this workflow's runs");
+  dbQuery->add_option("--columns", opt.columns, "comma-separated columns to show (default: every column set)");
+  dbQuery->add_option("--format", opt.format, "table | csv | json")->check(CLI::IsMember({"table", "csv", "json"}));
+  auto* dbExport = dbCmd->add_subcommand(
+      "export", "write the closure database (points, statistics, tables, runs) to FILE.json or to a folder of CSVs");
+  addDbSource(dbExport);
+  dbExport->add_option("--output,-o", opt.output, "FILE.json, or a folder")->required();
+  dbExport->add_option("--workflow", opt.workflowFilter, "only this workflow");
 
   try {
     app.parse(argc, argv);
@@ -99,6 +115,10 @@ int main(int argc, char** argv) {
       code = gb::workflows::commands::commandDbShow(opt);
     else if (*dbIntegrity)
       code = gb::workflows::commands::commandDbIntegrity(opt);
+    else if (*dbQuery)
+      code = gb::workflows::commands::commandDbQuery(opt);
+    else if (*dbExport)
+      code = gb::workflows::commands::commandDbExport(opt);
   } catch (const gb::core::json::InputError& e) {
     if (rank == 0) std::fprintf(stderr, "%s\n", e.what());
     code = 2;

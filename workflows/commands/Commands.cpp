@@ -8,9 +8,11 @@
 
 #include "core/Log.hpp"
 #include "core/parallel/Communicator.hpp"
+#include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
 #include "db/ProvenanceStore.hpp"
 #include "db/Statement.hpp"
+#include "workflows/commands/DatabaseSource.hpp"
 #include "workflows/config/WorkflowConfig.hpp"
 #include "workflows/exec/CacheCheck.hpp"
 #include "workflows/exec/InstanceRunner.hpp"
@@ -33,17 +35,6 @@ namespace {
 const stages::StageRegistry& registry() { return stages::StageRegistry::builtin(); }
 
 config::WorkflowConfig load(const CommandOptions& opt) { return config::loadWorkflow(opt.config, registry()); }
-
-fs::path databaseOf(const CommandOptions& opt) {
-  if (!opt.database.empty()) return opt.database;
-  if (!opt.config.empty()) return exec::databasePath(load(opt), opt.workDir);
-  throw UsageError("say which database: --db FILE or --config WORKFLOW.json");
-}
-
-db::Database openExisting(const fs::path& path) {
-  if (!fs::exists(path)) throw UsageError("no database at '" + path.string() + "' (has the workflow been run?)");
-  return db::Database::openReadOnly(path);
-}
 
 }  // namespace
 
@@ -228,6 +219,22 @@ int commandDbShow(const CommandOptions& opt) {
     for (const auto& a : store.artifactsOfRun(run->id)) {
       std::printf("  artifact   %-14s %s  sha256 %s  %lld bytes\n", a.kind.c_str(), a.path.c_str(), a.sha256.c_str(),
                   static_cast<long long>(a.bytes));
+    }
+    {
+      // What this run put in the closure database (db query --run shows the rows).
+      db::ClosureStore closures(database);
+      std::string records;
+      for (const auto& table : {"closure_points", "force_statistics", "structure_statistics"}) {
+        db::ClosureQuery q;
+        q.table = table;
+        q.runId = run->id;
+        const auto n = closures.query(q).size();
+        if (n > 0) records += (records.empty() ? "" : ", ") + std::to_string(n) + " " + table;
+      }
+      auto tables = database.prepare("SELECT name || '/' || quantity FROM closure_tables WHERE run_id = ?1");
+      tables.bind(1, run->id);
+      while (tables.step()) records += (records.empty() ? "table " : ", table ") + tables.columnText(0);
+      if (!records.empty()) std::printf("  records    %s\n", records.c_str());
     }
     for (const auto& up : run->upstreamKeys) {
       const auto producers = store.runsOfKey(up);

@@ -2,6 +2,7 @@
 // One function per CLI subcommand: app/main.cpp only parses arguments and dispatches here.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/Error.hpp"
 
@@ -18,6 +19,12 @@ struct CommandOptions {
   std::string workflowFilter;
   std::string format = "table";
   std::int64_t runId = 0;
+  // db query / db export
+  std::string table = "closure_points";
+  std::string family;
+  std::vector<std::string> where;  // COLUMN=LO:HI
+  std::string columns;             // comma-separated; "" = every column that is set
+  std::string output;
 };
 
 // A usage problem the parser could not catch (e.g. neither --db nor --config): exit code 2.
@@ -34,5 +41,7 @@ int commandReport(const CommandOptions& opt);
 int commandDbRuns(const CommandOptions& opt);
 int commandDbShow(const CommandOptions& opt);
 int commandDbIntegrity(const CommandOptions& opt);
+int commandDbQuery(const CommandOptions& opt);
+int commandDbExport(const CommandOptions& opt);
 
 }  // namespace grainbridge::workflows::commands

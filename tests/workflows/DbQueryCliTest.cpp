@@ -1,0 +1,100 @@
+// `grainbridge db query` and `db export` on a closure database: filters by family, state range
+// and run; table, CSV and JSON output; a clear usage error (exit 2) for an unknown column.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "db/ClosureStore.hpp"
+#include "db/Database.hpp"
+#include "db/ProvenanceStore.hpp"
+#include "tests/db/TestSupport.hpp"
+#include "tests/support/Cli.hpp"
+
+using namespace grainbridge;
+using namespace grainbridge::testing;
+using nlohmann::json;
+using ::testing::HasSubstr;
+
+namespace {
+
+json point(double solidFraction, double restitution, double pressure) {
+  return {{"family", "simple_shear"},   {"solid_fraction", solidFraction},
+          {"restitution", restitution}, {"diameter", 1e-3},
+          {"density", 2500.0},          {"frames", 10},
+          {"pressure", pressure},       {"pressure_err", 0.5}};
+}
+
+// A database with two runs: points at solid fraction 0.1, 0.2 (e 0.9) and 0.3 (e 0.7).
+std::filesystem::path closureDatabase(const TempDir& dir) {
+  const auto path = dir.path() / "gb.sqlite";
+  auto database = db::Database::open(path);
+  database.transaction([&](db::Database& d) {
+    db::ProvenanceStore provenance(d);
+    const auto invocation = provenance.insertInvocation(db::test::sampleInvocation());
+    const auto run1 = provenance.insertRun(db::test::sampleRun(invocation, "key-one"));
+    const auto run2 = provenance.insertRun(db::test::sampleRun(invocation, "key-two"));
+    db::ClosureStore store(d);
+    store.insertRecords(run1, {{"closure_points", {point(0.1, 0.9, 10.0), point(0.2, 0.9, 20.0)}}});
+    store.insertRecords(run2, {{"closure_points", {point(0.3, 0.7, 30.0)}}});
+  });
+  return path;
+}
+
+}  // namespace
+
+TEST(DbQueryCli, FiltersByStateRangeAndPrintsCsv) {
+  TempDir dir;
+  const auto path = closureDatabase(dir);
+  const auto r = runGrainbridge(dir.path(), "db query --db '" + path.string() +
+                                                "' --where solid_fraction=0.15:0.35 --columns "
+                                                "solid_fraction,restitution,pressure,run_key --format csv");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output, "solid_fraction,restitution,pressure,run_key\n0.2,0.9,20,key-one\n0.3,0.7,30,key-two\n");
+}
+
+TEST(DbQueryCli, ExactValuesRunsAndJson) {
+  TempDir dir;
+  const auto path = closureDatabase(dir);
+  const auto r = runGrainbridge(
+      dir.path(), "db query --db '" + path.string() + "' --where restitution=0.9 --where pressure=15: --format json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto rows = json::parse(r.output);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(rows[0]["solid_fraction"].get<double>(), 0.2);
+  EXPECT_EQ(rows[0]["family"], "simple_shear");
+  const auto table = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --run 2");
+  ASSERT_EQ(table.exitCode, 0) << table.output;
+  EXPECT_THAT(table.output, HasSubstr("(1 row)"));
+  EXPECT_THAT(table.output, HasSubstr("key-two"));
+}
+
+TEST(DbQueryCli, UnknownColumnsAreAUsageErrorListingTheColumns) {
+  TempDir dir;
+  const auto path = closureDatabase(dir);
+  auto r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --where phi=0.1:0.2");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.output, HasSubstr("no column \"phi\" in closure_points (columns: id, run_id, family"));
+  r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --where solid_fraction=a:0.2");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.output, HasSubstr("\"a\" is not a number"));
+  r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --columns pressure,presure");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.output, HasSubstr("--columns: no column \"presure\""));
+}
+
+TEST(DbQueryCli, ExportWritesEveryTableAsJsonOrCsv) {
+  TempDir dir;
+  const auto path = closureDatabase(dir);
+  auto r = runGrainbridge(dir.path(), "db export --db '" + path.string() + "' -o all.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto all = json::parse(readText(dir.path() / "all.json"));
+  EXPECT_EQ(all["closure_points"].size(), 3u);
+  EXPECT_EQ(all["runs"].size(), 2u);
+  EXPECT_EQ(all["runs"][0]["key"], "key-one");
+  r = runGrainbridge(dir.path(), "db export --db '" + path.string() + "' -o folder");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::string csv = readText(dir.path() / "folder/closure_points.csv");
+  EXPECT_THAT(csv, HasSubstr("id,run_id,family,species,solid_fraction"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
+}
