@@ -1,7 +1,9 @@
 #include "workflows/stages/StageRegistry.hpp"
 
 #include "core/Error.hpp"
+#include "workflows/stages/CompareStage.hpp"
 #include "workflows/stages/DemStage.hpp"
+#include "workflows/stages/ExtractStage.hpp"
 #include "workflows/stages/ParticleGasStage.hpp"
 #include "workflows/stages/ReportStage.hpp"
 
@@ -14,6 +16,8 @@ const StageRegistry& StageRegistry::builtin() {
     // (dem, tfdem, mfm) and the closure stages (extract, tabulate, compare) join this list.
     types.push_back(std::make_unique<ParticleGasStage>());
     types.push_back(std::make_unique<DemStage>());
+    types.push_back(std::make_unique<ExtractStage>());
+    types.push_back(std::make_unique<CompareStage>());
     types.push_back(std::make_unique<ReportStage>());
     return StageRegistry(std::move(types));
   }();

@@ -1,0 +1,156 @@
+// Eq. 2.3 on frames of the DEM engine equals the whole-domain stress the engine prints
+// (grainbridge::dem::wholeDomainStress) to round-off: a periodic gas with contacts, spheres
+// landing on a floor (wall contacts: the wall as j at the contact point), and Lees-Edwards shear.
+// Coarse graining on a one-cell grid gives the same tensor, and the cells of a finer grid add
+// up to the whole-domain contact stress for every kernel. Links engines_dem in the test only.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "engines/dem/DomainStress.hpp"
+#include "engines/dem/Insertion.hpp"
+#include "extract/coarse/CoarseGrain.hpp"
+#include "extract/coarse/DomainAverages.hpp"
+#include "tests/engines/dem/DemTestSupport.hpp"
+
+using namespace grainbridge;
+using namespace grainbridge::dem::testing;
+namespace coarse = grainbridge::extract::coarse;
+
+namespace {
+
+double boxVolume(const core::data::ParticleFrame& f) { return (f.domain.hi - f.domain.lo).prod(); }
+
+void expectRoundOff(const Mat3& got, const Mat3& want, const char* what) {
+  const double relative = (got - want).norm() / want.norm();
+  std::printf("  %s: |got - reference| / |reference| = %.1e\n", what, relative);
+  EXPECT_LT(relative, 1e-12) << what << "\n" << got << "\nreference\n" << want;
+}
+
+core::data::ParticleFrame periodicGasFrame() {
+  const dem::PairMaterial m = table61Particle();
+  Gas g = periodicGas(600, 0.35, 4.0, m, 2e-4, 5);
+  dem::Simulation sim(g.setup, g.particles);
+  sim.run(300);
+  sim.step(true);
+  return sim.frame();
+}
+
+// Spheres settling on a floor wall in a box periodic in x and y (a few layers deep), with
+// background damping (Eq. 6.7) so that they are resting on the wall when the frame is taken.
+core::data::ParticleFrame floorFrame() {
+  dem::SimulationSetup s = openBox(table61Particle());
+  s.lo = Vec3(-2, -2, -1);
+  s.hi = Vec3(2, 2, 20);
+  s.periodic = {true, true, false};
+  s.gravity = Vec3(0, 0, -1);
+  s.backgroundDamping = 1.0;
+  s.walls.push_back(floorWall(table61Wall()));
+  dem::InsertionRequest rq;
+  rq.lo = Vec3(-2, -2, 0.55);
+  rq.hi = Vec3(2, 2, 7.5);
+  rq.periodic = {true, true, false};
+  rq.radii.assign(60, 0.5);
+  std::mt19937_64 rng(8);
+  const auto centres = dem::insertRandomly(rq, rng);
+  dem::Particles p;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    p.addOwned(static_cast<std::int64_t>(i), 0, 0.5, sphereMass(1.0, 1.91), centres[i], Vec3(0.1, 0, -2), Vec3::Zero(),
+               false);
+  }
+  dem::Simulation sim(s, p);
+  sim.run(27000);  // settled by t = 5.4 t0
+  sim.step(true);
+  return sim.frame();
+}
+
+core::data::ParticleFrame shearFrame() {
+  const double rho = 6.0 / M_PI;  // d = 1, m = 1
+  dem::PairMaterial mat;
+  mat.kn = 1e5 * rho;
+  mat.gammaN = dem::gammaForRestitution(0.9, mat.kn, 0.5);
+  const double box = std::cbrt(250 * M_PI / 6.0 / 0.35);
+  dem::SimulationSetup s;
+  s.lo = Vec3::Zero();
+  s.hi = Vec3::Constant(box);
+  s.periodic = {true, true, true};
+  s.dt = dem::linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0;
+  s.skin = 0.3;
+  s.pairMaterial = {mat};
+  s.shearRate = 1.0;
+  dem::InsertionRequest rq;
+  rq.lo = s.lo;
+  rq.hi = s.hi;
+  rq.periodic = {true, true, true};
+  rq.radii.assign(250, 0.5);
+  std::mt19937_64 rng(4);
+  const auto centres = dem::insertRandomly(rq, rng);
+  std::normal_distribution<double> noise(0.0, 0.3);
+  dem::Particles p;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const Vec3 v(s.shearRate * (centres[i][1] - 0.5 * box) + noise(rng), noise(rng), noise(rng));
+    p.addOwned(static_cast<std::int64_t>(i), 0, 0.5, 1.0, centres[i], v, Vec3::Zero(), false);
+  }
+  dem::Simulation sim(s, p);
+  sim.run(1500);
+  sim.step(true);
+  return sim.frame();
+}
+
+}  // namespace
+
+TEST(DemFrameStress, PeriodicGasMatchesTheEngineAndCellsAddUp) {
+  const auto f = periodicGasFrame();
+  ASSERT_GT(f.contacts.size(), 20u);
+  const Mat3 engine = dem::wholeDomainStress(f, boxVolume(f));
+  const auto avg = coarse::averageWholeDomain(f);
+  expectRoundOff(avg.stress, engine, "whole domain");
+  const core::grid::CellGrid one(f.domain.lo, f.domain.hi, {1, 1, 1}, {true, true, true});
+  expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], engine, "one bin");
+
+  const core::grid::CellGrid grid(f.domain.lo, f.domain.hi, {3, 3, 3}, {true, true, true});
+  for (const auto& kernel : {coarse::CoarseGrainingKernel::bin(), coarse::CoarseGrainingKernel::overlap(),
+                             coarse::CoarseGrainingKernel::gaussian(1.0), coarse::CoarseGrainingKernel::lucy(1.0)}) {
+    const auto cg = coarse::coarseGrain(f, grid, kernel);
+    Mat3 sum = Mat3::Zero();
+    for (const Mat3& s : cg.contactStress) sum += s * grid.cellVolume();
+    expectRoundOff(sum / boxVolume(f), avg.contactStress, kernel.name().c_str());
+  }
+}
+
+TEST(DemFrameStress, WallContactsCountWithTheWallAsJAtTheContactPoint) {
+  const auto f = floorFrame();
+  ASSERT_GT(f.wallContacts.size(), 8u);
+  ASSERT_GT(f.contacts.size(), 40u);
+  const Mat3 engine = dem::wholeDomainStress(f, boxVolume(f));
+  expectRoundOff(coarse::averageWholeDomain(f).stress, engine, "whole domain");
+  const core::grid::CellGrid one(f.domain.lo, f.domain.hi, {1, 1, 1}, {true, true, false});
+  expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], engine, "one bin");
+  std::printf("settled bed: %zu wall contacts, %zu pair contacts, sigma_zz %.4g\n", f.wallContacts.size(),
+              f.contacts.size(), engine(2, 2));
+}
+
+TEST(DemFrameStress, LeesEdwardsDiffersOnlyByTheEnginesMeanVelocityShift) {
+  // Both take C about u_x = gammadot (y - y_mid); extract also about the mean peculiar velocity,
+  // the engine about the mean of v, shifted by a = gammadot (<y>_m - y_mid). So xx differs by
+  // exactly M a^2 / V and the rest agrees to round-off (DomainAverages.hpp). If the engine is
+  // changed to subtract the mean of v - u_LE, a drops out here.
+  const auto f = shearFrame();
+  ASSERT_GT(f.contacts.size(), 3u);
+  const double volume = boxVolume(f);
+  const Mat3 engine = dem::wholeDomainStress(f, volume);
+  const auto avg = coarse::averageWholeDomain(f);
+  double mass = 0.0, my = 0.0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    mass += f.mass[i];
+    my += f.mass[i] * f.position[i][1];
+  }
+  const double a = f.domain.leesEdwardsShearRate * (my / mass - 0.5 * (f.domain.lo[1] + f.domain.hi[1]));
+  Mat3 expected = engine;
+  expected(0, 0) -= mass * a * a / volume;
+  std::printf("Lees-Edwards frame: a = %.3e, engine xx - extract xx = %.3e of %.3e\n", a,
+              engine(0, 0) - avg.stress(0, 0), engine(0, 0));
+  expectRoundOff(avg.stress, expected, "whole domain");
+  const core::grid::CellGrid one(f.domain.lo, f.domain.hi, {1, 1, 1}, {true, true, true});
+  expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], expected, "one bin");
+}

@@ -1,0 +1,33 @@
+#pragma once
+// `compare`: DEM-extracted closures beside kinetic theory at the same state. Gathers extract
+// instances; for each closure point it evaluates every kinetic-theory model of
+// engines/closures (lun1984 first: the model the reference's Chapter 5 ran) and writes the
+// relative deviations as CSV and SVG plots (gnuplot) with an HTML page.
+//
+// Under simple shear the comparison is in shear units, as kinetic theory predicts it: steady
+// shear balances shear work and collisional dissipation, mu(T) gammadot^2 = J(T); with
+// mu = mu1 sqrt(T) and J = J1 T^(3/2) (both models, no gas) that gives T = (mu1/J1)
+// gammadot^2, and p*, tau*, T* follow at that temperature. Without shear (a cooling gas, a
+// fluidized cell) the theta-scaled forms p/(rho theta) and J d/(rho theta^(3/2)) are compared
+// at the measured temperature.
+#include "workflows/stages/StageType.hpp"
+
+namespace grainbridge::workflows::stages {
+
+class CompareStage final : public StageType {
+ public:
+  CompareStage();
+  [[nodiscard]] std::string name() const override { return "compare"; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::string summary() const override {
+    return "DEM closures against kinetic theory (lun1984, syamlal_algebraic): CSV, plots and an HTML page";
+  }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
+  void run(StageContext& ctx) const override;
+
+ private:
+  params::ParamSchema schema_;
+};
+
+}  // namespace grainbridge::workflows::stages

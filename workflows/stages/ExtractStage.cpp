@@ -1,0 +1,262 @@
+#include "workflows/stages/ExtractStage.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "core/Files.hpp"
+#include "core/Log.hpp"
+#include "core/io/ParticleFrameReader.hpp"
+#include "extract/coarse/BlockAverage.hpp"
+#include "extract/coarse/DissipationRate.hpp"
+#include "extract/coarse/DomainAverages.hpp"
+#include "extract/structure/ForceNetworks.hpp"
+#include "extract/structure/MultiPassMst.hpp"
+#include "workflows/stages/DemSetup.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using core::units::Dimension;
+using nlohmann::json;
+using params::ParamSpec;
+
+ExtractStage::ExtractStage() {
+  schema_
+      .add(ParamSpec::string("family").defaultValue("generic").doc(
+          "closure family of the points (simple_shear, fluidized_cell, bnp, ...): what db query filters on"))
+      .add(ParamSpec::quantity("start_time", Dimension::timeDim())
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("frames before this time are discarded (transient)"))
+      .add(ParamSpec::number("start_strain")
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("under Lees-Edwards shear: frames before this strain (shear rate x time) are discarded"))
+      .add(ParamSpec::boolean("structure")
+               .defaultValue(false)
+               .doc("force networks and the multi-pass MST of every averaged frame (structure_statistics)"))
+      .add(ParamSpec::integer("mst_passes").defaultValue(5).min(1).max(100).doc("MST passes (Section 6.3.3)"))
+      .add(ParamSpec::number("mst_elongation")
+               .defaultValue(1.2)
+               .min(1.0)
+               .doc("elongation factor of previously selected MST edges"));
+}
+
+namespace {
+
+// One time-averaged quantity: mean and block-averaging standard error.
+struct Averaged {
+  double mean = 0.0;
+  double error = 0.0;
+};
+
+Averaged averaged(const std::vector<double>& samples) {
+  const auto b = extract::coarse::blockAverage(samples);
+  return {b.mean, b.standardError};
+}
+
+// Relative errors add in quadrature for a product of powers (covariances neglected).
+double relativeError(std::initializer_list<std::pair<Averaged, double>> factors) {
+  double sum = 0.0;
+  for (const auto& [a, power] : factors) {
+    if (a.mean != 0.0) sum += std::pow(power * a.error / a.mean, 2);
+  }
+  return std::sqrt(sum);
+}
+
+// Restitution and friction of the particle pairs of a dem upstream (its first species pair):
+// the state a closure point belongs to. Other upstreams (particle_gas) have none.
+void upstreamMaterial(const UpstreamInstance& up, json& row) {
+  if (up.stageType != "dem") return;
+  const json& params = up.manifest.at("params");
+  const DemSetup setup = makeDemSetup(params);
+  if (!setup.timings.empty()) row["restitution"] = setup.timings.front().restitution;
+  row["friction"] = params.at("contact").at("mu").get<double>();
+}
+
+}  // namespace
+
+void ExtractStage::run(StageContext& ctx) const {
+  const json& p = ctx.params();
+  if (ctx.inputs().size() != 1) {
+    throw Error("extract: needs exactly one upstream instance with particle frames, got " +
+                std::to_string(ctx.inputs().size()));
+  }
+  const UpstreamInstance& up = ctx.inputs().front();
+  const auto files = core::io::listParticleFrames(up.dir);
+  if (files.empty()) {
+    throw Error("extract: upstream " + up.stage + " (" + up.dir.string() + ") has no particle frames");
+  }
+
+  // Frames after the transient.
+  std::vector<std::filesystem::path> selected;
+  double firstTime = 0.0, lastTime = 0.0;
+  double shearRate = 0.0;
+  for (const auto& f : files) {
+    const auto s = core::io::readParticleFrameSummary(f);
+    lastTime = s.time;
+    if (f == files.front()) firstTime = s.time;
+  }
+  {
+    const auto first = core::io::readParticleFrame(files.front());
+    shearRate = first.domain.leesEdwardsShearRate;
+  }
+  double start = p.at("start_time");
+  if (p.at("start_strain").get<double>() > 0.0) {
+    if (shearRate == 0.0) {
+      throw Error("/stages/" + ctx.stage() + "/params/start_strain: upstream " + up.stage +
+                  " has no Lees-Edwards shear rate; use start_time");
+    }
+    start = std::max(start, p.at("start_strain").get<double>() / std::abs(shearRate));
+  }
+  for (const auto& f : files) {
+    if (core::io::readParticleFrameSummary(f).time >= start * (1.0 - 1e-12)) selected.push_back(f);
+  }
+  if (selected.empty()) {
+    std::ostringstream msg;
+    msg << "/stages/" << ctx.stage() << "/params: no frame of " << up.stage << " at or after time " << start
+        << " s (its " << files.size() << " frames span " << firstTime << " to " << lastTime << " s)";
+    throw Error(msg.str());
+  }
+  spdlog::info("{}: averaging {} of {} frames of {} (from t = {:.6g} s)", ctx.stage(), selected.size(), files.size(),
+               up.stage, start);
+
+  // Per-frame whole-domain values.
+  std::vector<double> time, solidFraction, temperature, pressure, shearStress, dissipation, coordination;
+  double diameter = 0.0, density = 0.0;
+  std::ostringstream perFrame;
+  perFrame.precision(12);
+  perFrame << "time,step,solid_fraction,granular_temperature,pressure,pressure_kinetic,pressure_contact,sigma_xy,"
+              "dissipation_rate,coordination,multi_contact_ratio\n";
+  json structureRows = json::array();
+  for (const auto& file : selected) {
+    if (ctx.stopRequested()) throw StageInterrupted{};
+    const auto frame = core::io::readParticleFrame(file);
+    const auto a = extract::coarse::averageWholeDomain(frame);
+    const double J = extract::coarse::dissipationRate(frame, a.volume);
+    time.push_back(frame.time);
+    solidFraction.push_back(a.solidFraction);
+    temperature.push_back(a.granularTemperature);
+    pressure.push_back(a.pressure);
+    shearStress.push_back(-a.stress(0, 1));  // positive where the shear does work on the grains
+    dissipation.push_back(J);
+    coordination.push_back(a.coordinationNumber);
+    perFrame << frame.time << ',' << frame.step << ',' << a.solidFraction << ',' << a.granularTemperature << ','
+             << a.pressure << ',' << a.kineticStress.trace() / 3.0 << ',' << a.contactStress.trace() / 3.0 << ','
+             << a.stress(0, 1) << ',' << J << ',' << a.coordinationNumber << ',' << a.multiContactRatio << '\n';
+    if (diameter == 0.0) {
+      // Mean diameter and material density of the grains (monodisperse closures; a mixture's
+      // points carry the number-mean diameter).
+      double sumD = 0.0, sumM = 0.0, sumV = 0.0;
+      for (std::size_t i = 0; i < frame.size(); ++i) {
+        sumD += 2.0 * frame.radius[i];
+        sumM += frame.mass[i];
+        sumV += 4.0 / 3.0 * M_PI * std::pow(frame.radius[i], 3);
+      }
+      diameter = sumD / static_cast<double>(frame.size());
+      density = sumM / sumV;
+    }
+    if (p.at("structure").get<bool>()) {
+      const auto networks = extract::structure::analyzeForceNetworks(frame);
+      json n = {{"family", p.at("family")},
+                {"kind", "force_networks"},
+                {"pass", 0},
+                {"frame_step", frame.step},
+                {"time", frame.time},
+                {"networks", networks.networks.size()},
+                {"strong_particles", networks.strongParticles}};
+      if (!networks.networks.empty()) {
+        const auto& largest = networks.networks.front();
+        n["largest_particles"] = largest.particleIds.size();
+        n["largest_edges"] = largest.contacts;
+        n["largest_coordination"] = largest.coordination;
+        n["largest_extent"] = largest.extent.largestCentreDistance;
+      }
+      structureRows.push_back(n);
+      extract::structure::MultiPassMstOptions options;
+      options.passes = static_cast<int>(p.at("mst_passes").get<std::int64_t>());
+      options.elongationFactor = p.at("mst_elongation");
+      const auto mst = extract::structure::runMultiPassMst(frame, options);
+      for (std::size_t pass = 0; pass < mst.passes.size(); ++pass) {
+        const auto& mp = mst.passes[pass];
+        structureRows.push_back({{"family", p.at("family")},
+                                 {"kind", "mst"},
+                                 {"pass", pass + 1},
+                                 {"frame_step", frame.step},
+                                 {"time", frame.time},
+                                 {"largest_particles", mp.largestTree.particles},
+                                 {"largest_edges", mp.largestTree.edges},
+                                 {"other_trees", mp.otherTrees},
+                                 {"other_edges", mp.otherTreeEdges}});
+      }
+    }
+  }
+  core::writeFileAtomically(ctx.outputDir() / "frames.csv", perFrame.str());
+  ctx.addArtifact("frames.csv", "csv");
+
+  // The closure point: time averages with their block-averaging errors.
+  const Averaged eps = averaged(solidFraction), T = averaged(temperature), P = averaged(pressure),
+                 tau = averaged(shearStress), J = averaged(dissipation), Z = averaged(coordination);
+  json row = {{"family", p.at("family")},
+              {"solid_fraction", eps.mean},
+              {"diameter", diameter},
+              {"density", density},
+              {"frames", selected.size()},
+              {"granular_temperature", T.mean},
+              {"granular_temperature_err", T.error},
+              {"pressure", P.mean},
+              {"pressure_err", P.error},
+              {"dissipation_rate", J.mean},
+              {"dissipation_rate_err", J.error},
+              {"coordination", Z.mean},
+              {"coordination_err", Z.error},
+              {"extra_json", {{"solid_fraction_err", eps.error}, {"start_time", start}, {"upstream_stage", up.stage}}}};
+  upstreamMaterial(up, row);
+  const double rho = density, d = diameter;
+  if (T.mean > 0.0) {
+    // The theta-scaled forms a continuum engine uses with its own temperature (DESIGN.md).
+    const double pTheta = P.mean / (rho * T.mean);
+    row["p_theta"] = pTheta;
+    row["p_theta_err"] = std::abs(pTheta) * relativeError({{P, 1.0}, {T, 1.0}});
+    const double jTheta = J.mean * d / (rho * std::pow(T.mean, 1.5));
+    row["j_theta"] = jTheta;
+    row["j_theta_err"] = std::abs(jTheta) * relativeError({{J, 1.0}, {T, 1.5}});
+  }
+  if (shearRate != 0.0) {
+    const double g = std::abs(shearRate);
+    row["shear_rate"] = g;
+    row["shear_stress"] = tau.mean;
+    row["shear_stress_err"] = tau.error;
+    const Averaged mu{tau.mean / g, tau.error / g};
+    row["viscosity"] = mu.mean;
+    row["viscosity_err"] = mu.error;
+    const double scale = rho * d * d * g * g;
+    row["p_shear"] = P.mean / scale;
+    row["p_shear_err"] = P.error / scale;
+    row["tau_shear"] = tau.mean / scale;
+    row["tau_shear_err"] = tau.error / scale;
+    row["t_shear"] = T.mean / (d * d * g * g);
+    row["t_shear_err"] = T.error / (d * d * g * g);
+    if (T.mean > 0.0) {
+      const double etaTheta = mu.mean / (rho * d * std::sqrt(T.mean));
+      row["eta_theta"] = etaTheta;
+      row["eta_theta_err"] = std::abs(etaTheta) * relativeError({{mu, 1.0}, {T, 0.5}});
+    }
+  }
+  ctx.addRecord("closure_points", row);
+  for (auto& s : structureRows) ctx.addRecord("structure_statistics", std::move(s));
+
+  std::ostringstream point;
+  point.precision(12);
+  point << "quantity,value\n";
+  for (const auto& [k, v] : row.items()) {
+    if (v.is_number()) point << k << ',' << v.get<double>() << '\n';
+  }
+  core::writeFileAtomically(ctx.outputDir() / "closure_point.csv", point.str());
+  ctx.addArtifact("closure_point.csv", "csv");
+  json summary = row;
+  summary.erase("extra_json");
+  ctx.setSummary(summary);
+}
+
+}  // namespace grainbridge::workflows::stages

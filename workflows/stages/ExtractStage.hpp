@@ -1,0 +1,28 @@
+#pragma once
+// `extract`: the micro-to-macro step. Reads the particle frames of one upstream instance (dem,
+// particle_gas) through core's data model, averages each frame over the whole domain (Eq. 2.3
+// stress, Eq. 3.38 temperature, solid fraction, coordination, dissipation rate), time-averages
+// the frames after a start time or strain with block-averaging errors, and reports one closure
+// point to the closure database; optionally force networks and the multi-pass MST per frame
+// (structure_statistics).
+#include "workflows/stages/StageType.hpp"
+
+namespace grainbridge::workflows::stages {
+
+class ExtractStage final : public StageType {
+ public:
+  ExtractStage();
+  [[nodiscard]] std::string name() const override { return "extract"; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::string summary() const override {
+    return "closure point (stress, temperature, dissipation, ...) and structure statistics from particle frames";
+  }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] InputMode inputMode() const override { return InputMode::PerInstance; }
+  void run(StageContext& ctx) const override;
+
+ private:
+  params::ParamSchema schema_;
+};
+
+}  // namespace grainbridge::workflows::stages
