@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "db/ClosureStore.hpp"
+#include "db/Database.hpp"
 #include "tests/support/Cli.hpp"
 
 namespace fs = std::filesystem;
@@ -48,4 +50,26 @@ TEST(BrazilNutSmoke, RunsWithPreparationAndWallFrictionSweep) {
   }
   EXPECT_EQ(instances, 2);  // wall friction 0.5 and 0
   EXPECT_TRUE(fs::exists(work.path() / "results/bnp-smoke/summary"));
+
+  // The extraction on the smoke frames: force PDFs (a fit the few forces cannot constrain is
+  // recorded with its reason), force networks and five MST passes per frame, one closure point
+  // per instance, all in the closure database.
+  auto database = grainbridge::db::Database::openReadOnly(work.path() / "results/bnp-smoke/grainbridge.sqlite");
+  grainbridge::db::ClosureStore store(database);
+  grainbridge::db::ClosureQuery q;
+  q.family = "bnp";
+  EXPECT_EQ(store.query(q).size(), 2u);
+  q.table = "force_statistics";
+  const auto forces = store.query(q);
+  EXPECT_EQ(forces.size(), 4u);  // Eqs. 6.11 and 6.13 for each wall friction
+  for (const auto& row : forces) {
+    EXPECT_TRUE(row["a"].is_number() || row["extra_json"].get<std::string>().find("fit_error") != std::string::npos)
+        << row.dump();
+  }
+  q.table = "structure_statistics";
+  const auto structure = store.query(q);
+  EXPECT_GT(structure.size(), 0u);
+  int mstPasses = 0;
+  for (const auto& row : structure) mstPasses += row["kind"] == "mst" ? 1 : 0;
+  EXPECT_EQ(mstPasses % 5, 0);
 }
