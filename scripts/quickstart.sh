@@ -17,5 +17,6 @@ report=$(build-release/bin/grainbridge report configs/quickstart.json)
 echo
 echo "Report:   $report"
 echo "Database: results/quickstart/grainbridge.sqlite   (sqlite3 results/quickstart/grainbridge.sqlite '.tables')"
-echo "Frames:   results/quickstart/gas/*/particles.xmf   (open in ParaView)"
+echo "Closures: build-release/bin/grainbridge db query --config configs/quickstart.json"
+echo "Frames:   results/quickstart/shear/*/particles.xmf   (open in ParaView)"
 exit $status

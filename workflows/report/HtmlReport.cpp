@@ -101,6 +101,7 @@ ReportFiles writeHtmlReport(const std::string& title, const std::vector<stages::
     for (const auto& k : sweepKeys) html << "<th>" << escapeHtml(k) << "</th>";
     for (const auto& k : summaryKeys) html << "<th>" << escapeHtml(k) << "</th>";
     html << "<th>key</th><th>artifacts</th></tr>\n";
+    std::vector<std::string> figures;
     for (const auto* inst : list) {
       html << "<tr>";
       const json sweep = inst->manifest.value("sweep_point", json::object());
@@ -117,6 +118,12 @@ ReportFiles writeHtmlReport(const std::string& title, const std::vector<stages::
         html << "<a href=\"" << escapeHtml((link / p).generic_string()) << "\">" << escapeHtml(p) << "</a> ";
       }
       html << "</td></tr>\n";
+      // Figures an upstream stage drew (compare's plots) are shown under its table.
+      for (const auto& a : artifacts) {
+        if (a.value("kind", "") == "svg") {
+          figures.push_back((link / a.at("path").get<std::string>()).generic_string());
+        }
+      }
       for (const auto& [k, v] : sweep.items())
         csv << csvField(stage) << ',' << csvField(inst->stageType) << ',' << inst->key << ",sweep." << csvField(k)
             << ',' << csvField(show(v)) << '\n';
@@ -125,6 +132,7 @@ ReportFiles writeHtmlReport(const std::string& title, const std::vector<stages::
             << csvField(show(v)) << '\n';
     }
     html << "</table>\n";
+    for (const auto& f : figures) html << "<img src=\"" << escapeHtml(f) << "\" alt=\"" << escapeHtml(f) << "\">\n";
 
     // Plots: each summary value that varies, against the first numeric swept parameter.
     if (list.size() >= 2 && !sweepKeys.empty()) {

@@ -6,6 +6,7 @@
 #include "workflows/stages/ExtractStage.hpp"
 #include "workflows/stages/ParticleGasStage.hpp"
 #include "workflows/stages/ReportStage.hpp"
+#include "workflows/stages/TabulateStage.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -17,6 +18,7 @@ const StageRegistry& StageRegistry::builtin() {
     types.push_back(std::make_unique<ParticleGasStage>());
     types.push_back(std::make_unique<DemStage>());
     types.push_back(std::make_unique<ExtractStage>());
+    types.push_back(std::make_unique<TabulateStage>());
     types.push_back(std::make_unique<CompareStage>());
     types.push_back(std::make_unique<ReportStage>());
     return StageRegistry(std::move(types));

@@ -1,0 +1,168 @@
+#include "workflows/stages/TabulateStage.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "core/ClosureTable.hpp"
+#include "core/Error.hpp"
+#include "core/Files.hpp"
+#include "core/Log.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using nlohmann::json;
+using params::ParamSpec;
+
+TabulateStage::TabulateStage() {
+  schema_
+      .add(ParamSpec::string("table").required().doc("name of the closure tables (db query, engines load it by name)"))
+      .add(ParamSpec::string("second_variable")
+               .defaultValue("restitution")
+               .options({"", "restitution"})
+               .doc("second axis of the tables; \"\" for tables in solid fraction only"))
+      .add(ParamSpec::number("friction")
+               .min(0.0)
+               .doc("use the points of this friction coefficient (required when the points have several)"));
+}
+
+namespace {
+
+// States within this relative distance are the same grid node (measured solid fractions of one
+// nominal state differ in the last digits only: a periodic box's volume is fixed).
+bool same(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+std::vector<double> distinct(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  std::vector<double> out;
+  for (double x : v) {
+    if (out.empty() || !same(out.back(), x)) out.push_back(x);
+  }
+  return out;
+}
+
+std::size_t indexOf(const std::vector<double>& axis, double x) {
+  for (std::size_t i = 0; i < axis.size(); ++i) {
+    if (same(axis[i], x)) return i;
+  }
+  return axis.size();
+}
+
+}  // namespace
+
+void TabulateStage::run(StageContext& ctx) const {
+  const json& p = ctx.params();
+  const std::string name = p.at("table");
+  const std::string second = p.at("second_variable");
+  std::vector<json> points;
+  for (const auto& up : ctx.inputs()) {
+    if (up.stageType != "extract") {
+      throw Error("tabulate: upstream " + up.stage + " is a " + up.stageType + " stage; tabulate takes extract stages");
+    }
+    json s = up.manifest.at("summary");
+    s["__key"] = up.key;
+    points.push_back(std::move(s));
+  }
+  if (points.empty()) throw Error("tabulate: no upstream extract instances; give it \"from\"");
+
+  // One friction per table.
+  std::vector<double> frictions;
+  for (const auto& pt : points) frictions.push_back(pt.value("friction", 0.0));
+  frictions = distinct(frictions);
+  double friction = frictions.front();
+  if (p.contains("friction")) {
+    friction = p.at("friction");
+  } else if (frictions.size() > 1) {
+    std::ostringstream msg;
+    msg << "/stages/" << ctx.stage() << "/params/friction: the points have " << frictions.size()
+        << " friction coefficients (";
+    for (std::size_t i = 0; i < frictions.size(); ++i) msg << (i ? ", " : "") << frictions[i];
+    msg << "); say which one this table is for";
+    throw Error(msg.str());
+  }
+  std::erase_if(points, [&](const json& pt) { return !same(pt.value("friction", 0.0), friction); });
+  if (points.empty()) {
+    throw Error("/stages/" + ctx.stage() + "/params/friction: no closure point has friction " +
+                std::to_string(friction));
+  }
+
+  std::vector<double> xs, ys;
+  for (const auto& pt : points) {
+    xs.push_back(pt.at("solid_fraction"));
+    if (!second.empty()) {
+      if (!pt.contains(second))
+        throw Error("tabulate: a closure point (" + pt["__key"].get<std::string>().substr(0, 12) + ") has no " +
+                    second);
+      ys.push_back(pt.at(second));
+    }
+  }
+  const auto xAxis = distinct(xs);
+  const auto yAxis = second.empty() ? std::vector<double>{} : distinct(ys);
+  const std::size_t rows = std::max<std::size_t>(1, yAxis.size());
+  std::vector<const json*> node(xAxis.size() * rows, nullptr);
+  for (const auto& pt : points) {
+    const std::size_t ix = indexOf(xAxis, pt.at("solid_fraction"));
+    const std::size_t iy = second.empty() ? 0 : indexOf(yAxis, pt.at(second));
+    auto& slot = node[iy * xAxis.size() + ix];
+    if (slot != nullptr) {
+      std::ostringstream msg;
+      msg << "tabulate: two closure points at solid fraction " << xAxis[ix];
+      if (!second.empty()) msg << ", " << second << " " << yAxis[iy];
+      msg << " (from extract instances " << (*slot)["__key"].get<std::string>().substr(0, 12) << " and "
+          << pt["__key"].get<std::string>().substr(0, 12) << ")";
+      throw Error(msg.str());
+    }
+    slot = &pt;
+  }
+  for (std::size_t k = 0; k < node.size(); ++k) {
+    if (node[k] == nullptr) {
+      std::ostringstream msg;
+      msg << "tabulate: no closure point at solid fraction " << xAxis[k % xAxis.size()];
+      if (!second.empty()) msg << ", " << second << " " << yAxis[k / xAxis.size()];
+      msg << ": the table needs every combination of the " << xAxis.size() << " solid fractions"
+          << (second.empty() ? "" : " and " + std::to_string(yAxis.size()) + " " + second + "s");
+      throw Error(msg.str());
+    }
+  }
+
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "table,quantity,solid_fraction," << (second.empty() ? "second" : second) << ",value,uncertainty\n";
+  json summary = {{"table", name}, {"friction", friction}, {"solid_fractions", xAxis.size()}, {"rows", rows}};
+  json quantities = json::array();
+  for (const char* q : {"p_theta", "eta_theta", "j_theta"}) {
+    bool everywhere = true;
+    for (const auto* pt : node) everywhere = everywhere && pt->contains(q) && (*pt)[q].is_number();
+    if (!everywhere) {
+      spdlog::info("{}: no {} table: not every point has it (eta_theta needs sheared points)", ctx.stage(), q);
+      continue;
+    }
+    std::vector<double> values, errors;
+    for (const auto* pt : node) {
+      values.push_back((*pt)[q]);
+      errors.push_back(pt->value(std::string(q) + "_err", 0.0));
+    }
+    // Building the table checks it (axes, finite values) before it reaches the database.
+    core::ClosureTable table(q, xAxis, second, yAxis, values);
+    ctx.addRecord("closure_tables", {{"name", name},
+                                     {"quantity", q},
+                                     {"second_variable", second},
+                                     {"solid_fractions", xAxis},
+                                     {"seconds", yAxis},
+                                     {"values", values},
+                                     {"uncertainties", errors},
+                                     {"filters", {{"friction", friction}}}});
+    for (std::size_t k = 0; k < node.size(); ++k) {
+      csv << name << ',' << q << ',' << xAxis[k % xAxis.size()] << ','
+          << (second.empty() ? 0.0 : yAxis[k / xAxis.size()]) << ',' << values[k] << ',' << errors[k] << '\n';
+    }
+    quantities.push_back(q);
+  }
+  if (quantities.empty()) throw Error("tabulate: the closure points have none of p_theta, eta_theta, j_theta");
+  summary["quantities"] = quantities;
+  core::writeFileAtomically(ctx.outputDir() / "tables.csv", csv.str());
+  ctx.addArtifact("tables.csv", "csv");
+  ctx.setSummary(summary);
+}
+
+}  // namespace grainbridge::workflows::stages

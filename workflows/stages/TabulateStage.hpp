@@ -1,0 +1,30 @@
+#pragma once
+// `tabulate`: closure points -> named closure tables a continuum engine can load
+// (core::ClosureTable through db::ClosureStore::loadTable). Gathers extract instances, keeps the
+// points of one friction, and lays the theta-scaled forms p/(rho_p theta), mu/(rho_p d
+// sqrt(theta)) and J d/(rho_p theta^(3/2)) (DESIGN.md "Closures") on the grid of the points'
+// solid fractions [x restitutions]. Every grid node needs exactly one point: a missing or
+// doubled state is an error naming it, because an engine interpolating across a hole would
+// silently invent a closure there.
+#include "workflows/stages/StageType.hpp"
+
+namespace grainbridge::workflows::stages {
+
+class TabulateStage final : public StageType {
+ public:
+  TabulateStage();
+  [[nodiscard]] std::string name() const override { return "tabulate"; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::string summary() const override {
+    return "closure tables (p_theta, eta_theta, j_theta against solid fraction [and restitution]) from closure "
+           "points";
+  }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
+  void run(StageContext& ctx) const override;
+
+ private:
+  params::ParamSchema schema_;
+};
+
+}  // namespace grainbridge::workflows::stages
