@@ -9,6 +9,7 @@
 #include "core/io/LammpsDataReader.hpp"
 #include "core/io/ParticleFrameReader.hpp"
 #include "engines/dem/Insertion.hpp"
+#include "engines/dem/LatticeInsertion.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -61,7 +62,11 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
     if (ctx.stopRequested()) throw StageInterrupted{};
   };
   std::mt19937_64 rng(p.at("seed").get<std::uint64_t>());
-  const auto centres = dem::insertRandomly(request, rng);
+  double largest = 0.0;
+  for (double r : request.radii) largest = std::max(largest, 2.0 * r);
+  const auto centres = p.at("insertion") == "fcc_lattice"
+                           ? dem::fccLatticeSites(request.lo, request.hi, request.radii.size(), largest, rng)
+                           : dem::insertRandomly(request, rng);
   dem::Particles particles;
   std::int64_t id = 0;
   for (std::size_t k = 0; k < placedSpecies.size(); ++k) {

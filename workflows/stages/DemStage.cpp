@@ -199,6 +199,11 @@ DemStage::DemStage() {
                .doc("particles placed at given positions before random insertion"))
       .add(ParamSpec::object("preparation", preparationSchema())
                .doc("two-step preparation before the run (Section 6.2); the run's clock starts after it"))
+      .add(ParamSpec::string("insertion")
+               .defaultValue("random")
+               .options({"random", "fcc_lattice"})
+               .doc("random non-overlapping insertion, or an fcc lattice with random vacancies (dense states "
+                    "above about 0.38 solid fraction, where random insertion jams)"))
       .add(ParamSpec::quantityList("insert_lo", Dimension::lengthDim(), 3)
                .doc("insertion region lower corner (default: the box)"))
       .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
@@ -291,6 +296,14 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
       msg << "no particle with id " << id;
       if (!fromFile) msg << " (ids run from 0 to " << particleCount - 1 << ")";
       d.add(ptr + "/track_ids/" + std::to_string(k), msg.str());
+    }
+  }
+  if (p.at("insertion") == "fcc_lattice") {
+    if (p.contains("place")) d.add(ptr + "/place", "placed particles and insertion \"fcc_lattice\" exclude each other");
+    if (p.contains("walls")) {
+      for (const auto& w : p["walls"]) {
+        if (w.at("kind") == "cylinder") d.add(ptr + "/insertion", "an fcc lattice fills a box, not a cylinder");
+      }
     }
   }
   if (p.contains("preparation")) {
