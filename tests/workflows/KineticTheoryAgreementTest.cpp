@@ -90,7 +90,7 @@ TEST(KineticTheoryAgreement, DiluteFrictionlessShearMatchesLun1984Within15Percen
     std::vector<std::string> f;
     std::istringstream in(line);
     for (std::string c; std::getline(in, c, ',');) f.push_back(c);
-    // solid_fraction,restitution,friction,shear_rate,quantity,dem,dem_err,model,prediction,deviation,key
+    // solid_fraction,restitution,friction,shear_rate,quantity,dem,dem_err,model,prediction,deviation
     if (f[7] != "lun1984") continue;
     if (f[4] != "p_shear" && f[4] != "tau_shear" && f[4] != "t_shear") continue;
     const double deviation = std::stod(f[9]);

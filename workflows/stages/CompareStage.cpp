@@ -124,7 +124,9 @@ void CompareStage::run(StageContext& ctx) const {
   const std::vector<std::string> quantities = {"p_shear", "tau_shear", "t_shear", "p_theta", "eta_theta", "j_theta"};
   std::ostringstream csv;
   csv.precision(10);
-  csv << "solid_fraction,restitution,friction,shear_rate,quantity,dem,dem_err,model,prediction,deviation,extract_key\n";
+  // The state identifies the point; which extract run it came from is in the database
+  // (run_inputs), not here, so the CSV does not change when an upstream key does.
+  csv << "solid_fraction,restitution,friction,shear_rate,quantity,dem,dem_err,model,prediction,deviation\n";
   json summary = {{"model", kt::toString(primary)}, {"points", points.size()}};
   const double limit = p.at("summary_max_solid_fraction");
   std::map<std::string, double> worst;
@@ -138,8 +140,7 @@ void CompareStage::run(StageContext& ctx) const {
         const double dem = pt.value(q.c_str());
         const double deviation = kt != 0.0 ? (dem - kt) / kt : NAN;
         csv << pt.solidFraction << ',' << pt.restitution << ',' << pt.friction << ',' << pt.shearRate << ',' << q << ','
-            << dem << ',' << pt.error(q) << ',' << kt::toString(model) << ',' << kt << ',' << deviation << ',' << pt.key
-            << '\n';
+            << dem << ',' << pt.error(q) << ',' << kt::toString(model) << ',' << kt << ',' << deviation << '\n';
         if (model == primary && pt.solidFraction <= limit && std::isfinite(deviation)) {
           worst[q] = std::max(worst[q], std::abs(deviation));
         }

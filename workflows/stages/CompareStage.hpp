@@ -18,7 +18,8 @@ class CompareStage final : public StageType {
  public:
   CompareStage();
   [[nodiscard]] std::string name() const override { return "compare"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  // 2: comparison.csv without the extract key column
+  [[nodiscard]] int implVersion() const override { return 2; }
   [[nodiscard]] std::string summary() const override {
     return "DEM closures against kinetic theory (lun1984, syamlal_algebraic): CSV, plots and an HTML page";
   }
