@@ -45,9 +45,15 @@ int main(int argc, char** argv) {
   auto* stages = app.add_subcommand("stages", "list stage types and their parameters");
   stages->add_flag("--markdown", opt.markdown, "print the reference as Markdown (docs/stages.md)");
 
-  auto* report = app.add_subcommand("report", "write the HTML report of a workflow's completed stages");
-  report->add_option("config", opt.config, "workflow config (JSON)")->required();
+  auto* report =
+      app.add_subcommand("report", "write the HTML report of a workflow's completed stages (or `report validation`)");
+  report->add_option("config", opt.config, "workflow config (JSON)");
   report->add_option("--workdir", opt.workDir, "folder holding results/ (default: current folder)");
+  auto* validation = report->add_subcommand(
+      "validation", "every VALIDATION.md figure reached so far (physics-test records and workflow databases)");
+  validation->add_option("--records", opt.records, "folder of physics-test records (default: build/validation)");
+  validation->add_option("--db", opt.databases, "closure database of a workflow run (repeatable)");
+  validation->add_option("--output,-o", opt.output, "HTML file to write (default: validation.html)");
 
   auto* dbCmd = app.add_subcommand("db", "inspect the database (runs, provenance, integrity)");
   dbCmd->require_subcommand(1);
@@ -107,6 +113,8 @@ int main(int argc, char** argv) {
       code = gb::workflows::commands::commandCheck(opt);
     else if (*stages)
       code = gb::workflows::commands::commandStages(opt);
+    else if (*validation)
+      code = gb::workflows::commands::commandReportValidation(opt);
     else if (*report)
       code = gb::workflows::commands::commandReport(opt);
     else if (*dbRuns)

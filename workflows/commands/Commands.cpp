@@ -22,6 +22,7 @@
 #include "workflows/exec/StopSignal.hpp"
 #include "workflows/plan/Plan.hpp"
 #include "workflows/report/HtmlReport.hpp"
+#include "workflows/report/ValidationReport.hpp"
 #include "workflows/stages/StageRegistry.hpp"
 #include "workflows/status/WorkflowStatus.hpp"
 
@@ -126,7 +127,26 @@ int commandStages(const CommandOptions& opt) {
   return 0;
 }
 
+int commandReportValidation(const CommandOptions& opt) {
+  report::ValidationSources sources;
+  sources.recordsDir = opt.records;
+  for (const auto& d : opt.databases) {
+    if (!fs::exists(d)) throw UsageError("--db " + d + ": no such database");
+    sources.databases.emplace_back(d);
+  }
+  if (!fs::is_directory(sources.recordsDir) && sources.databases.empty()) {
+    throw UsageError("no validation records in '" + opt.records +
+                     "' and no --db: run the physics tests (scripts/test.sh) or name a workflow database");
+  }
+  const fs::path out = opt.output.empty() ? fs::path("validation.html") : fs::path(opt.output);
+  const auto summary = report::writeValidationReport(sources, out);
+  std::printf("%s: %d figures, %d pass, %d fail, %d reported\n", fs::absolute(out).string().c_str(), summary.checks,
+              summary.passed, summary.failed, summary.reported);
+  return summary.failed > 0 ? 1 : 0;
+}
+
 int commandReport(const CommandOptions& opt) {
+  if (opt.config.empty()) throw UsageError("report: give a workflow config, or `report validation`");
   const auto cfg = load(opt);
   const auto plan = plan::makePlan(cfg);
   auto database = openExisting(exec::databasePath(cfg, opt.workDir));

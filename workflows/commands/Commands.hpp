@@ -25,6 +25,9 @@ struct CommandOptions {
   std::vector<std::string> where;  // COLUMN=LO:HI
   std::string columns;             // comma-separated; "" = every column that is set
   std::string output;
+  // report validation
+  std::string records = "build/validation";
+  std::vector<std::string> databases;
 };
 
 // A usage problem the parser could not catch (e.g. neither --db nor --config): exit code 2.
@@ -38,6 +41,7 @@ int commandStatus(const CommandOptions& opt);
 int commandCheck(const CommandOptions& opt);
 int commandStages(const CommandOptions& opt);
 int commandReport(const CommandOptions& opt);
+int commandReportValidation(const CommandOptions& opt);
 int commandDbRuns(const CommandOptions& opt);
 int commandDbShow(const CommandOptions& opt);
 int commandDbIntegrity(const CommandOptions& opt);
