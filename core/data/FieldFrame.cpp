@@ -58,6 +58,18 @@ void FieldFrame::validate() const {
       checkLength(phase.u_s, "solids/" + phase.name + "/u_s", n);
       checkLength(phase.theta, "solids/" + phase.name + "/theta", n);
     }
+    std::set<std::string> extraNames;
+    for (const NamedCellField& extra : extras) {
+      if (!isPlainName(extra.name)) {
+        throw Error("field name '" + extra.name + "' must be non-empty and use only letters, digits, '_' or '-'");
+      }
+      if (!extraNames.insert(extra.name).second) throw Error("field name '" + extra.name + "' is repeated");
+      if (extra.components != 1 && extra.components != 3 && extra.components != 9) {
+        throw Error("field '" + extra.name + "' has " + std::to_string(extra.components) +
+                    " components per cell; expected 1, 3 or 9");
+      }
+      checkLength(extra.values, "extra/" + extra.name, n * static_cast<std::size_t>(extra.components));
+    }
   } catch (const Error& e) {
     throw e.withContext("field frame at step " + std::to_string(step));
   }

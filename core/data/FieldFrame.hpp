@@ -38,6 +38,15 @@ struct SolidsPhaseFields {
   bool operator==(const SolidsPhaseFields&) const = default;
 };
 
+// Any further cell field (coarse-grained DEM: stress tensor, pressure, coordination, ...):
+// `components` values per cell, 1 (scalar), 3 (vector) or 9 (tensor, row-major), cell-major.
+struct NamedCellField {
+  std::string name;  // a plain identifier, as phase names
+  int components = 1;
+  std::vector<double> values;
+  bool operator==(const NamedCellField&) const = default;
+};
+
 struct FieldFrame {
   double time = 0.0;
   std::int64_t step = 0;
@@ -46,6 +55,7 @@ struct FieldFrame {
   std::vector<double> ep_g, p_g;  // gas volume fraction, gas pressure
   std::vector<Vec3> u_g;          // gas velocity
   std::vector<SolidsPhaseFields> solids;
+  std::vector<NamedCellField> extras;  // written under /extra only when present
 
   // Throws grainbridge::Error naming the array whose length is not the cell count, a bad
   // grid, or a phase name that is empty, repeated or not a plain identifier.

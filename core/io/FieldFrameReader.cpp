@@ -42,6 +42,23 @@ std::vector<std::string> readPhaseNames(const H5InputFile& f) {
   for (auto& p : phases) names.push_back(std::move(p.second));
   return names;
 }
+
+// Extra cell fields (optional group /extra), in the writer's order, with their component
+// counts (the dataset's trailing dimension, 1 when it has none).
+std::vector<std::pair<std::string, int>> readExtraNames(const H5InputFile& f) {
+  std::vector<std::pair<std::string, int>> out;
+  if (!f.exists("/extra")) return out;
+  std::vector<std::pair<std::int64_t, std::string>> ordered;
+  for (std::string& name : f.children("/extra")) {
+    ordered.emplace_back(f.readIntAttribute("/extra/" + name, "index"), std::move(name));
+  }
+  std::sort(ordered.begin(), ordered.end());
+  for (auto& [index, name] : ordered) {
+    const auto shape = f.shape("/extra/" + name);
+    out.emplace_back(name, shape.size() == 4 ? static_cast<int>(shape[3]) : 1);
+  }
+  return out;
+}
 }  // namespace
 
 data::FieldFrame readFieldFrame(const std::filesystem::path& path) {
@@ -67,6 +84,15 @@ data::FieldFrame readFieldFrame(const std::filesystem::path& path) {
     phase.theta = f.readDoubles(group + "/theta", cells);
     frame.solids.push_back(std::move(phase));
   }
+  for (const auto& [name, components] : readExtraNames(f)) {
+    data::NamedCellField extra;
+    extra.name = name;
+    extra.components = components;
+    H5InputFile::Shape shape = cells;
+    if (components > 1) shape.push_back(static_cast<hsize_t>(components));
+    extra.values = f.readDoubles("/extra/" + name, shape);
+    frame.extras.push_back(std::move(extra));
+  }
   try {
     frame.validate();
   } catch (const Error& e) {
@@ -84,6 +110,7 @@ FieldFrameSummary readFieldFrameSummary(const std::filesystem::path& path) {
   s.time = f.readDoubleAttribute("/", "time");
   s.grid = readGrid(f);
   s.solidsPhases = readPhaseNames(f);
+  s.extras = readExtraNames(f);
   return s;
 }
 

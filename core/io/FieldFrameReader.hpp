@@ -17,7 +17,8 @@ struct FieldFrameSummary {
   std::int64_t step = 0;
   double time = 0.0;
   data::GridGeometry grid;
-  std::vector<std::string> solidsPhases;  // in the frame's phase order
+  std::vector<std::string> solidsPhases;            // in the frame's phase order
+  std::vector<std::pair<std::string, int>> extras;  // name and components, in the frame's order
 };
 
 data::FieldFrame readFieldFrame(const std::filesystem::path& path);

@@ -30,8 +30,9 @@ std::filesystem::path FieldFrameWriter::write(const data::FieldFrame& frame) {
   if (frame.step < 0) throw Error("field frame step " + std::to_string(frame.step) + " is negative");
   const std::filesystem::path path = directory_ / "frames" / frameFileName("fields", frame.step);
   writeFrameFile(path, [&](const std::filesystem::path& temporary) { writeFile(temporary, frame); });
-  FieldFrameSummary s{path, frame.step, frame.time, frame.grid, {}};
+  FieldFrameSummary s{path, frame.step, frame.time, frame.grid, {}, {}};
   for (const auto& phase : frame.solids) s.solidsPhases.push_back(phase.name);
+  for (const auto& extra : frame.extras) s.extras.emplace_back(extra.name, extra.components);
   frames_[frame.step] = std::move(s);
   writeXdmf();
   return path;
@@ -62,6 +63,16 @@ void FieldFrameWriter::writeFile(const std::filesystem::path& path, const data::
     f.writeDataset(group + "/ep_s", std::span<const double>(phase.ep_s), scalar);
     f.writeDataset(group + "/u_s", flatView(phase.u_s), vector);
     f.writeDataset(group + "/theta", std::span<const double>(phase.theta), scalar);
+  }
+  if (!frame.extras.empty()) {
+    f.createGroup("/extra");
+    for (std::size_t k = 0; k < frame.extras.size(); ++k) {
+      const data::NamedCellField& extra = frame.extras[k];
+      std::vector<hsize_t> shape = scalar;
+      if (extra.components > 1) shape.push_back(static_cast<hsize_t>(extra.components));
+      f.writeDataset("/extra/" + extra.name, std::span<const double>(extra.values), shape);
+      f.writeAttribute("/extra/" + extra.name, "index", static_cast<std::int32_t>(k));
+    }
   }
   f.close();
 }
@@ -107,6 +118,11 @@ void FieldFrameWriter::writeXdmf() const {
       x << "    " << scalar("ep_s_" + phase, "/solids/" + phase + "/ep_s") << "\n"
         << "    " << vector("u_s_" + phase, "/solids/" + phase + "/u_s") << "\n"
         << "    " << scalar("theta_" + phase, "/solids/" + phase + "/theta") << "\n";
+    }
+    for (const auto& [name, components] : s.extras) {
+      const std::string dims = components == 1 ? cells : cells + " " + std::to_string(components);
+      const char* type = components == 1 ? "Scalar" : components == 3 ? "Vector" : "Tensor";
+      x << "    " << xdmfAttribute(name, type, "Cell", xdmfHdfItem(dims, "Float", 8, file + "/extra/" + name)) << "\n";
     }
     x << "   </Grid>\n";
   }

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "core/Files.hpp"
 #include "core/Sha256.hpp"
 #include "core/io/FieldFrameReader.hpp"
 #include "core/io/FieldFrameWriter.hpp"
@@ -35,6 +36,37 @@ TEST(FieldFrameSerialization, RoundTripWithTwoSolidsPhases) {
   const FileStamp stamp = readStamp(path);
   EXPECT_EQ(stamp.stageKey, "field-key");
   EXPECT_EQ(stamp.formatVersion, kFieldFormatVersion);
+}
+
+// Coarse-grained DEM carries more than the continuum fields: named scalar, vector and tensor
+// cell fields, in their own group, listed in the XDMF so ParaView shows them.
+TEST(FieldFrameSerialization, ExtraCellFieldsRoundTripAndAppearInTheXdmf) {
+  const TempDir dir;
+  FieldFrameWriter writer(dir.path(), {"field-key"});
+  data::FieldFrame frame = sampleFieldFrame(3, 0.5);
+  const std::size_t n = frame.grid.cellCount();
+  data::NamedCellField pressure{"pressure", 1, {}};
+  data::NamedCellField stress{"stress", 9, {}};
+  data::NamedCellField force{"contact_force", 3, {}};
+  for (std::size_t c = 0; c < n; ++c) {
+    pressure.values.push_back(0.5 * static_cast<double>(c));
+    for (int k = 0; k < 9; ++k) stress.values.push_back(static_cast<double>(c) + 0.1 * k);
+    for (int k = 0; k < 3; ++k) force.values.push_back(-static_cast<double>(c) - k);
+  }
+  frame.extras = {stress, pressure, force};
+  const auto path = writer.write(frame);
+  const data::FieldFrame back = readFieldFrame(path);
+  EXPECT_EQ(back.extras, frame.extras);  // the writer's order, not HDF5's name order
+  EXPECT_EQ(back, frame);
+  const std::string xdmf = readFile(writer.xdmfPath());
+  EXPECT_NE(xdmf.find("Name=\"stress\" AttributeType=\"Tensor\""), std::string::npos) << xdmf;
+  EXPECT_NE(xdmf.find("Name=\"pressure\" AttributeType=\"Scalar\""), std::string::npos);
+  EXPECT_NE(xdmf.find("Name=\"contact_force\" AttributeType=\"Vector\""), std::string::npos);
+
+  frame.extras = {data::NamedCellField{"bad name", 1, pressure.values}};
+  expectError([&] { writer.write(frame); }, {"field name 'bad name'"});
+  frame.extras = {data::NamedCellField{"p", 2, std::vector<double>(2 * n, 0.0)}};
+  expectError([&] { writer.write(frame); }, {"2 components per cell"});
 }
 
 TEST(FieldFrameSerialization, CellArraysAreStoredKJI) {
