@@ -8,12 +8,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::testing;
@@ -98,6 +101,21 @@ TEST(KineticTheoryAgreement, DiluteFrictionlessShearMatchesLun1984Within15Percen
     std::printf("solid fraction %s  %-9s DEM %s +- %s  lun1984 %s  deviation %+.3f\n", f[0].c_str(), f[4].c_str(),
                 f[5].c_str(), f[6].c_str(), f[8].c_str(), deviation);
     EXPECT_LT(std::abs(deviation), 0.15) << line;
+    const std::map<std::string, std::string> names = {
+        {"p_shear", "pressure p* = p / (rho_p d^2 gammadot^2)"},
+        {"tau_shear", "shear stress tau* = -sigma_xy / (rho_p d^2 gammadot^2)"},
+        {"t_shear", "granular temperature T* = T / (d gammadot)^2"}};
+    const double phi = std::stod(f[0]);  // the box edge is rounded: 0.0499996 for 0.05
+    recordValidation({formatNote("kt.lun1984.%s.phi%.3g", f[4].c_str(), phi), "Kinetic theory against DEM",
+                      formatNote("Lees-Edwards simple shear of frictionless spheres, e = 0.9, solid fraction %.3g: "
+                                 "DEM %s against lun1984",
+                                 phi, names.at(f[4]).c_str()),
+                      "Lun et al. 1984 (kinetic + collisional), model lun1984", std::stod(f[8]), std::stod(f[5]),
+                      "15 %", std::abs(deviation) < 0.15,
+                      formatNote("DEM standard error %s; solid fraction %s; reduced CI run: 500 spheres, k* = 1e5, "
+                                 "dt ~ t_c/50, 20 strain units discarded, 60 averaged (the configs/ workflow: 2000, "
+                                 "50, 200)",
+                                 f[6].c_str(), f[0].c_str())});
     ++checked;
   }
   EXPECT_EQ(checked, 9);

@@ -12,7 +12,8 @@ class DemStage final : public StageType {
   DemStage();
   [[nodiscard]] std::string name() const override { return "dem"; }
   // 2: series.csv gains top_z_<species> (free surface)
-  [[nodiscard]] int implVersion() const override { return 2; }
+  // 3: the kinetic stress in series.csv takes C about the mean peculiar velocity under Lees-Edwards
+  [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::string summary() const override {
     return "soft-sphere DEM: random insertion, gravity, frictional contacts with history, walls; frames and series";
   }

@@ -3,8 +3,14 @@
 // start and end of contact are interpolated between steps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 #include "engines/dem/Material.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::dem;
@@ -53,6 +59,29 @@ CollisionResult collide(double d1, double rho1, double d2, double rho2, double a
   return {after / approachSpeed, end - start};
 }
 
+// Records the measured restitution and contact time against Eqs. 6.9-6.10 (VALIDATION.md prints
+// them, computed from Table 6.1, as `printedE` and `printedT`).
+void recordCollision(const CollisionResult& r, double eTheory, double tTheory, const std::string& pair,
+                     bool restitutionPassed, bool contactTimePassed, const char* printedE, const char* printedT) {
+  using grainbridge::testing::formatNote;
+  std::string name = pair;  // "small-small" in the text
+  std::replace(name.begin(), name.end(), '_', '-');
+  grainbridge::testing::recordValidation(
+      {"dem.linear.restitution." + pair, "DEM (Chapter 6)",
+       "restitution of the linear spring-dashpot model, " + name + " head-on collision", "Eqs. 6.9-6.10, Table 6.1",
+       eTheory, r.restitution, "1 %", restitutionPassed,
+       formatNote("Eqs. 6.9-6.10 give %.5f (VALIDATION.md: %s); dt = 2e-4 t0 (about t_c/25), contact start and end "
+                  "interpolated between steps; approach speed 1 sqrt(g d0)",
+                  eTheory, printedE)});
+  grainbridge::testing::recordValidation(
+      {"dem.linear.contact_time." + pair, "DEM (Chapter 6)",
+       "contact time of the linear spring-dashpot model, " + name + " head-on collision, in t0",
+       "Eqs. 6.9-6.10, Table 6.1", tTheory, r.contactTime, "1 %", contactTimePassed,
+       formatNote("Eqs. 6.9-6.10 give %.5e t0 (VALIDATION.md: %s t0); dt = 2e-4 t0, contact start and end "
+                  "interpolated between steps",
+                  tTheory, printedT)});
+}
+
 }  // namespace
 
 TEST(BinaryCollision, SmallSmallMatchesEqs69And610) {
@@ -65,12 +94,17 @@ TEST(BinaryCollision, SmallSmallMatchesEqs69And610) {
   const auto r = collide(1.0, 1.91, 1.0, 1.91, 1.0);
   EXPECT_NEAR(r.restitution, eTheory, 0.01 * eTheory);
   EXPECT_NEAR(r.contactTime, tTheory, 0.01 * tTheory);
+  recordCollision(r, eTheory, tTheory, "small_small", std::abs(r.restitution - eTheory) <= 0.01 * eTheory,
+                  std::abs(r.contactTime - tTheory) <= 0.01 * tTheory, "0.9054", "4.970e-3");
 }
 
 TEST(BinaryCollision, LargeSmallMatchesEqs69And610) {
   const double ms = sphereMass(1.0, 1.91);
   const double ml = sphereMass(3.16, 13.54);
   EXPECT_NEAR(ml, 223.7, 0.1);
+  grainbridge::testing::recordValidation({"dem.table61.large_mass", "DEM (Chapter 6)",
+                                          "mass of the large particle (d = 3.16 d0, density 13.54 m0/d0^3), in m0",
+                                          "Table 6.1", 223.7, ml, "0.1 m0", std::abs(ml - 223.7) <= 0.1, ""});
   const double meff = ms * ml / (ms + ml);
   const double eTheory = linearRestitution(2e5, 40.0, meff);
   const double tTheory = linearContactTime(2e5, 40.0, meff);
@@ -79,6 +113,8 @@ TEST(BinaryCollision, LargeSmallMatchesEqs69And610) {
   const auto r = collide(1.0, 1.91, 3.16, 13.54, 1.0);
   EXPECT_NEAR(r.restitution, eTheory, 0.01 * eTheory);
   EXPECT_NEAR(r.contactTime, tTheory, 0.01 * tTheory);
+  recordCollision(r, eTheory, tTheory, "large_small", std::abs(r.restitution - eTheory) <= 0.01 * eTheory,
+                  std::abs(r.contactTime - tTheory) <= 0.01 * tTheory, "0.869", "7.02e-3");
 }
 
 TEST(BinaryCollision, LinearRestitutionIsIndependentOfImpactSpeed) {

@@ -9,15 +9,22 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "tests/engines/dem/DemTestSupport.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::dem;
 using namespace grainbridge::dem::testing;
+using grainbridge::testing::formatNote;
+using grainbridge::testing::recordValidation;
 
 namespace {
+
+constexpr const char* kSection = "DEM (Chapter 6)";
 
 PairMaterial elastic() {
   PairMaterial m;
@@ -58,6 +65,16 @@ TEST(ElasticGas, EnergyAndMomentumOver1e5Steps) {
   EXPECT_LT(worst, 1e-4);
   EXPECT_LT(worstMomentum, 1e-13);
   EXPECT_GT(worst, 0.0);  // collisions happened
+  const std::string setup =
+      formatNote("2000 spheres, solid fraction 0.1, T0 = 1, dt = t_c/50 = %.4e t0, 1e5 steps", dt);
+  recordValidation({"dem.gas.elastic.energy_error", kSection,
+                    "elastic frictionless gas in a periodic box: max |E - E0| / E0 over 1e5 steps at dt = t_c/50",
+                    "VALIDATION.md DEM (elastic gas)", 0.0, worst, "below 1e-4", worst < 1e-4 && worst > 0.0,
+                    setup + "; E includes the elastic energy of the contacts"});
+  recordValidation({"dem.gas.elastic.momentum", kSection,
+                    "elastic frictionless gas in a periodic box: max |P - P0| / sum m|v| over 1e5 steps",
+                    "VALIDATION.md DEM (elastic gas)", 0.0, worstMomentum, "round-off (1e-13)", worstMomentum < 1e-13,
+                    setup});
 }
 
 TEST(ElasticGas, CollisionEnergyErrorIsSecondOrder) {
@@ -110,6 +127,14 @@ TEST(ElasticGas, CollisionEnergyErrorIsSecondOrder) {
   std::printf("binary elastic collisions: RMS relative energy error %.3e (dt ~ t_c/50), %.3e (dt/2), ratio %.3f\n",
               rmsCoarse, rmsFine, rmsCoarse / rmsFine);
   EXPECT_NEAR(rmsCoarse / rmsFine, 4.0, 0.8);
+  recordValidation(
+      {"dem.gas.elastic.energy_order", kSection,
+       "elastic collisions of the gas's spheres: ratio of the RMS relative energy errors at dt and dt/2 (dt^2: 4)",
+       "VALIDATION.md DEM (elastic gas)", 4.0, rmsCoarse / rmsFine, "20 %", std::abs(rmsCoarse / rmsFine - 4.0) <= 0.8,
+       formatNote("measured per collision over %d binary collisions (random impact parameter, entry phase, dt in "
+                  "[t_c/51, t_c/50]), not on one gas run, whose dt/dt2 ratio is a random walk of either-sign errors "
+                  "(~1 to ~8); RMS %.3e at dt, %.3e at dt/2",
+                  n, rmsCoarse, rmsFine)});
 }
 
 TEST(HomogeneousCooling, FollowsHaffsLawWithEq57Dissipation) {
@@ -162,4 +187,12 @@ TEST(HomogeneousCooling, FollowsHaffsLawWithEq57Dissipation) {
               tauFit, tauPredicted, tauFit / tauPredicted, std::pow(y.front() / y.back(), 2), worstLine);
   EXPECT_NEAR(tauFit, tauPredicted, 0.1 * tauPredicted);
   EXPECT_LT(worstLine, 0.02);  // the decay has Haff's form
+  recordValidation(
+      {"dem.gas.haff.tau", kSection,
+       "homogeneous cooling of an inelastic frictionless gas: Haff time tau fitted to T^(-1/2) against Eq. 5.7",
+       "Haff's law with Eq. 5.7 dissipation (Carnahan-Starling g0)", tauPredicted, tauFit, "within 10 %",
+       std::abs(tauFit - tauPredicted) <= 0.1 * tauPredicted && worstLine < 0.02,
+       formatNote("2000 spheres, solid fraction 0.1, e = 0.9, mu = 0, T0 = 4, dt = t_c/50, fit over 2 tau (T falls to "
+                  "%.3f T0); largest relative residual of the T^(-1/2) line %.2e (below 2e-2 required)",
+                  std::pow(y.front() / y.back(), 2), worstLine)});
 }

@@ -8,8 +8,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "tests/engines/dem/DemTestSupport.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::dem;
@@ -108,6 +111,29 @@ void expectWithin(const CollisionResult& got, const CollisionResult& want, const
   // 1 - e must agree within 1 % as well.
   EXPECT_NEAR(1.0 - got.restitution, 1.0 - want.restitution, 0.01 * (1.0 - want.restitution)) << what << " v=" << v;
   EXPECT_NEAR(got.contactTime, want.contactTime, 0.01 * want.contactTime) << what << " v=" << v;
+  using grainbridge::testing::formatNote;
+  const bool restitutionPassed =
+      std::abs(got.restitution - want.restitution) <= 0.01 * want.restitution &&
+      std::abs((1.0 - got.restitution) - (1.0 - want.restitution)) <= 0.01 * (1.0 - want.restitution);
+  const bool contactTimePassed = std::abs(got.contactTime - want.contactTime) <= 0.01 * want.contactTime;
+  const bool wall = std::string(what) == "wall";
+  const std::string pairName = wall ? "large particle (d = 3.16 d0) on a wall, d = 2 a in f" : "small-small pair";
+  const std::string reference = wall ? "Eq. 6.5; VALIDATION.md DEM \"Hertz against a wall\"" : "Eq. 6.5";
+  grainbridge::testing::recordValidation(
+      {formatNote("dem.hertz.%s.restitution.v%g", what, v), "DEM (Chapter 6)",
+       formatNote("Hertzian restitution, %s, impact speed %g sqrt(g d0), against an RK4 integration of the contact "
+                  "ODE",
+                  pairName.c_str(), v),
+       reference, want.restitution, got.restitution, "1 % (e and 1 - e)", restitutionPassed,
+       formatNote("1 - e: ours %.5f, ODE %.5f; engine dt = 2e-4 t0, ODE step 1e-7 t0", 1.0 - got.restitution,
+                  1.0 - want.restitution)});
+  grainbridge::testing::recordValidation(
+      {formatNote("dem.hertz.%s.contact_time.v%g", what, v), "DEM (Chapter 6)",
+       formatNote("Hertzian contact time in t0, %s, impact speed %g sqrt(g d0), against an RK4 integration of the "
+                  "contact ODE",
+                  pairName.c_str(), v),
+       reference, want.contactTime, got.contactTime, "1 %", contactTimePassed,
+       "engine dt = 2e-4 t0 with contact start and end interpolated between steps; ODE step 1e-7 t0"});
 }
 
 }  // namespace

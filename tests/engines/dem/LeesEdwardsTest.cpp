@@ -4,11 +4,15 @@
 // Frictionless spheres, e = 0.9, k* = k_n/(rho d^3 gammadot^2) = 1e5, dt = t_c/50.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <string>
 
 #include "engines/dem/DomainStress.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::dem;
@@ -130,4 +134,29 @@ TEST(LeesEdwards, SteadyShearHasLinearProfileAndShearWorkEqualsDissipation) {
   // boundary, which joins the top half to the bottom one) agree.
   EXPECT_NEAR(r.sigmaXyLower / r.sigmaXyUpper, 1.0, 0.05);
   EXPECT_NEAR(r.shearWork / r.dissipation, 1.0, 0.02);
+  using grainbridge::testing::formatNote;
+  using grainbridge::testing::recordValidation;
+  const char* section = "DEM (Chapter 6)";
+  const std::string setup =
+      "300 frictionless spheres, solid fraction 0.2, e = 0.9, k* = 1e5, dt = t_c/50, 20 strain units discarded, 60 "
+      "averaged";
+  const double halfBox = 0.5 * std::cbrt(300 * M_PI / 6.0 / 0.2);
+  recordValidation({"dem.lees_edwards.velocity_profile", section,
+                    "Lees-Edwards simple shear: slope of the steady mean-velocity profile over the imposed gammadot",
+                    "VALIDATION.md DEM (Lees-Edwards simple shear)", 1.0, r.slope, "2 %",
+                    std::abs(r.slope - 1.0) <= 0.02 && std::abs(r.intercept) <= 0.02 * halfBox,
+                    formatNote("least-squares line through 6 bin means; intercept %.5f (within 2 %% of the half box "
+                               "%.3f required); ",
+                               r.intercept, halfBox) +
+                        setup});
+  recordValidation({"dem.lees_edwards.work_equals_dissipation", section,
+                    "Lees-Edwards simple shear: work done by the shear, -sigma_xy gammadot V, against the dashpot "
+                    "dissipation rate measured at the contacts",
+                    "VALIDATION.md DEM (Lees-Edwards simple shear), Eq. 2.3", r.dissipation, r.shearWork, "2 %",
+                    r.shearWork > 0.0 && std::abs(r.shearWork / r.dissipation - 1.0) <= 0.02, setup});
+  recordValidation({"dem.lees_edwards.sigma_xy_uniform", section,
+                    "Lees-Edwards simple shear: contact sigma_xy in the lower half of the box against the upper half "
+                    "(uniform across the Lees-Edwards boundary)",
+                    "VALIDATION.md DEM (Lees-Edwards simple shear)", r.sigmaXyUpper, r.sigmaXyLower, "5 %",
+                    std::abs(r.sigmaXyLower / r.sigmaXyUpper - 1.0) <= 0.05, setup});
 }

@@ -6,19 +6,27 @@
 // - forces per particle id survive a forced neighbour rebuild plus re-sort.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <random>
+#include <string>
 #include <utility>
 
 #include "tests/engines/dem/DemTestSupport.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::dem;
 using namespace grainbridge::dem::testing;
+using grainbridge::testing::formatNote;
+using grainbridge::testing::recordValidation;
 
 namespace {
+
+constexpr const char* kSection = "DEM (Chapter 6)";
 
 // Elastic, sticking contact: no dashpots, mu so large that Coulomb never caps, k_t = 2/7 k_n.
 PairMaterial stickingElastic() {
@@ -123,6 +131,8 @@ TEST(TangentialHistory, StickingElasticCollisionOfOneToThreePair) {
   double worstFine = 0.0;
   double worstAfterCoarse = 0.0;
   double worstAfterFine = 0.0;
+  double worstLResidual = 0.0;  // over all phases, both steps
+  bool lResidualPassed = true;
   StickingRun sample{};
   for (int k = 0; k < 64; ++k) {
     const double phase = (k + 0.5) / 64.0;
@@ -142,6 +152,8 @@ TEST(TangentialHistory, StickingElasticCollisionOfOneToThreePair) {
     // sum of that, to round-off.
     EXPECT_LT(coarse.lResidual, 1e-12) << "phase " << phase;
     EXPECT_LT(fine.lResidual, 1e-12) << "phase " << phase;
+    worstLResidual = std::max({worstLResidual, coarse.lResidual, fine.lResidual});
+    lResidualPassed = lResidualPassed && coarse.lResidual < 1e-12 && fine.lResidual < 1e-12;
     EXPECT_GT(coarse.maxLChange, 1e3 * coarse.lResidual) << "phase " << phase;  // the term is real
   }
   std::printf(
@@ -155,6 +167,24 @@ TEST(TangentialHistory, StickingElasticCollisionOfOneToThreePair) {
   // Total energy (kinetic + 1/2 k_n delta^2 + 1/2 k_t |u_t|^2) conserved to O(dt^2).
   EXPECT_LT(worstCoarse, 1e-3);
   EXPECT_NEAR(worstCoarse / worstFine, 4.0, 0.8);
+  recordValidation(
+      {"dem.torque.sticking_1to3.energy_order", kSection,
+       "sticking elastic collision of a 1:3 pair: total energy conserved to O(dt^2), ratio of the worst relative "
+       "energy errors at t_c/50 and t_c/100",
+       "VALIDATION.md DEM (torque, Eqs. 6.3, 6.4, 6.8)", 4.0, worstCoarse / worstFine, "4 +- 0.8, and below 1e-3",
+       worstCoarse < 1e-3 && std::abs(worstCoarse / worstFine - 4.0) <= 0.8,
+       formatNote("worst over 64 entry phases of max |E - E0|/E0: %.3e at t_c/50, %.3e at t_c/100", worstCoarse,
+                  worstFine)});
+  recordValidation(
+      {"dem.torque.sticking_1to3.angular_momentum", kSection,
+       "sticking elastic collision of a 1:3 pair: |L - L0 - trapezoid sum of -delta n x F_t| / |L0|, worst over 64 "
+       "entry phases at t_c/50 and t_c/100",
+       "VALIDATION.md DEM (torque: lever arm a_i n, Eq. 6.3)", 0.0, worstLResidual, "round-off (1e-12)",
+       lResidualPassed,
+       formatNote("VALIDATION.md says L about the contact is conserved to round-off; with the lever arms a_i n the "
+                  "two tangential forces act delta n apart, so L changes by the integral of -delta n x F_t (max "
+                  "|dL|/|L0| %.3e at phase 1/128), and the residual after that term is what is checked",
+                  sample.maxLChange)});
 }
 
 namespace {
@@ -254,6 +284,16 @@ TEST(TangentialHistory, StuckPairSpunRigidlyKeepsTangentialForce) {
   // The project-and-rescale update converges to Eq. 6.4's rotation (its per-step error is
   // O((Omega dt)^2)): the direction drift is first order in dt.
   EXPECT_NEAR(r.axialDrift / half.axialDrift, 2.0, 0.2);
+  const std::string note = formatNote("10 turns at one turn per t0, dt = 2e-4 t0, %ld neighbour-list rebuilds",
+                                      static_cast<long>(r.rebuilds));
+  recordValidation({"dem.history.stuck_pair.ft_magnitude", kSection,
+                    "stuck 1:3 pair spun rigidly for 10 turns: max ||F_t| - |F_t0|| / |F_t0|",
+                    "Eq. 6.4; VALIDATION.md DEM (tangential history)", 0.0, r.maxMagnitudeChange, "1e-10",
+                    r.maxMagnitudeChange < 1e-10, note});
+  recordValidation({"dem.history.stuck_pair.ft_normal_part", kSection,
+                    "stuck 1:3 pair spun rigidly for 10 turns: max |F_t . n| / |F_t|",
+                    "Eq. 6.4; VALIDATION.md DEM (tangential history)", 0.0, r.maxNormalPart, "1e-10",
+                    r.maxNormalPart < 1e-10, note});
 }
 
 namespace {
@@ -360,6 +400,15 @@ TEST(TangentialHistory, ForcedRebuildAndResortKeepForcesPerId) {
   EXPECT_LT(contactDiff, 1e-13 * forceScale);
   EXPECT_LT(forceDiff, 1e-13 * forceScale);
   EXPECT_LT(torqueDiff, 1e-13 * torqueScale);
+  recordValidation(
+      {"dem.history.rebuild_resort", kSection,
+       "forces per particle id after a forced neighbour rebuild plus re-sort of a 500-sphere frictional "
+       "packing: largest change relative to the largest force (contacts, particle forces, torques)",
+       "Eq. 6.4; VALIDATION.md DEM (tangential history)", 0.0,
+       std::max({contactDiff / forceScale, forceDiff / forceScale, torqueDiff / torqueScale}), "round-off (1e-13)",
+       contactDiff < 1e-13 * forceScale && forceDiff < 1e-13 * forceScale && torqueDiff < 1e-13 * torqueScale,
+       formatNote("%zu of %zu contacts bitwise equal; %zu contacts with tangential history", bitwise, cb.size(),
+                  sticking)});
   // Continuing: the same trajectory up to the round-off just introduced (not bitwise: the
   // per-particle sums differ in order), which the still-moving packing amplifies over time.
   for (int block = 1; block <= 4; ++block) {

@@ -9,14 +9,21 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "tests/engines/dem/DemTestSupport.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::dem;
 using namespace grainbridge::dem::testing;
+using grainbridge::testing::formatNote;
+using grainbridge::testing::recordValidation;
 
 namespace {
+
+constexpr const char* kSection = "DEM (Chapter 6)";
 
 constexpr double kA = 0.5;  // small particle of Table 6.1: d = 1, density 1.91
 const double kMass = sphereMass(1.0, 1.91);
@@ -55,6 +62,15 @@ TEST(WallContact, SlidingSphereEndsRollingAtFiveSevenths) {
   EXPECT_NEAR(p.v[0].x(), 5.0 / 7.0 * v0, 0.01 * 5.0 / 7.0 * v0);
   EXPECT_NEAR(kA * p.omega[0].y(), p.v[0].x(), 0.01 * p.v[0].x());  // rolling without slip
   EXPECT_NEAR(p.x[0].z(), kA - overlap, 1e-6);                      // stayed on the plane
+  const bool rolling = std::abs(p.v[0].x() - 5.0 / 7.0 * v0) <= 0.01 * 5.0 / 7.0 * v0 &&
+                       std::abs(kA * p.omega[0].y() - p.v[0].x()) <= 0.01 * p.v[0].x();
+  recordValidation({"dem.wall.slide_to_roll", kSection,
+                    "sliding sphere on a frictional plane (mu_wall = 0.5) ends rolling: final speed over initial",
+                    "VALIDATION.md DEM (angular momentum about the contact point)", 5.0 / 7.0, p.v[0].x() / v0, "1 %",
+                    rolling,
+                    formatNote("rolling without slip: a omega_y / v = %.6f (within 1 %% required); 15000 steps of "
+                               "2e-4 t0",
+                               kA * p.omega[0].y() / p.v[0].x())});
 }
 
 TEST(WallContact, FreeFallAndBounceHeightFollowRestitution) {
@@ -70,6 +86,10 @@ TEST(WallContact, FreeFallAndBounceHeightFollowRestitution) {
     sim.step();
   }
   EXPECT_LT(maxFreeFallError, 1e-12);
+  recordValidation({"dem.wall.free_fall", kSection,
+                    "free fall from 2 d0: largest deviation of the height from h0 - g t^2 / 2, in d0",
+                    "VALIDATION.md DEM (free fall and bounce height)", 0.0, maxFreeFallError,
+                    "1e-12 (exact under velocity Verlet)", maxFreeFallError < 1e-12, "dt = 2e-4 t0"});
   const double e = wallRestitution();
   double previous = h0;
   for (int bounce = 1; bounce <= 2; ++bounce) {
@@ -82,6 +102,12 @@ TEST(WallContact, FreeFallAndBounceHeightFollowRestitution) {
     std::printf("bounce %d: apex %.6f, ratio %.6f vs e_n^2 = %.6f (e_n = %.6f)\n", bounce, apex, apex / previous, e * e,
                 e);
     EXPECT_NEAR(apex / previous, e * e, 0.01 * e * e) << "bounce " << bounce;
+    recordValidation(
+        {formatNote("dem.wall.bounce_height.bounce%d", bounce), kSection,
+         formatNote("bounce %d: apex height over the previous one, against e_n^2 of the particle-wall pair", bounce),
+         "Eqs. 6.9-6.10 with m_eff = m, Table 6.1 wall", e * e, apex / previous, "1 %",
+         std::abs(apex / previous - e * e) <= 0.01 * e * e,
+         formatNote("e_n = %.6f; apex %.6f d0 after %.6f d0; dt = 2e-4 t0", e, apex, previous)});
     previous = apex;
   }
 }
@@ -111,6 +137,15 @@ TEST(WallContact, ObliqueImpactsNeverGainEnergyAndSlideAsPredicted) {
     const double after = kineticEnergy(sim);
     EXPECT_LE(after, before) << deg << " degrees";
     EXPECT_LE(worst, before) << deg << " degrees";
+    recordValidation({formatNote("dem.wall.oblique.energy.deg%.0f", deg), kSection,
+                      formatNote("oblique impact at %.0f degrees on a frictional wall (mu = 0.5): kinetic energy "
+                                 "(translational + rotational) after the rebound against the energy before",
+                                 deg),
+                      "VALIDATION.md DEM (oblique impacts)", before, after, "never increases (also during contact)",
+                      after <= before && worst <= before,
+                      formatNote("largest kinetic energy from first touch on %.6f (not above the energy before "
+                                 "required); unit impact speed, no spin, dt = 2e-4 t0",
+                                 worst)});
     if (vt / vn > 3.5 * mu * (1.0 + e) * 1.1) {
       const double vtPredicted = vt - mu * (1.0 + e) * vn;
       const double omegaPredicted = 5.0 * mu * (1.0 + e) * vn / (2.0 * kA);
@@ -119,6 +154,16 @@ TEST(WallContact, ObliqueImpactsNeverGainEnergyAndSlideAsPredicted) {
           p.v[0].x(), vtPredicted, p.omega[0].y(), omegaPredicted, p.v[0].z() / vn, e, before, after);
       EXPECT_NEAR(p.v[0].x(), vtPredicted, 0.01 * vtPredicted) << deg << " degrees";
       EXPECT_NEAR(p.omega[0].y(), omegaPredicted, 0.01 * omegaPredicted) << deg << " degrees";
+      const std::string gross = formatNote("gross sliding at %.0f degrees (mu = 0.5, e_n = %.5f)", deg, e);
+      recordValidation({formatNote("dem.wall.oblique.gross_sliding.vt.deg%.0f", deg), kSection,
+                        "rebound tangential velocity v_t' = v_t - mu (1 + e) v_n, " + gross,
+                        "VALIDATION.md DEM (oblique impacts)", vtPredicted, p.v[0].x(), "1 %",
+                        std::abs(p.v[0].x() - vtPredicted) <= 0.01 * vtPredicted, "unit impact speed, no spin"});
+      recordValidation({formatNote("dem.wall.oblique.gross_sliding.omega.deg%.0f", deg), kSection,
+                        "rebound spin omega' = 5 mu (1 + e) v_n / (2 a), " + gross,
+                        "VALIDATION.md DEM (oblique impacts)", omegaPredicted, p.omega[0].y(), "1 %",
+                        std::abs(p.omega[0].y() - omegaPredicted) <= 0.01 * omegaPredicted,
+                        "unit impact speed, no spin"});
     } else {
       std::printf("%4.0f deg: KE %.6f -> %.6f\n", deg, before, after);
     }
@@ -152,6 +197,12 @@ TEST(WallContact, ElasticObliqueImpactsNeverGainEnergy) {
     const double gain = kineticEnergy(sim) / before - 1.0;
     worstGain = std::max(worstGain, gain);
     EXPECT_LE(gain, 1e-4) << deg << " degrees";
+    recordValidation({formatNote("dem.wall.oblique_elastic.energy.deg%d", deg), kSection,
+                      formatNote("elastic (no dashpots) oblique impact at %d degrees on a frictional wall (mu = 0.5): "
+                                 "relative change of the kinetic energy",
+                                 deg),
+                      "VALIDATION.md DEM (oblique impacts)", 0.0, gain, "never increases (1e-4 integration error)",
+                      gain <= 1e-4, "dt = t_c/100; only Coulomb slip dissipates"});
   }
   std::printf("elastic oblique impacts: largest relative kinetic-energy change %.3e\n", worstGain);
 }
@@ -177,6 +228,11 @@ TEST(WallContact, WallMovingUpLaunchesParticleAsInItsFrame) {
   const double e = wallRestitution();
   std::printf("moving wall: particle leaves at %.6f, (1 + e) V = %.6f\n", p.v[0].z(), (1.0 + e) * V);
   EXPECT_NEAR(p.v[0].z(), (1.0 + e) * V, 0.01 * (1.0 + e) * V);
+  recordValidation({"dem.wall.vibrating.normal_launch", kSection,
+                    "wall moving along its normal at V meets a particle at rest: launch speed (1 + e_n) V",
+                    "Eqs. 6.2-6.4 (the wall velocity enters the relative velocity)", (1.0 + e) * V, p.v[0].z(), "1 %",
+                    std::abs(p.v[0].z() - (1.0 + e) * V) <= 0.01 * (1.0 + e) * V,
+                    formatNote("V = 1 sqrt(g d0), e_n = %.6f", e)});
 }
 
 TEST(WallContact, SidewaysMovingWallDragsParticleToRolling) {
@@ -197,4 +253,12 @@ TEST(WallContact, SidewaysMovingWallDragsParticleToRolling) {
               kA * p.omega[0].y(), -5.0 / 7.0 * V);
   EXPECT_NEAR(p.v[0].x(), 2.0 / 7.0 * V, 0.01 * 2.0 / 7.0 * V);
   EXPECT_NEAR(kA * p.omega[0].y(), -5.0 / 7.0 * V, 0.01 * 5.0 / 7.0 * V);
+  recordValidation({"dem.wall.vibrating.sideways_drag", kSection,
+                    "floor moving in its own plane at V under a resting particle: final particle speed 2/7 V",
+                    "Eq. 6.3 (the wall velocity enters the tangential relative velocity)", 2.0 / 7.0 * V, p.v[0].x(),
+                    "1 %",
+                    std::abs(p.v[0].x() - 2.0 / 7.0 * V) <= 0.01 * 2.0 / 7.0 * V &&
+                        std::abs(kA * p.omega[0].y() + 5.0 / 7.0 * V) <= 0.01 * 5.0 / 7.0 * V,
+                    formatNote("a omega_y = %.6f (-5/7 V = %.6f, within 1 %% required); V = 1 sqrt(g d0)",
+                               kA * p.omega[0].y(), -5.0 / 7.0 * V)});
 }

@@ -6,12 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "engines/dem/DomainStress.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "extract/coarse/CoarseGrain.hpp"
 #include "extract/coarse/DomainAverages.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::dem::testing;
@@ -21,10 +24,25 @@ namespace {
 
 double boxVolume(const core::data::ParticleFrame& f) { return (f.domain.hi - f.domain.lo).prod(); }
 
-void expectRoundOff(const Mat3& got, const Mat3& want, const char* what) {
+// Returns the relative error, for the validation record.
+double expectRoundOff(const Mat3& got, const Mat3& want, const char* what) {
   const double relative = (got - want).norm() / want.norm();
   std::printf("  %s: |got - reference| / |reference| = %.1e\n", what, relative);
   EXPECT_LT(relative, 1e-12) << what << "\n" << got << "\nreference\n" << want;
+  return relative;
+}
+
+// The engine's stress against Eq. 2.3 on its frame, whole domain and one bin: the mean normal
+// stress is shown, the whole tensor compared.
+void recordFrameStress(const std::string& id, const std::string& check, const Mat3& reference, const Mat3& ours,
+                       double wholeDomain, double oneBin, const std::string& note) {
+  grainbridge::testing::recordValidation(
+      {id, "Extraction (Section 2.3, Sections 6.3.2-6.3.3)", check, "Eq. 2.3; grainbridge::dem::wholeDomainStress",
+       reference.trace() / 3.0, ours.trace() / 3.0, "round-off (1e-12)", wholeDomain < 1e-12 && oneBin < 1e-12,
+       grainbridge::testing::formatNote("mean normal stress tr(sigma)/3 shown; whole tensor compared: relative "
+                                        "Frobenius error %.1e over the whole domain, %.1e on a one-cell grid; ",
+                                        wholeDomain, oneBin) +
+           note});
 }
 
 core::data::ParticleFrame periodicGasFrame() {
@@ -104,9 +122,16 @@ TEST(DemFrameStress, PeriodicGasMatchesTheEngineAndCellsAddUp) {
   ASSERT_GT(f.contacts.size(), 20u);
   const Mat3 engine = dem::wholeDomainStress(f, boxVolume(f));
   const auto avg = coarse::averageWholeDomain(f);
-  expectRoundOff(avg.stress, engine, "whole domain");
+  const double wholeDomain = expectRoundOff(avg.stress, engine, "whole domain");
   const core::grid::CellGrid one(f.domain.lo, f.domain.hi, {1, 1, 1}, {true, true, true});
-  expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], engine, "one bin");
+  const double oneBin =
+      expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], engine, "one bin");
+  recordFrameStress(
+      "extract.dem_frame_stress.periodic_gas",
+      "Eq. 2.3 on a DEM frame of a periodic gas with contacts against the whole-domain stress the "
+      "engine prints",
+      engine, avg.stress, wholeDomain, oneBin,
+      grainbridge::testing::formatNote("600 spheres, solid fraction 0.35, %zu contacts", f.contacts.size()));
 
   const core::grid::CellGrid grid(f.domain.lo, f.domain.hi, {3, 3, 3}, {true, true, true});
   for (const auto& kernel : {coarse::CoarseGrainingKernel::bin(), coarse::CoarseGrainingKernel::overlap(),
@@ -123,18 +148,26 @@ TEST(DemFrameStress, WallContactsCountWithTheWallAsJAtTheContactPoint) {
   ASSERT_GT(f.wallContacts.size(), 8u);
   ASSERT_GT(f.contacts.size(), 40u);
   const Mat3 engine = dem::wholeDomainStress(f, boxVolume(f));
-  expectRoundOff(coarse::averageWholeDomain(f).stress, engine, "whole domain");
+  const Mat3 extracted = coarse::averageWholeDomain(f).stress;
+  const double wholeDomain = expectRoundOff(extracted, engine, "whole domain");
   const core::grid::CellGrid one(f.domain.lo, f.domain.hi, {1, 1, 1}, {true, true, false});
-  expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], engine, "one bin");
+  const double oneBin =
+      expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], engine, "one bin");
+  recordFrameStress("extract.dem_frame_stress.wall_contacts",
+                    "Eq. 2.3 on a DEM frame of spheres settled on a floor wall (the wall as j at the contact point) "
+                    "against the whole-domain stress the engine prints",
+                    engine, extracted, wholeDomain, oneBin,
+                    grainbridge::testing::formatNote("%zu wall contacts, %zu pair contacts", f.wallContacts.size(),
+                                                     f.contacts.size()));
   std::printf("settled bed: %zu wall contacts, %zu pair contacts, sigma_zz %.4g\n", f.wallContacts.size(),
               f.contacts.size(), engine(2, 2));
 }
 
-TEST(DemFrameStress, LeesEdwardsDiffersOnlyByTheEnginesMeanVelocityShift) {
-  // Both take C about u_x = gammadot (y - y_mid); extract also about the mean peculiar velocity,
-  // the engine about the mean of v, shifted by a = gammadot (<y>_m - y_mid). So xx differs by
-  // exactly M a^2 / V and the rest agrees to round-off (DomainAverages.hpp). If the engine is
-  // changed to subtract the mean of v - u_LE, a drops out here.
+TEST(DemFrameStress, LeesEdwardsMatchesTheEngineToRoundOff) {
+  // Both take C about the mean peculiar velocity v - u_LE, u_x = gammadot (y - y_mid). (Before
+  // dem impl_version 3 the engine subtracted the mean of v itself, which is shifted by
+  // a = gammadot (<y>_m - y_mid) and put an extra M a^2 / V into xx; this frame's a is not
+  // zero, so that error would show here.)
   const auto f = shearFrame();
   ASSERT_GT(f.contacts.size(), 3u);
   const double volume = boxVolume(f);
@@ -146,11 +179,16 @@ TEST(DemFrameStress, LeesEdwardsDiffersOnlyByTheEnginesMeanVelocityShift) {
     my += f.mass[i] * f.position[i][1];
   }
   const double a = f.domain.leesEdwardsShearRate * (my / mass - 0.5 * (f.domain.lo[1] + f.domain.hi[1]));
-  Mat3 expected = engine;
-  expected(0, 0) -= mass * a * a / volume;
-  std::printf("Lees-Edwards frame: a = %.3e, engine xx - extract xx = %.3e of %.3e\n", a,
-              engine(0, 0) - avg.stress(0, 0), engine(0, 0));
-  expectRoundOff(avg.stress, expected, "whole domain");
+  ASSERT_GT(mass * a * a / volume, 1e-9 * std::abs(engine(0, 0)));  // the old error would be visible
+  const double wholeDomain = expectRoundOff(avg.stress, engine, "whole domain");
   const core::grid::CellGrid one(f.domain.lo, f.domain.hi, {1, 1, 1}, {true, true, true});
-  expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], expected, "one bin");
+  const double oneBin =
+      expectRoundOff(coarse::coarseGrain(f, one, coarse::CoarseGrainingKernel::bin()).stress[0], engine, "one bin");
+  recordFrameStress("extract.dem_frame_stress.lees_edwards",
+                    "Eq. 2.3 on a DEM frame of Lees-Edwards shear against the whole-domain stress the engine prints",
+                    engine, avg.stress, wholeDomain, oneBin,
+                    grainbridge::testing::formatNote(
+                        "C about the mean peculiar velocity in both; a = gammadot (<y>_m - y_mid) = %.3e; 250 spheres, "
+                        "solid fraction 0.35",
+                        a));
 }

@@ -5,16 +5,27 @@
 // profile-based T is the noise temperature.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
+#include <string>
 
 #include "extract/coarse/CoarseGrain.hpp"
 #include "tests/extract/coarse/CoarseTestFrames.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::extract::coarse;
 using namespace grainbridge::extract::coarse::testing;
+using grainbridge::testing::formatNote;
+using grainbridge::testing::recordValidation;
 
 namespace {
+constexpr const char* kSection = "Kinetic theory against DEM";
+constexpr const char* kReference =
+    "VALIDATION.md (fluctuations C_i = v_i - u(r_i) about the imposed profile); Eq. 3.38";
+
 constexpr double kShear = 2.0;
 constexpr double kL = 10.0;
 
@@ -44,8 +55,13 @@ TEST(LeesEdwardsTemperature, PureStreamingHasNoTemperatureAndNoBinArtefact) {
   const double h = kL / bins;
   const core::grid::CellGrid grid(f.domain.lo, f.domain.hi, {1, bins, 1}, {true, true, true});
   const auto cg = coarseGrain(f, grid, CoarseGrainingKernel::bin());
+  bool streamingPassed = true;
+  double streamingWorst = 0.0;  // largest bin temperature
   for (int j = 0; j < bins; ++j) {
     EXPECT_LT(cg.granularTemperature[static_cast<std::size_t>(j)], 1e-24 * kShear * kShear * h * h) << "bin " << j;
+    streamingPassed =
+        streamingPassed && cg.granularTemperature[static_cast<std::size_t>(j)] < 1e-24 * kShear * kShear * h * h;
+    streamingWorst = std::max(streamingWorst, cg.granularTemperature[static_cast<std::size_t>(j)]);
     // The mean velocity is still the lab-frame profile at the bin's mean height.
     EXPECT_NEAR(cg.velocity[static_cast<std::size_t>(j)][0], kShear * ((j + 0.5) * h - 0.5 * kL), 0.05 * kShear * h);
   }
@@ -55,10 +71,28 @@ TEST(LeesEdwardsTemperature, PureStreamingHasNoTemperatureAndNoBinArtefact) {
   plain.domain.leesEdwardsOffset = 0.0;
   const auto naive = coarseGrain(plain, grid, CoarseGrainingKernel::bin());
   const double artefact = kShear * kShear * h * h / 36.0;
+  bool artefactPassed = true;
+  std::size_t farthest = 0;  // the bin farthest from the artefact
   for (int j = 0; j < bins; ++j) {
     // uniform y in the bin: relative sampling error sqrt(0.8 / N_bin) ~ 1.4 %
     EXPECT_NEAR(naive.granularTemperature[static_cast<std::size_t>(j)] / artefact, 1.0, 0.06) << "bin " << j;
+    const double ratio = naive.granularTemperature[static_cast<std::size_t>(j)] / artefact;
+    artefactPassed = artefactPassed && std::abs(ratio - 1.0) <= 0.06;
+    if (std::abs(ratio - 1.0) > std::abs(naive.granularTemperature[farthest] / artefact - 1.0)) {
+      farthest = static_cast<std::size_t>(j);
+    }
   }
+  const std::string setup =
+      formatNote("20000 particles streaming at gammadot = %g, %d bins of height h = %g", kShear, bins, h);
+  recordValidation({"extract.lees_edwards_temperature.streaming", kSection,
+                    "granular temperature of a pure Lees-Edwards streaming flow with C about the imposed profile at "
+                    "each particle: largest bin T (no gammadot^2 h^2 / 36 artefact)",
+                    kReference, 0.0, streamingWorst, "round-off (1e-24 gammadot^2 h^2)", streamingPassed, setup});
+  recordValidation({"extract.lees_edwards_temperature.bin_mean_artefact", kSection,
+                    "the same frame with C about each bin's constant mean: bin T against gammadot^2 h^2 / 36 (the "
+                    "bin farthest from it shown)",
+                    kReference, artefact, naive.granularTemperature[farthest], "6 % (sampling)", artefactPassed,
+                    setup + "; relative sampling error sqrt(0.8 / N_bin) ~ 1.4 %"});
   std::printf("bin T without the profile: %.4f (gammadot^2 h^2 / 36 = %.4f); with it: %.2e\n",
               naive.granularTemperature[0], artefact, cg.granularTemperature[0]);
 }
@@ -74,6 +108,13 @@ TEST(LeesEdwardsTemperature, NoisyShearGivesTheNoiseTemperatureWithEveryKernel) 
     for (double T : cg.granularTemperature) sum += T;
     const double mean = sum / static_cast<double>(grid.cellCount());
     EXPECT_NEAR(mean / (noise * noise), 1.0, 0.03) << kernel.name();  // the artefact would add 0.44
+    recordValidation({"extract.lees_edwards_temperature.noise." + kernel.name(), kSection,
+                      "Lees-Edwards shear with thermal noise (" + kernel.name() +
+                          " kernel): cell-averaged T about the imposed profile against the noise temperature",
+                      kReference, noise * noise, mean, "3 %", std::abs(mean / (noise * noise) - 1.0) <= 0.03,
+                      formatNote("%d particles, gammadot = %g, 2 x 5 x 2 cells; the bin-mean artefact would add "
+                                 "%.3f to T",
+                                 n, kShear, kShear * kShear * (kL / 5) * (kL / 5) / 36.0)});
     EXPECT_NEAR(cg.species[0].granularTemperature[3] / cg.granularTemperature[3], 1.0, 1e-12);
   }
 }

@@ -3,11 +3,15 @@
 // per-species temperatures of a binary gas in equipartition both come out T.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "extract/coarse/CoarseGrain.hpp"
 #include "extract/coarse/DomainAverages.hpp"
 #include "tests/extract/coarse/CoarseTestFrames.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::extract::coarse;
@@ -63,17 +67,40 @@ TEST(MaxwellianKineticStress, EqualsNmTIdentityWithinSamplingAndTheSampleEstimat
   EXPECT_NEAR(avg.granularTemperature / sampleT, 1.0, 1e-12);
   EXPECT_NEAR(avg.pressure / (mass / volume * sampleT), 1.0, 1e-12);  // tr/3 = rho T exactly
   EXPECT_TRUE(avg.contactStress.isZero());
+  const double sampleError = (avg.kineticStress - sample).norm() / sample.norm();
+  grainbridge::testing::recordValidation(
+      {"extract.kinetic_stress.maxwellian.sample", "Extraction (Section 2.3, Sections 6.3.2-6.3.3)",
+       "kinetic part of Eq. 2.3 for a Maxwellian binary gas: pressure tr(sigma_k)/3 against n m T with T = <C^2>/3 "
+       "of the sample (Eq. 3.38)",
+       "Eq. 2.3, Eq. 3.38", mass / volume * sampleT, avg.pressure, "round-off (1e-12)",
+       sampleError < 1e-12 && std::abs(avg.granularTemperature / sampleT - 1.0) <= 1e-12 &&
+           std::abs(avg.pressure / (mass / volume * sampleT) - 1.0) <= 1e-12 && avg.contactStress.isZero(),
+       grainbridge::testing::formatNote("whole tensor against (1/V) sum m C C^T: relative Frobenius error %.1e; "
+                                        "%d particles of masses 1 and 3",
+                                        sampleError, n)});
 
   // Against the ensemble value rho T I: diagonal relative error sqrt(2/N), off-diagonal sqrt(1/N),
   // here with mass weights (masses 1 and 3) inflating both by sqrt(<m^2>)/<m> = 1.12.
   const double rhoT = mass / volume * kT;
   const double rel = 1.12 / std::sqrt(static_cast<double>(n));
+  bool ensemblePassed = true;
+  double worstSigmas = 0.0;  // largest |component - n m T delta| in units of its sampling error
   for (int a = 0; a < 3; ++a) {
     for (int b = 0; b < 3; ++b) {
       const double tol = 4.0 * rhoT * rel * (a == b ? std::sqrt(2.0) : 1.0);
       EXPECT_NEAR(avg.kineticStress(a, b), a == b ? rhoT : 0.0, tol) << a << b;
+      ensemblePassed = ensemblePassed && std::abs(avg.kineticStress(a, b) - (a == b ? rhoT : 0.0)) <= tol;
+      worstSigmas = std::max(worstSigmas, 4.0 * std::abs(avg.kineticStress(a, b) - (a == b ? rhoT : 0.0)) / tol);
     }
   }
+  grainbridge::testing::recordValidation(
+      {"extract.kinetic_stress.maxwellian", "Extraction (Section 2.3, Sections 6.3.2-6.3.3)",
+       "kinetic part of Eq. 2.3 for a Maxwellian binary gas equals n m T I: pressure tr(sigma_k)/3 against n m T of "
+       "the ensemble (T = 0.7)",
+       "Eq. 2.3", rhoT, avg.kineticStress.trace() / 3.0, "4 sigma of sampling (every component)", ensemblePassed,
+       grainbridge::testing::formatNote("%d particles; sampling error sqrt(2/N) on the diagonal, sqrt(1/N) off it, "
+                                        "times 1.12 for the mass weights; largest component deviation %.2f sigma",
+                                        n, worstSigmas)});
   ASSERT_EQ(avg.species.size(), 2u);
   for (const auto& s : avg.species) {
     EXPECT_NEAR(s.granularTemperature / kT, 1.0, 4.0 * std::sqrt(2.0 / 3.0 / (n / 2))) << s.species;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <string>
 
 #include "core/Error.hpp"
 #include "extract/statistics/DensityHistogram.hpp"
@@ -14,12 +15,18 @@
 #include "extract/statistics/ForcePdfModel.hpp"
 #include "extract/statistics/NormalForces.hpp"
 #include "tests/extract/statistics/StatisticsTestSupport.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::extract::statistics;
 using namespace grainbridge::extract::statistics::testing;
+using grainbridge::testing::formatNote;
+using grainbridge::testing::recordValidation;
 
 namespace {
+constexpr const char* kSection = "Extraction (Section 2.3, Sections 6.3.2-6.3.3)";
+
 // Z by composite Simpson on [0, 60] (the integrand is below 1e-30 beyond), independent of the
 // closed form under test.
 double simpsonIntegral(const ForcePdfParams& p) {
@@ -69,6 +76,24 @@ TEST(ForcePdfModel, ReferenceValuesOfBDifferInNormalisation) {
   EXPECT_NEAR(forcePdfIntegral({2.46, 0.68, 1.35, 0.0, 0.0}), 1.0, 0.05);
   EXPECT_GT(std::abs(forcePdfIntegral({2.46, 0.83, 1.35, 0.0, 0.0}) - 1.0), 0.1);
   EXPECT_NEAR(forcePdfIntegral({3.0, 0.75, 1.5, 0.0, 0.0}), 1.0, 0.05);
+  const double z068 = forcePdfIntegral({2.46, 0.68, 1.35, 0.0, 0.0});
+  const double z083 = forcePdfIntegral({2.46, 0.83, 1.35, 0.0, 0.0});
+  const double zMueth = forcePdfIntegral({3.0, 0.75, 1.5, 0.0, 0.0});
+  recordValidation({"extract.force_pdf.normalisation.bnp_b0.68", kSection,
+                    "integral Z of Eq. 6.11 with the BNP fit a = 2.46, b = 0.68 (Fig. 6.12 caption), beta = 1.35",
+                    "Eq. 6.11; reference line ~1533", 1.0, z068, "5 % (integrates to about 1)",
+                    std::abs(z068 - 1.0) <= 0.05,
+                    "only b = 0.68 of the two printed values gives a normalised density"});
+  recordValidation({"extract.force_pdf.normalisation.bnp_b0.83", kSection,
+                    "integral Z of Eq. 6.11 with the BNP fit a = 2.46, b = 0.83 (text), beta = 1.35",
+                    "Eq. 6.11; reference line ~1521", 1.0, z083, "differs from 1 by more than 10 %",
+                    std::abs(z083 - 1.0) > 0.1,
+                    "expected to fail normalisation: passed means Z is more than 10 % away from 1, as VALIDATION.md "
+                    "says"});
+  recordValidation({"extract.force_pdf.normalisation.mueth", kSection,
+                    "integral Z of Eq. 6.11 with Mueth et al. 1998: a = 3.0, b = 0.75, beta = 1.5",
+                    "Eq. 6.11; Mueth et al. 1998", 1.0, zMueth, "5 % (close to normalised)",
+                    std::abs(zMueth - 1.0) <= 0.05, ""});
 }
 
 TEST(DensityHistogram, LinearAndLogBinsIntegrateToTheFractionInside) {
@@ -119,6 +144,29 @@ TEST(ForcePdfFit, Eq611RecoversMuethAndBnpParametersWithin3Percent) {
     EXPECT_GT(fit.chi2PerDof, 0.5);
     EXPECT_LT(fit.chi2PerDof, 1.6);
     EXPECT_EQ(fit.dof, fit.binsUsed - 3);
+    const std::string which = b == 0.75 ? "mueth" : "bnp_b0.83";
+    const std::string source =
+        b == 0.75 ? "Mueth et al. 1998 (b = 0.75, beta = 1.5)" : "the reference's BNP fit (b = 0.83, beta = 1.35)";
+    const std::string note = formatNote(
+        "Levenberg-Marquardt fit of Eq. 6.11 to a histogram of 1e5 samples from the normalised density; chi^2/dof "
+        "%.3f; fitted a %.4f +- %.4f, b %.4f +- %.4f, beta %.4f +- %.4f",
+        fit.chi2PerDof, fit.params.a, fit.error.a, fit.params.b, fit.error.b, fit.params.beta, fit.error.beta);
+    recordValidation({"extract.force_pdf.eq611." + which + ".b", kSection,
+                      "Eq. 6.11 fit recovers b from samples of " + source, "Eq. 6.11", b, fit.params.b, "3 %",
+                      relErr(fit.params.b, b) < 0.03, note});
+    recordValidation({"extract.force_pdf.eq611." + which + ".beta", kSection,
+                      "Eq. 6.11 fit recovers beta from samples of " + source, "Eq. 6.11", beta, fit.params.beta, "3 %",
+                      relErr(fit.params.beta, beta) < 0.03, note});
+    recordValidation(
+        {"extract.force_pdf.eq611." + which + ".a", kSection,
+         "Eq. 6.11 fit recovers a (the amplitude of the normalised density, a over Z) from samples of " + source,
+         "Eq. 6.11 (normalised)", aTrue, fit.params.a, "3 %",
+         relErr(fit.params.a, aTrue) < 0.03 && relErr(fit.normalisedA, aTrue) < 0.03 &&
+             std::abs(fit.integral - 1.0) <= 0.03,
+         formatNote("printed a: %s; the normalised amplitude for this b, beta is %.4f; fitted integral "
+                    "%.4f; ",
+                    b == 0.75 ? "3.0" : "2.46", aTrue, fit.integral) +
+             note});
   }
 }
 
