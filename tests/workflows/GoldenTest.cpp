@@ -2,8 +2,8 @@
 // computes must come with an impl_version bump, or cached results of the old code would be
 // reused as if they were the new code's. Each tests/golden/<type>.json holds a small workflow,
 // the impl_version it was recorded with and a digest of every artifact's content. Particle
-// frames are digested by their data (read back), not their bytes, because every file also
-// carries the git SHA of the build that wrote it.
+// and field frames are digested by their data (read back), not their bytes, because every
+// file also carries the git SHA of the build that wrote it.
 //
 // After an intended change: bump the stage's impl_version, then regenerate with
 //   GRAINBRIDGE_UPDATE_GOLDEN=1 build/bin/test_workflows_cli --gtest_filter='Golden*'
@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "core/Sha256.hpp"
+#include "core/io/FieldFrameReader.hpp"
 #include "core/io/ParticleFrameReader.hpp"
 #include "db/Database.hpp"
 #include "db/ProvenanceStore.hpp"
@@ -32,7 +33,31 @@ void digestArray(std::ostringstream& out, const std::vector<T>& v) {
   out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
 }
 
+std::string fieldFrameDigest(const fs::path& file) {
+  const auto f = core::io::readFieldFrame(file);
+  std::ostringstream out;
+  out << f.time << ' ' << f.step << ' ' << f.units << ' ' << f.grid.cells[0] << ' ' << f.grid.cells[1] << ' '
+      << f.grid.cells[2] << ' ';
+  out.write(reinterpret_cast<const char*>(f.grid.origin.data()), 3 * sizeof(double));
+  out.write(reinterpret_cast<const char*>(f.grid.spacing.data()), 3 * sizeof(double));
+  digestArray(out, f.ep_g);
+  digestArray(out, f.p_g);
+  for (const auto& v : f.u_g) out.write(reinterpret_cast<const char*>(v.data()), 3 * sizeof(double));
+  for (const auto& phase : f.solids) {
+    out << phase.name << ' ';
+    digestArray(out, phase.ep_s);
+    digestArray(out, phase.theta);
+    for (const auto& v : phase.u_s) out.write(reinterpret_cast<const char*>(v.data()), 3 * sizeof(double));
+  }
+  for (const auto& extra : f.extras) {
+    out << extra.name << ' ' << extra.components << ' ';
+    digestArray(out, extra.values);
+  }
+  return core::sha256Hex(out.str());
+}
+
 std::string contentDigest(const fs::path& file, const std::string& kind) {
+  if (kind == "field_frame") return fieldFrameDigest(file);
   if (kind != "particle_frame") return core::sha256File(file);
   const auto f = core::io::readParticleFrame(file);
   std::ostringstream out;
