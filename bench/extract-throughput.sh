@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Extraction throughput on a dense frame of 100,000 particles with their contacts:
 #  - Eq. 2.3 coarse graining (bin kernel) onto cells of one mean diameter over the whole box,
+#    by a CoarseGrainer reused frame after frame as the extract stage does (contacts_per_s_fresh:
+#    the one-shot coarseGrain() call),
 #    I/O excluded, one core: contacts_per_s = contacts / median time per call (calls repeated
 #    for >= 2 s). Targets: >= 5e6 (goal 2e7).
 #  - one pass of the multi-pass MST: mst_100k_seconds, median of 3 (target < 2 s, goal 0.5 s);

@@ -1,8 +1,10 @@
 // Extraction throughput on one particle frame (bench/extract-throughput.sh drives it):
-//  - Eq. 2.3 coarse graining (extract::coarse::coarseGrain) onto bins of one mean diameter over
-//    the frame's whole domain, bin kernel: repeated until at least --min-seconds have been spent
-//    (and at least 5 calls after one untimed warm-up), median wall time per call;
-//    contacts_per_s = contacts / that time.
+//  - Eq. 2.3 coarse graining onto bins of one mean diameter over the frame's whole domain, bin
+//    kernel, as an extract stage runs it frame after frame: one extract::coarse::CoarseGrainer
+//    called repeatedly (it keeps its cell arrays between calls), until at least --min-seconds
+//    have been spent (and at least 5 calls after one untimed warm-up), median wall time per
+//    call; contacts_per_s = contacts / that time. The one-shot extract::coarse::coarseGrain,
+//    which allocates every array afresh, is timed the same way: contacts_per_s_fresh.
 //  - The multi-pass MST (extract::structure::runMultiPassMst) with passes = 1 and passes = 4,
 //    --mst-runs calls each, median wall times.
 // Process CPU times are printed next to the wall times: on a loaded machine they show how much
@@ -21,6 +23,7 @@
 #include <ctime>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -113,31 +116,40 @@ int main(int argc, char** argv) {
                 counts[2], grid.cellCount());
 
     // Coarse graining: one untimed warm-up call, then repeat until minSeconds (>= 5 calls).
-    {
-      const coarse::CoarseFields warm = coarse::coarseGrain(frame, grid, kernel);
+    // call() returns the fields; drop() releases them, untimed, before the next call.
+    const auto timeCoarseGraining = [&](const char* name, auto&& call, auto&& drop) {
+      g_sink = g_sink + call().pressure[grid.cellCount() / 2];  // warm-up
+      drop();
+      std::vector<double> times, cpu;
       double total = 0.0;
-      for (const auto& s : warm.contactStress) total += s.trace();
-      g_sink = g_sink + total;
-    }
-    std::vector<double> cgTimes, cgCpu;
-    double cgTotal = 0.0;
-    while (cgTimes.size() < 5 || cgTotal < minSeconds) {
-      const double cpuStart = cpuSeconds();
-      const Clock::time_point start = Clock::now();
-      const coarse::CoarseFields fields = coarse::coarseGrain(frame, grid, kernel);
-      const double t = secondsSince(start);
-      cgCpu.push_back(cpuSeconds() - cpuStart);
-      g_sink = g_sink + fields.pressure[fields.pressure.size() / 2];
-      cgTimes.push_back(t);
-      cgTotal += t;
-    }
-    const double cgMedian = median(cgTimes);
-    const double cgMin = *std::min_element(cgTimes.begin(), cgTimes.end());
+      while (times.size() < 5 || total < minSeconds) {
+        const double cpuStart = cpuSeconds();
+        const Clock::time_point start = Clock::now();
+        const coarse::CoarseFields& fields = call();
+        const double t = secondsSince(start);
+        cpu.push_back(cpuSeconds() - cpuStart);
+        g_sink = g_sink + fields.pressure[fields.pressure.size() / 2];
+        drop();
+        times.push_back(t);
+        total += t;
+      }
+      const double m = median(times);
+      std::printf("%s = %.6g (median wall time of %zu calls, min %.6g, %.3g s in all; cpu median %.6g)\n", name, m,
+                  times.size(), *std::min_element(times.begin(), times.end()), total, median(cpu));
+      return m;
+    };
+    coarse::CoarseGrainer grainer;
+    const double cgMedian = timeCoarseGraining(
+        "coarse_grain_seconds", [&]() -> const coarse::CoarseFields& { return grainer(frame, grid, kernel); }, [] {});
+    std::optional<coarse::CoarseFields> fresh;
+    const double freshMedian = timeCoarseGraining(
+        "coarse_grain_fresh_seconds",
+        [&]() -> const coarse::CoarseFields& { return fresh.emplace(coarse::coarseGrain(frame, grid, kernel)); },
+        [&] { fresh.reset(); });
     const double contactsPerSecond = static_cast<double>(contacts) / cgMedian;
-    std::printf(
-        "coarse_grain_seconds = %.6g (median wall time of %zu calls, min %.6g, %.3g s in all; cpu median %.6g)\n",
-        cgMedian, cgTimes.size(), cgMin, cgTotal, median(cgCpu));
     std::printf("particles_per_s = %.4g\n", static_cast<double>(particles) / cgMedian);
+    std::printf("contacts_per_s_fresh = %.4g (one-shot coarseGrain, every array allocated afresh)\n",
+                static_cast<double>(contacts) / freshMedian);
 
     // Multi-pass MST: passes = 1 and passes = 4, default options otherwise, mstRuns calls each.
     const auto timeMst = [&](int passes) {

@@ -13,7 +13,7 @@ const char* axisName(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z";
 
 CellGrid::CellGrid(const Vec3& lo, const Vec3& hi, const std::array<int, 3>& counts,
                    const std::array<bool, 3>& periodic)
-    : lo_(lo), hi_(hi), spacing_(Vec3::Zero()), counts_(counts), periodic_(periodic) {
+    : lo_(lo), hi_(hi), spacing_(Vec3::Zero()), inverseSpacing_(Vec3::Zero()), counts_(counts), periodic_(periodic) {
   for (int a = 0; a < 3; ++a) {
     const auto s = static_cast<std::size_t>(a);
     if (!(hi[a] > lo[a]) || !std::isfinite(lo[a]) || !std::isfinite(hi[a])) {
@@ -25,6 +25,7 @@ CellGrid::CellGrid(const Vec3& lo, const Vec3& hi, const std::array<int, 3>& cou
                   ", expected at least 1");
     }
     spacing_[a] = (hi[a] - lo[a]) / counts[s];
+    inverseSpacing_[a] = 1.0 / spacing_[a];
   }
 }
 
@@ -54,23 +55,26 @@ CellIndex CellGrid::cellIndex(std::size_t flat) const {
   return {static_cast<int>(flat % nx), static_cast<int>((flat / nx) % ny), static_cast<int>(flat / (nx * ny))};
 }
 
-bool CellGrid::contains(const CellIndex& c) const {
-  return c.i >= 0 && c.i < counts_[0] && c.j >= 0 && c.j < counts_[1] && c.k >= 0 && c.k < counts_[2];
-}
-
 std::optional<CellIndex> CellGrid::cellOf(const Vec3& point) const {
+  // Inside the box (nearly every point) there is nothing to fold, and what follows reduces to
+  // the cell by axisCell, capped at the last cell.
+  const Vec3 r = point - lo_;
+  if ((r.array() >= 0.0).all() && (r.array() < (hi_ - lo_).array()).all()) {
+    return CellIndex{std::min(axisCell(0, point[0]), counts_[0] - 1), std::min(axisCell(1, point[1]), counts_[1] - 1),
+                     std::min(axisCell(2, point[2]), counts_[2] - 1)};
+  }
   Vec3 p = point;
   const Vec3 len = length();
   if (periodic_[1]) {
     // Across the shearing boundary a point re-enters displaced by the offset (Domain.hpp).
-    const double m = std::floor((p[1] - lo_[1]) / len[1]);
+    const double m = imageOf(1, p[1]);
     p[1] -= m * len[1];
     p[0] -= m * leesEdwardsOffset_;
   }
   std::array<int, 3> idx{};
   for (int a = 0; a < 3; ++a) {
     const auto s = static_cast<std::size_t>(a);
-    if (periodic_[s]) p[a] -= len[a] * std::floor((p[a] - lo_[a]) / len[a]);
+    if (periodic_[s]) p[a] -= len[a] * imageOf(a, p[a]);
     int i = axisCell(a, p[a]);
     if (periodic_[s]) {
       // floor round-off can put a point a hair below hi into cell n

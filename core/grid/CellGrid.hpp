@@ -16,6 +16,7 @@
 #include "core/Types.hpp"
 #include "core/data/Domain.hpp"
 #include "core/data/FieldFrame.hpp"
+#include "core/grid/FastFloor.hpp"
 
 namespace grainbridge::core::grid {
 
@@ -52,7 +53,9 @@ class CellGrid {
            static_cast<std::size_t>(c.i);
   }
   [[nodiscard]] CellIndex cellIndex(std::size_t flat) const;
-  [[nodiscard]] bool contains(const CellIndex& c) const;
+  [[nodiscard]] bool contains(const CellIndex& c) const {
+    return c.i >= 0 && c.i < counts_[0] && c.j >= 0 && c.j < counts_[1] && c.k >= 0 && c.k < counts_[2];
+  }
 
   // The cell holding a point; periodic axes wrap (with the Lees-Edwards displacement across y),
   // a point outside the box on a non-periodic axis has no cell. Cells are half-open [lo, hi),
@@ -62,7 +65,16 @@ class CellGrid {
   [[nodiscard]] Vec3 cellCentre(const CellIndex& c) const;
   // Index along one axis of the (possibly virtual, outside the box) cell holding coordinate x.
   [[nodiscard]] int axisCell(int axis, double x) const {
-    return static_cast<int>(std::floor((x - lo_[axis]) / spacing_[axis]));
+    // floor((x - lo) / spacing), by a multiplication where that gives the same floor: the
+    // product carries two roundings more than the quotient, so it can only fall on the other
+    // side of an integer when within a few ulps of it (a point on a face); those divide. Cell
+    // lookups run several times per particle and contact, and a division's latency dominated.
+    const double r = x - lo_[axis];
+    const double q = r * inverseSpacing_[axis];
+    const int i = floorToInt(q);
+    const double margin = 1e-12 * (std::abs(q) + 1.0);
+    if (q - i > margin && (i + 1) - q > margin) return i;
+    return floorToInt(r / spacing_[axis]);
   }
 
   [[nodiscard]] data::GridGeometry geometry() const;
@@ -73,11 +85,20 @@ class CellGrid {
   // or drops what lies outside). y goes first because its images are displaced in x.
   template <class Visit>
   void forEachImage(const Vec3& boxMin, const Vec3& boxMax, Visit&& visit) const {
+    // Nearly every object lies inside the box on its periodic axes: its only image is itself.
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+      if (!periodic_[static_cast<std::size_t>(a)]) continue;
+      inside = inside && imageOf(a, boxMin[a]) == 0.0 && imageOf(a, boxMax[a]) == 0.0;
+    }
+    if (inside) {
+      visit(Vec3(Vec3::Zero()));
+      return;
+    }
     const Vec3 len = length();
     const auto range = [&](int axis, double a, double b) {
       if (!periodic_[static_cast<std::size_t>(axis)]) return std::array<int, 2>{0, 0};
-      return std::array<int, 2>{static_cast<int>(std::floor((a - lo_[axis]) / len[axis])),
-                                static_cast<int>(std::floor((b - lo_[axis]) / len[axis]))};
+      return std::array<int, 2>{static_cast<int>(imageOf(axis, a)), static_cast<int>(imageOf(axis, b))};
     };
     const auto ys = range(1, boxMin[1], boxMax[1]);
     for (int my = ys[0]; my <= ys[1]; ++my) {
@@ -97,7 +118,16 @@ class CellGrid {
   bool operator==(const CellGrid&) const = default;
 
  private:
-  Vec3 lo_, hi_, spacing_;
+  // floor((x - lo) / length) along a periodic axis: which image of the box holds x. Without the
+  // division for x inside the box, where it is 0 exactly (0 <= x - lo < length gives a quotient
+  // below 1): nearly every point and contact is.
+  [[nodiscard]] double imageOf(int axis, double x) const {
+    const double r = x - lo_[axis];
+    const double len = hi_[axis] - lo_[axis];
+    return r >= 0.0 && r < len ? 0.0 : floorExact(r / len);
+  }
+
+  Vec3 lo_, hi_, spacing_, inverseSpacing_;
   std::array<int, 3> counts_;
   std::array<bool, 3> periodic_;
   double leesEdwardsOffset_ = 0.0;

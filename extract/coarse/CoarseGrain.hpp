@@ -16,10 +16,18 @@
 //    segment shares. A wall contact is a contact with the wall as j at the contact point: full
 //    (r_i - point) F along the segment from r_i to the point. Summed over a periodic box this is
 //    the whole-domain stress the DEM engine prints.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "core/Types.hpp"
 #include "core/data/ParticleFrame.hpp"
 #include "core/grid/CellGrid.hpp"
+#include "core/grid/CellShare.hpp"
 #include "extract/coarse/CoarseFields.hpp"
 #include "extract/coarse/CoarseGrainingKernel.hpp"
+#include "extract/coarse/FrameSpecies.hpp"
+#include "extract/coarse/ParticleContacts.hpp"
 
 namespace grainbridge::extract::coarse {
 
@@ -30,5 +38,50 @@ namespace grainbridge::extract::coarse {
 // the periodic domain. Under Lees-Edwards the frame's offset is applied to the grid's images.
 CoarseFields coarseGrain(const core::data::ParticleFrame& frame, const core::grid::CellGrid& grid,
                          const CoarseGrainingKernel& kernel);
+
+// Coarse graining of frame after frame (the same results as coarseGrain) that keeps its cell
+// arrays, and the fields it returns, from one call to the next: on a large grid, allocating and
+// zero-filling some 60 MB of fresh cell arrays per frame cost as much as the coarse graining
+// itself (page faults). It also remembers which cells the last frame reached, so the next one
+// clears and finalises only those and its own (the empty space above a bed costs nothing).
+// Not thread-safe; one per thread.
+class CoarseGrainer {
+ public:
+  // As coarseGrain. The fields are overwritten by the next call.
+  const CoarseFields& operator()(const core::data::ParticleFrame& frame, const core::grid::CellGrid& grid,
+                                 const CoarseGrainingKernel& kernel);
+  // Moves the last fields out (the next call allocates new ones). Needs a call first.
+  CoarseFields release();
+
+ private:
+  // What the cell arrays hold depends on; any change starts them afresh.
+  struct Layout {
+    std::size_t cells = 0, species = 0;
+    bool sheared = false, drag = false;
+    bool operator==(const Layout&) const = default;
+  };
+  // Sizes the fields for the grid and zeroes the arrays the passes accumulate into.
+  CoarseFields& prepare(const core::grid::CellGrid& grid, const CoarseGrainingKernel& kernel, const Layout& layout);
+
+  std::optional<CoarseFields> fields_;
+  std::optional<Layout> layout_;
+  // Per frame: id lookup, contacts per particle, species (kept for their storage).
+  ParticleIndex index_;
+  ParticleContacts contacts_;
+  FrameSpecies species_;
+  // Every cell outside [dirtyBegin_, dirtyEnd_) holds the values of an empty cell in every
+  // array (zeros; contactToDragRatio -1): the cells the last frame reached lie inside.
+  std::size_t dirtyBegin_ = 0, dirtyEnd_ = 0;
+  // Per particle: the cell holding its centre (npos outside the grid), and for the kernels that
+  // spread a particle over several cells, its shares (shares_[offset_[i]] .. [offset_[i + 1]]).
+  std::vector<std::size_t> centreCell_, offset_;
+  core::grid::CellShares shares_, one_;
+  // Per cell: mean peculiar velocity of all and of each species (needed only under shear:
+  // otherwise it is the mean velocity), particles in contact, sums of contact and drag forces.
+  std::vector<Vec3> meanPeculiar_;
+  std::vector<std::vector<Vec3>> speciesMeanPeculiar_;
+  std::vector<double> inContact_;
+  std::vector<Vec3> contactForce_, drag_;
+};
 
 }  // namespace grainbridge::extract::coarse

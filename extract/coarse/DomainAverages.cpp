@@ -20,7 +20,7 @@ DomainAverages averageWholeDomain(const core::data::ParticleFrame& frame, double
     throw Error("whole-domain averages: sample volume " + std::to_string(volume) + " must be positive");
   }
   frame.validate();
-  const auto index = indexById(frame);
+  const ParticleIndex index(frame);
   const ParticleContacts contacts = particleContacts(frame, index);
   const FrameSpecies species = frameSpecies(frame);
   const std::size_t n = frame.size();
@@ -69,7 +69,7 @@ DomainAverages averageWholeDomain(const core::data::ParticleFrame& frame, double
   }
   const auto& wc = frame.wallContacts;
   for (std::size_t k = 0; k < wc.size(); ++k) {
-    const Vec3 branch = frame.position[index.at(wc.particle[k])] - wc.point[k];
+    const Vec3 branch = frame.position[contacts.wallParticle[k]] - wc.point[k];
     out.contactStress += branch * (wc.forceNormal[k] + wc.forceTangential[k]).transpose();
   }
   if (totalMass > 0.0) out.granularTemperature = out.kineticStress.trace() / (3.0 * totalMass);

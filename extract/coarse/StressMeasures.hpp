@@ -16,7 +16,11 @@ inline double pressure(const Mat3& sigma) { return sigma.trace() / 3.0; }
 inline double shearStress(const Mat3& sigma) { return sigma(0, 1); }
 
 inline double deviatoricNorm(const Mat3& sigma) {
-  const Mat3 s = sigma - pressure(sigma) * Mat3::Identity();
+  // The identity as a stored matrix, not an expression: the difference is then formed with
+  // vector operations, as squaredNorm reads it back (the scalar stores of an identity
+  // expression stalled those reads, once per cell of a coarse-grained frame). Same values.
+  static const Mat3 identity = Mat3::Identity();
+  const Mat3 s = sigma - pressure(sigma) * identity;
   return std::sqrt(0.5 * s.squaredNorm());
 }
 

@@ -373,6 +373,7 @@ void ExtractStage::run(StageContext& ctx) const {
       for (const auto& sp : up.manifest.at("params").at("species")) speciesNames.push_back(sp.at("name"));
     }
   }
+  extract::coarse::CoarseGrainer coarseGrainer;  // keeps its cell arrays from frame to frame
   const auto kernel = extract::coarse::CoarseGrainingKernel::fromName(p.at("kernel").get<std::string>(),
                                                                       p.at("kernel_width").get<double>());
   std::vector<core::data::ParticleFrame> kept;  // for the pooled statistics
@@ -441,7 +442,7 @@ void ExtractStage::run(StageContext& ctx) const {
       std::array<int, 3> cells{};
       for (std::size_t axis = 0; axis < 3; ++axis) cells[axis] = static_cast<int>(p["grid_cells"][axis].get<double>());
       const auto grid = core::grid::CellGrid::overDomain(frame.domain, cells);
-      fieldWriter->write(toFieldFrame(frame, extract::coarse::coarseGrain(frame, grid, kernel), speciesNames));
+      fieldWriter->write(toFieldFrame(frame, coarseGrainer(frame, grid, kernel), speciesNames));
     }
     if (forceStatistics) kept.push_back(std::move(frame));
   }

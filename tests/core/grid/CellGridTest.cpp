@@ -1,9 +1,15 @@
 // CellGrid: C-order [k][j][i] indexing matching core's FieldFrame, the cell of a point with
-// periodic and Lees-Edwards wrapping, and errors naming what is wrong.
+// periodic and Lees-Edwards wrapping (exactly floor((x - lo) / spacing), faces included), and
+// errors naming what is wrong.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
 
 #include "core/Error.hpp"
 #include "core/grid/CellGrid.hpp"
+#include "core/grid/FastFloor.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::core::grid;
@@ -82,4 +88,36 @@ TEST(CellGrid, ErrorsNameTheProblem) {
   }
   EXPECT_THROW(CellGrid(Vec3(0, 0, 0), Vec3(1, 1, 1), {1, 1, 1}, {false, true, true}).withLeesEdwardsOffset(0.1),
                Error);
+}
+
+TEST(CellGrid, AxisCellIsTheFloorOfTheQuotientOnAndNextToFaces) {
+  // Spacings that are not powers of two, so the quotient by multiplication and by division can
+  // differ in the last bit.
+  const CellGrid grid(Vec3(-0.3, 0.1, 2.0), Vec3(6.7, 4.3, 7.1), {7, 3, 11});
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> face(-20, 30);
+  std::uniform_real_distribution<double> u(-20.0, 30.0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int a = trial % 3;
+    // Faces, a few ulps either side of them, and anywhere.
+    double x = grid.lo()[a] + face(rng) * grid.spacing()[a];
+    if (trial % 4 == 1) x = std::nextafter(x, -1e300);
+    if (trial % 4 == 2) x = std::nextafter(std::nextafter(x, 1e300), 1e300);
+    if (trial % 4 == 3) x = grid.lo()[a] + u(rng) * grid.spacing()[a];
+    EXPECT_EQ(grid.axisCell(a, x), static_cast<int>(std::floor((x - grid.lo()[a]) / grid.spacing()[a]))) << x;
+  }
+}
+
+TEST(FastFloor, MatchesStdFloor) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double x : {0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.999999999999999, -2.000000000000001, 1e15 + 0.5,
+                         -1e15 - 0.5, 4503599627370497.0, -4503599627370497.0, 1e300, -1e300, inf, -inf}) {
+    const double want = std::floor(x);
+    EXPECT_EQ(floorExact(x), want) << x;
+    EXPECT_EQ(std::signbit(floorExact(x)), std::signbit(want)) << x;
+    if (std::abs(x) < 1e9) {
+      EXPECT_EQ(floorToInt(x), static_cast<int>(want)) << x;
+    }
+  }
+  EXPECT_TRUE(std::isnan(floorExact(std::numeric_limits<double>::quiet_NaN())));
 }
