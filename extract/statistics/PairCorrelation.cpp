@@ -6,7 +6,8 @@
 #include <utility>
 
 #include "core/Error.hpp"
-#include "extract/statistics/PairSearch.hpp"
+#include "extract/geometry/PairSearch.hpp"
+#include "extract/geometry/PeriodicBox.hpp"
 
 namespace grainbridge::extract::statistics {
 
@@ -159,8 +160,19 @@ void CorrelationAccumulator::addVectors(const core::data::Domain& domain, std::s
     s.count[k] += 1.0;
     s.pairSum[k] += sum;
   };
+  const double rMax = options_.rMax;
   try {
-    PairSearch search(domain, positions, options_.rMax);
+    const geometry::PeriodicBox box(domain);
+    // Past half a periodic edge a pair would have two images within r_max, and Eq. 6.12 counts
+    // each pair once: the correlation would be wrong there, not merely noisy.
+    if (rMax > box.maxUniqueDistance()) {
+      throw Error("r_max = " + std::to_string(rMax) + " exceeds half the shortest periodic box edge (" +
+                  std::to_string(box.maxUniqueDistance()) + "); the minimum image would not be unique");
+    }
+    // The search keeps r <= cutoff and the bins end before r_max: the next double below it.
+    // Bins do not need the last bits of r, so the search need not measure them again.
+    const geometry::PairSearch search(box, positions, std::nextafter(rMax, 0.0),
+                                      geometry::PairSearch::Lengths::RoundOff);
     // Per pair: one dot product and two or three bin updates; the pair search dominates.
     search.forEachPair([&](std::size_t i, std::size_t j, double r) {
       const auto k = static_cast<std::size_t>(r / dr);

@@ -7,11 +7,11 @@
 #include <unordered_map>
 
 #include "core/Error.hpp"
-#include "extract/structure/CandidatePairs.hpp"
+#include "extract/geometry/PairSearch.hpp"
+#include "extract/geometry/PeriodicBox.hpp"
 #include "extract/structure/ContactEdges.hpp"
 #include "extract/structure/DisjointSets.hpp"
 #include "extract/structure/ParticleIdIndex.hpp"
-#include "extract/structure/PeriodicBox.hpp"
 
 namespace grainbridge::extract::structure {
 
@@ -42,6 +42,28 @@ bool before(double wa, std::uint32_t aLow, std::uint32_t aHigh, double wb, std::
   if (wa != wb) return wa < wb;
   if (aLow != bLow) return aLow < bLow;
   return aHigh < bHigh;
+}
+
+// A candidate edge: ranks a < b within the cutoff, 32-bit ranks to keep the (often tens of
+// millions of) candidates at 16 bytes.
+struct CandidatePair {
+  double length = 0.0;  // |minimumImage(r_a - r_b)|, bitwise that of an all-pairs loop
+  std::uint32_t a = 0, b = 0;
+};
+
+std::vector<CandidatePair> findCandidatePairs(const std::vector<Vec3>& positions, const core::data::Domain& domain,
+                                              double cutoff) {
+  if (positions.size() >= std::numeric_limits<std::uint32_t>::max()) {
+    throw Error("the MST candidate search takes at most 2^32 - 1 particles; the frame has " +
+                std::to_string(positions.size()));
+  }
+  const geometry::PairSearch search(geometry::PeriodicBox(domain), positions, cutoff);
+  std::vector<CandidatePair> pairs;
+  pairs.reserve(search.expectedPairCount());
+  search.forEachPair([&](std::size_t a, std::size_t b, double length) {
+    pairs.push_back({length, static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+  });
+  return pairs;
 }
 
 struct ElongatedEdge {
@@ -139,7 +161,7 @@ MultiPassMstResult runMultiPassMst(const core::data::ParticleFrame& frame, const
   // edges already selected, which are merged in from a small list sorted per pass.
   std::vector<Vec3> positions(n);
   for (std::size_t r = 0; r < n; ++r) positions[r] = frame.position[index.frameIndexAtRank(r)];
-  LengthOrderedEdges candidates(findCandidatePairs(positions, PeriodicBox(frame.domain), cutoff), cutoff);
+  LengthOrderedEdges candidates(findCandidatePairs(positions, frame.domain, cutoff), cutoff);
   result.candidateEdges = candidates.size();
 
   std::unordered_map<std::uint64_t, std::size_t> contactOfPair;

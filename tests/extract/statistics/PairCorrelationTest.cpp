@@ -1,21 +1,17 @@
-// Spatial correlations (Eq. 6.12) and correlation lengths: the cell-list pair search equals brute
-// force under periodic and Lees-Edwards minimum images; independent forces give a flat F(r) = 1
-// (= <f>^2) within the jackknife errors; fields with a known correlation function give the
-// decay length that function implies.
+// Spatial correlations (Eq. 6.12) and correlation lengths: independent forces give a flat
+// F(r) = 1 (= <f>^2) within the jackknife errors; fields with a known correlation function give
+// the decay length that function implies. The pair search underneath is tested against all
+// pairs in tests/extract/geometry.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <random>
-#include <tuple>
 
 #include "core/Error.hpp"
 #include "extract/statistics/CorrelationLength.hpp"
 #include "extract/statistics/ForceCorrelation.hpp"
-#include "extract/statistics/MinimumImage.hpp"
 #include "extract/statistics/PairCorrelation.hpp"
-#include "extract/statistics/PairSearch.hpp"
 #include "extract/statistics/VelocityCorrelation.hpp"
 #include "tests/extract/statistics/StatisticsTestSupport.hpp"
 
@@ -23,91 +19,6 @@ using namespace grainbridge;
 using namespace grainbridge::extract::statistics;
 using namespace grainbridge::extract::statistics::testing;
 using grainbridge::core::data::Domain;
-
-TEST(MinimumImage, PeriodicAndLeesEdwardsImages) {
-  Domain d = periodicBox(Vec3::Zero(), Vec3(10, 10, 10));
-  d.periodic = {true, true, false};
-  const Vec3 a(0.5, 9.5, 5.0), b(9.5, 0.5, 5.0);
-  EXPECT_TRUE(MinimumImage(d).separation(a, b).isApprox(Vec3(1, -1, 0)));
-  // z is open: a plain difference.
-  EXPECT_TRUE(MinimumImage(d).separation(Vec3(0, 0, 9.5), Vec3(0, 0, 0.5)).isApprox(Vec3(0, 0, 9)));
-  // Lees-Edwards offset 2: b's image above the box is at (9.5 + 2, 10.5) = (1.5, 10.5) after the
-  // x wrap, so a - image = (-1, -1).
-  d.leesEdwardsOffset = 2.0;
-  EXPECT_TRUE(MinimumImage(d).separation(a, b).isApprox(Vec3(-1, -1, 0)));
-  EXPECT_TRUE(MinimumImage(d).separation(b, a).isApprox(Vec3(1, 1, 0)));
-  // Wrapping a point above the box moves it down by Ly and back by the offset.
-  EXPECT_TRUE(MinimumImage(d).wrap(Vec3(1.0, 10.5, 3.0)).isApprox(Vec3(9.0, 0.5, 3.0)));
-  d.periodic = {true, false, false};
-  EXPECT_THROW(MinimumImage{d}, Error);  // Lees-Edwards needs x and y periodic
-}
-
-namespace {
-using PairKey = std::pair<std::size_t, std::size_t>;
-
-std::map<PairKey, double> bruteForcePairs(const Domain& d, const std::vector<Vec3>& p, double rMax) {
-  const MinimumImage image(d);
-  std::map<PairKey, double> out;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    for (std::size_t j = i + 1; j < p.size(); ++j) {
-      const double r = image.separation(p[i], p[j]).norm();
-      if (r < rMax) out[{i, j}] = r;
-    }
-  }
-  return out;
-}
-}  // namespace
-
-TEST(PairSearch, EqualsBruteForceForPeriodicShearedAndOpenBoxes) {
-  std::mt19937_64 rng(42);
-  struct Case {
-    Domain d;
-    double rMax;
-  };
-  std::vector<Case> cases;
-  Domain full = periodicBox(Vec3(-1, 0, 2), Vec3(9, 8, 10));
-  cases.push_back({full, 1.3});
-  cases.push_back({full, 2.9});
-  Domain sheared = full;
-  sheared.leesEdwardsOffset = 3.7;
-  sheared.leesEdwardsShearRate = 0.1;
-  cases.push_back({sheared, 1.7});
-  // Four cells along y for a reach of two: cells reachable through two images (general path).
-  cases.push_back({sheared, 3.9});
-  Domain longSheared = sheared;  // many cells along x: the shifted x range of the exact path
-  longSheared.hi = Vec3(29, 8, 10);
-  cases.push_back({longSheared, 1.7});
-  Domain open = full;
-  open.periodic = {false, false, false};
-  cases.push_back({open, 1.5});
-  Domain mixed = full;
-  mixed.periodic = {true, false, true};
-  cases.push_back({mixed, 2.2});
-  // 700 points: cells of r_max/2; 20 points: cells coarsened to at most 64.
-  for (const auto& [d, rMax] : cases) {
-    for (const int count : {700, 20}) {
-      std::uniform_real_distribution<double> ux(d.lo[0] - 0.5, d.hi[0] + 0.5), uy(d.lo[1] - 0.5, d.hi[1] + 0.5),
-          uz(d.lo[2] - 0.5, d.hi[2] + 0.5);  // some points outside the box: they must be wrapped
-      std::vector<Vec3> p;
-      for (int k = 0; k < count; ++k) p.emplace_back(ux(rng), uy(rng), uz(rng));
-      const auto expected = bruteForcePairs(d, p, rMax);
-      std::map<PairKey, double> found;
-      int duplicates = 0;
-      PairSearch(d, p, rMax).forEachPair([&](std::size_t i, std::size_t j, double r) {
-        EXPECT_LT(i, j);
-        duplicates += found.count({i, j}) ? 1 : 0;
-        found[{i, j}] = r;
-      });
-      EXPECT_EQ(duplicates, 0);
-      ASSERT_EQ(found.size(), expected.size()) << "rMax " << rMax << " offset " << d.leesEdwardsOffset;
-      for (const auto& [key, r] : expected) {
-        ASSERT_TRUE(found.count(key));
-        EXPECT_NEAR(found[key], r, 1e-12);
-      }
-    }
-  }
-  EXPECT_THROW(PairSearch(full, std::vector<Vec3>{}, 4.5), Error);  // > half the 8-long y and z edges
-}
 
 TEST(ForceCorrelation, IndependentForcesGiveFlatCorrelationEqualToMeanSquared) {
   // Contacts at random points in a periodic box with i.i.d. exponential forces: for i != j,
@@ -269,4 +180,15 @@ TEST(CorrelationLength, RefusesCorrelationsThatDoNotDecayWithinRMax) {
   acc.add(open, p, w);
   EXPECT_THROW((void)decayLength(acc.result()), Error);
   EXPECT_THROW(CorrelationAccumulator({0.0, 1.0, 4}, FrameNormalisation::None, "test"), Error);
+}
+
+TEST(CorrelationAccumulator, RefusesRMaxPastHalfThePeriodicBox) {
+  // Past half an edge a pair has two images within r_max, and Eq. 6.12 counts each pair once.
+  const Domain box = periodicBox(Vec3(-1, 0, 2), Vec3(9, 8, 10));
+  const std::vector<Vec3> p{Vec3(0, 1, 3), Vec3(1, 2, 4)};
+  const std::vector<double> w{1.0, 2.0};
+  CorrelationAccumulator wide({0.1, 4.5, 4}, FrameNormalisation::None, "test");  // > half the 8-long y and z edges
+  EXPECT_THROW(wide.add(box, p, w), Error);
+  CorrelationAccumulator half({0.1, 4.0, 4}, FrameNormalisation::None, "test");
+  EXPECT_NO_THROW(half.add(box, p, w));
 }

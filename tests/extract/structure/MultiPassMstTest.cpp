@@ -3,19 +3,23 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <numeric>
 #include <set>
+#include <string>
 #include <tuple>
 #include <vector>
 
 #include "core/Error.hpp"
+#include "extract/geometry/PeriodicBox.hpp"
 #include "extract/structure/ForceNetworks.hpp"
 #include "extract/structure/MultiPassMst.hpp"
-#include "extract/structure/PeriodicBox.hpp"
 #include "tests/extract/structure/StructureTestFrames.hpp"
+#include "tests/support/ValidationNote.hpp"
+#include "tests/support/ValidationRecord.hpp"
 
 namespace grainbridge::extract::structure {
 namespace {
@@ -25,6 +29,25 @@ using testing::addContact;
 using testing::addParticle;
 
 using IdPair = std::pair<std::int64_t, std::int64_t>;
+using ::grainbridge::testing::formatNote;
+using ::grainbridge::testing::recordValidation;
+
+constexpr const char* kSection = "Extraction (Section 2.3, Sections 6.3.2-6.3.3)";
+constexpr const char* kReference = "Section 6.3.3; VALIDATION.md Extraction (multi-pass MST)";
+
+// A case name as a validation-record id part: lower case, runs of other characters as one '_'.
+std::string slug(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    } else if (!out.empty() && out.back() != '_') {
+      out += '_';
+    }
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out;
+}
 
 // A union-find independent of the library's, keyed by id.
 struct IdSets {
@@ -67,7 +90,7 @@ struct ReferenceEdge {
 // Once), ties on (w, min id, max id): the definition, with nothing left out.
 std::vector<std::vector<ReferenceEdge>> bruteForceMultiPassMst(const ParticleFrame& f, int passes, double factor,
                                                                ElongationMode mode) {
-  const PeriodicBox box(f.domain);
+  const geometry::PeriodicBox box(f.domain);
   struct Pair {
     std::int64_t low, high;
     double length;
@@ -148,10 +171,21 @@ TEST(MultiPassMst, EveryPassEqualsBruteForceKruskalOverAllPairs) {
 
       const MultiPassMstResult local = runMultiPassMst(c.frame, options);
       ASSERT_LT(local.candidateEdges, all.candidateEdges);
+      std::size_t referenceEdges = 0;  // over all passes, for the validation record
+      std::size_t matchingEdges = 0;   // equal to brute force in ids, weight, selections and order
+      bool passed = true;
       for (std::size_t p = 0; p < reference.size(); ++p) {
         SCOPED_TRACE("pass " + std::to_string(p + 1));
         const auto& want = reference[p];
         const auto& got = all.passes[p].edges;
+        referenceEdges += want.size();
+        for (std::size_t k = 0; k < std::min(got.size(), want.size()); ++k) {
+          const bool same = got[k].idLow == want[k].idLow && got[k].idHigh == want[k].idHigh &&
+                            got[k].weight == want[k].weight && got[k].previousSelections == want[k].previousSelections;
+          matchingEdges += same ? 1 : 0;
+          passed = passed && same;
+        }
+        passed = passed && got.size() == want.size();
         ASSERT_EQ(got.size(), want.size());
         for (std::size_t k = 0; k < want.size(); ++k) {
           ASSERT_EQ(std::make_pair(got[k].idLow, got[k].idHigh), std::make_pair(want[k].idLow, want[k].idHigh));
@@ -167,14 +201,27 @@ TEST(MultiPassMst, EveryPassEqualsBruteForceKruskalOverAllPairs) {
           if (e.withinCutoff) gotBelow.emplace_back(e.idLow, e.idHigh);
         }
         EXPECT_EQ(gotBelow, wantBelow);
+        passed = passed && gotBelow == wantBelow;
         std::set<IdPair> wantSet;
         for (const auto& e : want) wantSet.emplace(e.idLow, e.idHigh);
         for (const auto& e : local.passes[p].edges) {
           if (e.contactIndex >= 0) {
             EXPECT_TRUE(wantSet.count({e.idLow, e.idHigh}));
+            passed = passed && wantSet.count({e.idLow, e.idHigh}) == 1;
           }
         }
       }
+      const char* modeName = mode == ElongationMode::Once ? "once" : "compounding";
+      recordValidation(
+          {formatNote("extract.mst.brute_force.%s.%s", slug(c.name).c_str(), modeName), kSection,
+           formatNote("multi-pass MST (%s elongation by 1.2) on '%s' (%zu particles): edges of passes 1-%zu equal to "
+                      "brute-force Kruskal over all pairs",
+                      modeName, c.name, c.frame.size(), reference.size()),
+           kReference, static_cast<double>(referenceEdges), static_cast<double>(matchingEdges),
+           "exact (every edge, weight and order)", passed,
+           formatNote("every pair as a candidate (%zu edges): edge by edge; default cutoff %.4f (%zu candidate "
+                      "edges): the edges of weight <= cutoff and every contact edge",
+                      all.candidateEdges, local.candidateCutoff, local.candidateEdges)});
     }
   }
 }
@@ -213,6 +260,24 @@ TEST(MultiPassMst, PassOneGivesParticlesMinusOneEdgesPerTree) {
   EXPECT_EQ(first.largestTree.edges + first.otherTreeEdges, tcpEdges);
   EXPECT_EQ(tcpEdges, contactEdges.size());
   EXPECT_EQ(tcpParticles - first.trees.size(), tcpEdges);
+  bool passed = first.edges.size() + r.forestTrees == f.size() &&
+                first.largestTree.edges == first.largestTree.particles - 1 && tcpEdges == contactEdges.size() &&
+                tcpParticles - first.trees.size() == tcpEdges;
+  for (const auto* edges : {&forestEdges, &contactEdges}) {
+    const auto parts = componentsOf(*edges);
+    std::size_t vertices = 0;
+    for (const auto& part : parts) vertices += part.size();
+    passed = passed && edges->size() == vertices - parts.size();
+  }
+  for (const TreeSize& t : first.trees) passed = passed && t.edges == t.particles - 1;
+  recordValidation({"extract.mst.pass1_edges_per_tree", kSection,
+                    "pass 1 of the multi-pass MST gives N_P - 1 edges per tree: edges of the spanning forest against "
+                    "particles minus trees (and so for every tree of contacting particles)",
+                    "Section 6.3.3 footnote 6", static_cast<double>(f.size() - r.forestTrees),
+                    static_cast<double>(first.edges.size()), "exact", passed,
+                    formatNote("300-particle sparse frame, candidate cutoff 1.5: %zu trees in the forest, %zu trees of "
+                               "contacting particles with %zu edges",
+                               r.forestTrees, first.trees.size(), tcpEdges)});
 }
 
 // (c) Section 6.3.3: on monodisperse frames pass 1's TCPs have the vertex sets of the contact
@@ -238,7 +303,15 @@ TEST(MultiPassMst, PassOneTreesOfContactingParticlesAreTheContactComponents) {
     }
     const MultiPassMstResult r = runMultiPassMst(c.frame);
     const auto tcps = componentsOf(contactEdgesUpTo(r, 1));
-    EXPECT_EQ(tcps, componentsOf(contactGraph));
+    const auto contactComponents = componentsOf(contactGraph);
+    EXPECT_EQ(tcps, contactComponents);
+    recordValidation({"extract.mst.pass1_contact_components." + slug(c.name), kSection,
+                      std::string("pass 1's trees of contacting particles have the vertex sets of the contact-graph "
+                                  "components, '") +
+                          c.name + "': number of trees against number of components",
+                      kReference, static_cast<double>(contactComponents.size()), static_cast<double>(tcps.size()),
+                      "exact (equal vertex sets)", tcps == contactComponents,
+                      formatNote("%zu particles, %zu contacts", c.frame.size(), c.frame.contacts.size())});
 
     const ForceNetworkAnalysis networks = analyzeForceNetworks(c.frame);
     const MstPass& first = r.passes.front();
@@ -286,6 +359,8 @@ TEST(MultiPassMst, ListedContactRuleKeepsTensileContacts) {
 // (d) Candidate edges beyond the automatic cutoff never change the reported structure: every
 // edge of weight <= the smaller cutoff, every contact edge and every Table 6.2 number agree.
 TEST(MultiPassMst, DoublingTheCutoffChangesNothing) {
+  const char* names[] = {"random_dense_polydisperse", "periodic_lattice_30_jittered"};
+  int frameIndex = 0;
   for (const ParticleFrame& f :
        {testing::randomDenseFrame(300, 0.05, 0.1, 0.0, 12), testing::latticeFrame(7, 7, 6, true, 0.3, 13)}) {
     const MultiPassMstResult base = runMultiPassMst(f);
@@ -293,6 +368,7 @@ TEST(MultiPassMst, DoublingTheCutoffChangesNothing) {
     doubled.candidateCutoff = 2.0 * base.candidateCutoff;
     const MultiPassMstResult wide = runMultiPassMst(f, doubled);
     EXPECT_GT(wide.candidateEdges, base.candidateEdges);
+    std::size_t passesDiffering = 0;
     for (std::size_t p = 0; p < base.passes.size(); ++p) {
       SCOPED_TRACE("pass " + std::to_string(p + 1));
       const MstPass &a = base.passes[p], &b = wide.passes[p];
@@ -312,7 +388,22 @@ TEST(MultiPassMst, DoublingTheCutoffChangesNothing) {
       EXPECT_EQ(a.otherTreeEdges, b.otherTreeEdges);
       EXPECT_EQ(a.newContactEdges, b.newContactEdges);
       EXPECT_EQ(a.largestTreeExtent.largestCentreDistance, b.largestTreeExtent.largestCentreDistance);
+      const bool same = project(a, false) == project(b, false) && project(a, true) == project(b, true) &&
+                        a.largestTree.particles == b.largestTree.particles &&
+                        a.largestTree.edges == b.largestTree.edges && a.otherTrees == b.otherTrees &&
+                        a.otherTreeEdges == b.otherTreeEdges && a.newContactEdges == b.newContactEdges &&
+                        a.largestTreeExtent.largestCentreDistance == b.largestTreeExtent.largestCentreDistance;
+      passesDiffering += same ? 0 : 1;
     }
+    recordValidation({formatNote("extract.mst.double_cutoff.%s", names[frameIndex]), kSection,
+                      formatNote("doubling the candidate cutoff changes nothing (%s, %zu particles): passes whose "
+                                 "edges below the cutoff, contact edges or Table 6.2 numbers differ",
+                                 names[frameIndex], f.size()),
+                      kReference, 0.0, static_cast<double>(passesDiffering), "exact",
+                      passesDiffering == 0 && wide.candidateEdges > base.candidateEdges,
+                      formatNote("cutoff %.4f (%zu candidate edges) against %.4f (%zu)", base.candidateCutoff,
+                                 base.candidateEdges, wide.candidateCutoff, wide.candidateEdges)});
+    ++frameIndex;
   }
 }
 
@@ -364,6 +455,16 @@ TEST(MultiPassMst, FigureSixThirteenFiveParticleExample) {
   EXPECT_EQ(first.otherTrees, 1u);
   EXPECT_EQ(first.otherTreeEdges, 1u);
   EXPECT_EQ(componentsOf(contactEdgesUpTo(r, 1)), (std::set<std::set<std::int64_t>>{{1, 2, 3}, {4, 5}}));
+  recordValidation(
+      {"extract.mst.fig6_13.pass1", kSection,
+       "Fig. 6.13 five-particle example, pass 1: trees of contacting particles {1,2,3} (2 edges) and {4,5} (1 edge) "
+       "after the non-contact E(3,4) is deleted; number of such trees",
+       "Section 6.3.3, Fig. 6.13", 2.0, static_cast<double>(first.trees.size()), "exact (the trees described)",
+       idsOf(first, false) == std::set<IdPair>{{1, 2}, {2, 3}, {3, 4}, {4, 5}} &&
+           idsOf(first, true) == std::set<IdPair>{{1, 2}, {2, 3}, {4, 5}} && first.largestTree.particles == 3u &&
+           first.largestTree.edges == 2u && first.otherTrees == 1u && first.otherTreeEdges == 1u &&
+           componentsOf(contactEdgesUpTo(r, 1)) == std::set<std::set<std::int64_t>>{{1, 2, 3}, {4, 5}},
+       "MST {E(1,2), E(2,3), E(3,4), E(4,5)}"});
 
   const MstPass& second = r.passes[1];
   EXPECT_TRUE(idsOf(second, true).count({1, 3}));
@@ -375,12 +476,25 @@ TEST(MultiPassMst, FigureSixThirteenFiveParticleExample) {
   // Pass 2 weights: E(1,3) 0.99 (new), E(2,3) 1.2 x 0.96, E(1,2) 1.2 x 0.97 (now the longest
   // of the three, dropped), E(4,5) and E(3,4) elongated.
   EXPECT_EQ(idsOf(second, false), (std::set<IdPair>{{1, 3}, {2, 3}, {3, 4}, {4, 5}}));
+  bool weightsPassed = true;
   for (const MstEdge& e : second.edges) {
     if (e.idLow == 2 && e.idHigh == 3) {
       EXPECT_DOUBLE_EQ(e.weight, 1.2 * dist(2, 3));
       EXPECT_EQ(e.previousSelections, 1);
+      // EXPECT_DOUBLE_EQ's "within 4 ulps": almost equal both ways.
+      weightsPassed = weightsPassed && ::testing::DoubleLE("", "", e.weight, 1.2 * dist(2, 3)) &&
+                      ::testing::DoubleLE("", "", 1.2 * dist(2, 3), e.weight) && e.previousSelections == 1;
     }
   }
+  recordValidation(
+      {"extract.mst.fig6_13.pass2", kSection,
+       "Fig. 6.13 five-particle example, pass 2 (pass-1 edges elongated by 1.2) selects E(1,3): edges of the tree of "
+       "contacting particles {1,2,3} (all three of its contacts captured)",
+       "Section 6.3.3, Fig. 6.13", 3.0, static_cast<double>(second.largestTree.edges), "exact (the trees described)",
+       weightsPassed && idsOf(second, true).count({1, 3}) == 1 && second.newContactEdges == 1u &&
+           second.largestTree.particles == 3u && second.largestTree.edges == 3u && second.otherTrees == 1u &&
+           second.otherTreeEdges == 1u && idsOf(second, false) == std::set<IdPair>{{1, 3}, {2, 3}, {3, 4}, {4, 5}},
+       "pass-2 MST {E(1,3), E(2,3), E(3,4), E(4,5)}; one new contact edge"});
 }
 
 // Compounding and once-only elongation differ exactly where an edge was selected twice:

@@ -10,8 +10,8 @@
 
 #include "core/Types.hpp"
 #include "core/data/ParticleFrame.hpp"
-#include "extract/structure/CandidatePairs.hpp"
-#include "extract/structure/PeriodicBox.hpp"
+#include "extract/geometry/PairSearch.hpp"
+#include "extract/geometry/PeriodicBox.hpp"
 
 namespace grainbridge::extract::structure::testing {
 
@@ -49,7 +49,7 @@ inline void addContact(ParticleFrame& f, std::int64_t i, std::int64_t j, const V
 // checked directly up to 5000 particles (independent of the code under test); beyond that the
 // candidate search finds them (timing frames only).
 inline void addOverlapContacts(ParticleFrame& f, std::mt19937_64& rng, double tensileFraction = 0.0) {
-  const PeriodicBox box(f.domain);
+  const geometry::PeriodicBox box(f.domain);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const auto consider = [&](std::size_t a, std::size_t b) {
     const Vec3 branch = box.minimumImage(f.position[a] - f.position[b]);
@@ -60,7 +60,9 @@ inline void addOverlapContacts(ParticleFrame& f, std::mt19937_64& rng, double te
   };
   if (f.size() > 5000) {
     const double reach = 2.0 * *std::max_element(f.radius.begin(), f.radius.end());
-    for (const CandidatePair& p : findCandidatePairs(f.position, box, reach)) consider(p.a, p.b);
+    geometry::PairSearch(box, f.position, reach).forEachPair([&](std::size_t a, std::size_t b, double) {
+      consider(a, b);
+    });
     return;
   }
   for (std::size_t a = 0; a < f.size(); ++a) {

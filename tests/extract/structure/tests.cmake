@@ -2,7 +2,6 @@
 # brute-force Kruskal and the five-particle example of Fig. 6.13.
 grainbridge_add_test(test_extract_structure
   SOURCES
-    ${CMAKE_CURRENT_SOURCE_DIR}/structure/CandidatePairsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/structure/ForceNetworksTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/structure/MultiPassMstTest.cpp
   LIBS extract
