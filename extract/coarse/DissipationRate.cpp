@@ -1,31 +1,21 @@
 #include "extract/coarse/DissipationRate.hpp"
 
 #include <string>
-#include <unordered_map>
 
 #include "core/Error.hpp"
+#include "extract/coarse/ParticleContacts.hpp"
 
 namespace grainbridge::extract::coarse {
 
 double dissipationRate(const core::data::ParticleFrame& frame, double volume) {
   if (!(volume > 0.0)) throw Error("dissipation rate: sample volume " + std::to_string(volume) + " is not positive");
-  std::unordered_map<std::int64_t, std::size_t> indexOf;
-  indexOf.reserve(frame.size());
-  for (std::size_t k = 0; k < frame.size(); ++k) indexOf.emplace(frame.id[k], k);
-  auto index = [&](std::int64_t id, std::size_t contact) {
-    const auto it = indexOf.find(id);
-    if (it == indexOf.end()) {
-      throw Error("dissipation rate: contact " + std::to_string(contact) + " of the frame at step " +
-                  std::to_string(frame.step) + " names particle " + std::to_string(id) + ", which the frame lacks");
-    }
-    return it->second;
-  };
+  const ParticleIndex index(frame);
   const auto& c = frame.contacts;
   const double shearRate = frame.domain.leesEdwardsShearRate;
   double power = 0.0;
   for (std::size_t k = 0; k < c.size(); ++k) {
-    const std::size_t i = index(c.i[k], k);
-    const std::size_t j = index(c.j[k], k);
+    const std::size_t i = index.at(c.i[k], "dissipation rate: contact", k);
+    const std::size_t j = index.at(c.j[k], "dissipation rate: contact", k);
     const Vec3 ri = frame.position[i];
     const Vec3 rjImage = ri - c.branch[k];
     Vec3 vj = frame.velocity[j];

@@ -12,6 +12,7 @@
 #include "db/ProvenanceStore.hpp"
 #include "workflows/commands/Commands.hpp"
 #include "workflows/commands/DatabaseSource.hpp"
+#include "workflows/report/CsvField.hpp"
 
 namespace grainbridge::workflows::commands {
 
@@ -66,13 +67,7 @@ std::string cell(const json& v) {
   return v.dump();
 }
 
-std::string csvCell(const json& v) {
-  std::string s = cell(v);
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string quoted = "\"";
-  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
+std::string csvCell(const json& v) { return report::csvField(cell(v)); }
 
 // Columns to show: the requested ones (checked), else every column that is set in some row.
 std::vector<std::string> shownColumns(const json& rows, const std::string& requested,

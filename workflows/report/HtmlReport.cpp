@@ -10,6 +10,7 @@
 #include "core/Files.hpp"
 #include "core/Log.hpp"
 #include "core/io/XdmfText.hpp"
+#include "workflows/report/CsvField.hpp"
 
 namespace grainbridge::workflows::report {
 
@@ -20,13 +21,6 @@ namespace {
 
 // The page's text goes through the same escaping as the XDMF sidecars.
 std::string escapeHtml(const std::string& s) { return core::io::xmlEscape(s); }
-
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += (c == '"') ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 std::string show(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 

@@ -13,6 +13,7 @@
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
 #include "db/ProvenanceStore.hpp"
+#include "workflows/report/CsvField.hpp"
 
 namespace grainbridge::workflows::report {
 
@@ -199,15 +200,9 @@ ValidationSummary writeValidationReport(const ValidationSources& sources, const 
          << "</td><td class=\"n\">" << number(r.referenceValue) << "</td><td class=\"n\">" << number(r.ours)
          << "</td><td class=\"n\">" << percent(r.referenceValue, r.ours) << "</td><td>" << esc(r.tolerance)
          << "</td><td>" << r.status << "</td><td>" << esc(r.note) << "</td></tr>\n";
-    auto field = [](const std::string& s) {
-      if (s.find_first_of(",\"\n") == std::string::npos) return s;
-      std::string q = "\"";
-      for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-      return q + "\"";
-    };
-    csv << field(r.section) << ',' << field(r.id) << ',' << field(r.check) << ',' << field(r.reference) << ','
-        << number(r.referenceValue) << ',' << number(r.ours) << ',' << percent(r.referenceValue, r.ours) << ','
-        << field(r.tolerance) << ',' << r.status << ',' << field(r.note) << '\n';
+    csv << csvField(r.section) << ',' << csvField(r.id) << ',' << csvField(r.check) << ',' << csvField(r.reference)
+        << ',' << number(r.referenceValue) << ',' << number(r.ours) << ',' << percent(r.referenceValue, r.ours) << ','
+        << csvField(r.tolerance) << ',' << r.status << ',' << csvField(r.note) << '\n';
   }
   if (!section.empty()) html << "</table>\n";
   if (rows.empty()) {

@@ -323,17 +323,10 @@ void ExtractStage::run(StageContext& ctx) const {
 
   // Frames after the transient.
   std::vector<std::filesystem::path> selected;
-  double firstTime = 0.0, lastTime = 0.0;
-  double shearRate = 0.0;
-  for (const auto& f : files) {
-    const auto s = core::io::readParticleFrameSummary(f);
-    lastTime = s.time;
-    if (f == files.front()) firstTime = s.time;
-  }
-  {
-    const auto first = core::io::readParticleFrame(files.front());
-    shearRate = first.domain.leesEdwardsShearRate;
-  }
+  // Frame times, read once (summaries only: no particle arrays).
+  std::vector<double> times;
+  for (const auto& f : files) times.push_back(core::io::readParticleFrameSummary(f).time);
+  const double shearRate = core::io::readParticleFrame(files.front()).domain.leesEdwardsShearRate;
   double start = p.at("start_time");
   if (p.at("start_strain").get<double>() > 0.0) {
     if (shearRate == 0.0) {
@@ -343,14 +336,13 @@ void ExtractStage::run(StageContext& ctx) const {
     start = std::max(start, p.at("start_strain").get<double>() / std::abs(shearRate));
   }
   const double end = p.contains("end_time") ? p.at("end_time").get<double>() : std::numeric_limits<double>::infinity();
-  for (const auto& f : files) {
-    const double t = core::io::readParticleFrameSummary(f).time;
-    if (t >= start * (1.0 - 1e-12) && t <= end * (1.0 + 1e-12)) selected.push_back(f);
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    if (times[k] >= start * (1.0 - 1e-12) && times[k] <= end * (1.0 + 1e-12)) selected.push_back(files[k]);
   }
   if (selected.empty()) {
     std::ostringstream msg;
     msg << "/stages/" << ctx.stage() << "/params: no frame of " << up.stage << " between " << start << " and " << end
-        << " s (its " << files.size() << " frames span " << firstTime << " to " << lastTime << " s)";
+        << " s (its " << files.size() << " frames span " << times.front() << " to " << times.back() << " s)";
     throw Error(msg.str());
   }
   spdlog::info("{}: averaging {} of {} frames of {} (from t = {:.6g} s)", ctx.stage(), selected.size(), files.size(),
