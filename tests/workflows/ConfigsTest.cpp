@@ -1,10 +1,13 @@
 // Every workflow shipped in configs/ is valid, and the Brazil-nut smoke workflow (the CI-sized
 // version of configs/bnp-wall-friction.json: 600 + 1 particles, 2 cycles) runs end to end with
-// its two-step preparation, both wall frictions and the report.
+// its two-step preparation, both wall frictions, the extraction (forces, structure, the nut
+// against the local free surface) and the report.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
@@ -72,4 +75,31 @@ TEST(BrazilNutSmoke, RunsWithPreparationAndWallFrictionSweep) {
   int mstPasses = 0;
   for (const auto& row : structure) mstPasses += row["kind"] == "mst" ? 1 : 0;
   EXPECT_EQ(mstPasses % 5, 0);
+
+  // The nut against the local free surface: one row per frame in surface.csv, its verdict in
+  // the manifest summary, and no closure point (closure_point: false; the 2 above are forces').
+  int surfaces = 0;
+  for (const auto& e : fs::directory_iterator(work.path() / "results/bnp-smoke/surface")) {
+    ++surfaces;
+    std::ifstream csv(e.path() / "surface.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.rfind("time,step,id,top,surface,gap,gap_diameters", 0), 0u) << header;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+      ++rows;
+      std::vector<std::string> fields;
+      std::stringstream row(line);
+      for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+      ASSERT_GE(fields.size(), 3u) << line;
+      EXPECT_EQ(fields[2], "0") << "the id column names the nut: " << line;
+    }
+    EXPECT_EQ(rows, 5);  // 4 frames + the initial one
+    EXPECT_FALSE(fs::exists(e.path() / "closure_point.csv"));
+    std::ifstream manifest(e.path() / "manifest.json");
+    const auto summary = nlohmann::json::parse(manifest).at("summary");
+    EXPECT_TRUE(summary.contains("surface_id0_settled_at_top_time")) << summary.dump();
+    EXPECT_TRUE(summary.at("surface_id0_judged_frames").is_number()) << summary.dump();
+  }
+  EXPECT_EQ(surfaces, 2);
 }

@@ -26,6 +26,7 @@
 #include "extract/structure/ForceNetworks.hpp"
 #include "extract/structure/MultiPassMst.hpp"
 #include "workflows/stages/DemSetup.hpp"
+#include "workflows/stages/SurfaceTracker.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -75,7 +76,25 @@ ExtractStage::ExtractStage() {
       .add(ParamSpec::number("mst_elongation")
                .defaultValue(1.2)
                .min(1.0)
-               .doc("elongation factor of previously selected MST edges"));
+               .doc("elongation factor of previously selected MST edges"))
+      .add(ParamSpec::boolean("closure_point")
+               .defaultValue(true)
+               .doc("record the time-averaged closure point; false for runs that have no steady state to "
+                    "average (a vibrated Brazil-nut bed analysed for its surface or structure)"))
+      .add(ParamSpec::quantityList("surface_particles", Dimension::none(), 0)
+               .defaultValue(json::array())
+               .doc("particle ids whose top is measured against the local free surface of the bed in every "
+                    "averaged frame (surface.csv; the Brazil-nut 'at the top' criterion)"))
+      .add(ParamSpec::number("surface_tolerance")
+               .defaultValue(1.0)
+               .positive()
+               .doc("a particle is at the top when its top is within this many smallest-grain diameters of "
+                    "the local free surface"))
+      .add(ParamSpec::number("surface_min_coordination")
+               .defaultValue(2.0)
+               .min(0.0)
+               .doc("frames whose mean coordination number is below this (a vibrated bed in flight) are "
+                    "written to surface.csv but not judged"));
 }
 
 namespace {
@@ -108,6 +127,39 @@ void upstreamMaterial(const UpstreamInstance& up, json& row) {
   const DemSetup setup = makeDemSetup(params);
   if (!setup.timings.empty()) row["restitution"] = setup.timings.front().restitution;
   row["friction"] = params.at("contact").at("mu").get<double>();
+}
+
+std::string csvNumber(double v) {
+  std::ostringstream out;
+  out.precision(12);
+  out << v;
+  return out.str();
+}
+
+// Heights are measured against gravity: up is -g of a dem upstream, +z otherwise.
+Vec3 upstreamUp(const UpstreamInstance& up) {
+  if (up.stageType != "dem") return Vec3::UnitZ();
+  const json& g = up.manifest.at("params").at("gravity");
+  const Vec3 gravity(g[0].get<double>(), g[1].get<double>(), g[2].get<double>());
+  return gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ();
+}
+
+std::optional<SurfaceTracker> surfaceTracker(const StageContext& ctx, const UpstreamInstance& up) {
+  const json& p = ctx.params();
+  if (p.at("surface_particles").empty()) return std::nullopt;
+  SurfaceTrackerOptions options;
+  for (std::size_t k = 0; k < p["surface_particles"].size(); ++k) {
+    const double id = p["surface_particles"][k];
+    if (id != std::floor(id) || id < 0) {
+      throw Error("/stages/" + ctx.stage() + "/params/surface_particles/" + std::to_string(k) +
+                  ": a particle id is a non-negative integer, got " + csvNumber(id));
+    }
+    options.ids.push_back(static_cast<std::int64_t>(id));
+  }
+  options.up = upstreamUp(up);
+  options.tolerance = p.at("surface_tolerance");
+  options.minCoordination = p.at("surface_min_coordination");
+  return SurfaceTracker(std::move(options));
 }
 
 // The coarse-grained fields of one frame as a field frame: the solids phases (one per species,
@@ -161,13 +213,6 @@ core::data::FieldFrame toFieldFrame(const core::data::ParticleFrame& frame, cons
     scalar("contact_to_drag_ratio", c.contactToDragRatio);
   }
   return out;
-}
-
-std::string csvNumber(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
 }
 
 json fitRow(const json& family, const char* model, const extract::statistics::ForcePdfFit& fit, double meanForce) {
@@ -369,6 +414,7 @@ void ExtractStage::run(StageContext& ctx) const {
   const auto kernel = extract::coarse::CoarseGrainingKernel::fromName(p.at("kernel").get<std::string>(),
                                                                       p.at("kernel_width").get<double>());
   std::vector<core::data::ParticleFrame> kept;  // for the pooled statistics
+  auto surface = surfaceTracker(ctx, up);
   for (const auto& file : selected) {
     if (ctx.stopRequested()) throw StageInterrupted{};
     auto frame = core::io::readParticleFrame(file);
@@ -436,7 +482,18 @@ void ExtractStage::run(StageContext& ctx) const {
       const auto grid = core::grid::CellGrid::overDomain(frame.domain, cells);
       fieldWriter->write(toFieldFrame(frame, coarseGrainer(frame, grid, kernel), speciesNames));
     }
+    if (surface) {
+      try {
+        surface->add(frame, a.coordinationNumber);
+      } catch (const Error& e) {
+        throw Error("/stages/" + ctx.stage() + "/params/surface_particles: " + e.what() + " (" + file.string() + ")");
+      }
+    }
     if (forceStatistics) kept.push_back(std::move(frame));
+  }
+  if (surface) {
+    core::writeFileAtomically(ctx.outputDir() / "surface.csv", surface->csv());
+    ctx.addArtifact("surface.csv", "csv");
   }
   core::writeFileAtomically(ctx.outputDir() / "frames.csv", perFrame.str());
   ctx.addArtifact("frames.csv", "csv");
@@ -497,19 +554,22 @@ void ExtractStage::run(StageContext& ctx) const {
     }
   }
   if (forceStatistics) addForceStatistics(ctx, kept, diameter, row);
-  ctx.addRecord("closure_points", row);
   for (auto& s : structureRows) ctx.addRecord("structure_statistics", std::move(s));
-
-  std::ostringstream point;
-  point.precision(12);
-  point << "quantity,value\n";
-  for (const auto& [k, v] : row.items()) {
-    if (v.is_number()) point << k << ',' << v.get<double>() << '\n';
+  json summary = json::object();
+  if (p.at("closure_point").get<bool>()) {
+    ctx.addRecord("closure_points", row);
+    std::ostringstream point;
+    point.precision(12);
+    point << "quantity,value\n";
+    for (const auto& [k, v] : row.items()) {
+      if (v.is_number()) point << k << ',' << v.get<double>() << '\n';
+    }
+    core::writeFileAtomically(ctx.outputDir() / "closure_point.csv", point.str());
+    ctx.addArtifact("closure_point.csv", "csv");
+    summary = row;
+    summary.erase("extra_json");
   }
-  core::writeFileAtomically(ctx.outputDir() / "closure_point.csv", point.str());
-  ctx.addArtifact("closure_point.csv", "csv");
-  json summary = row;
-  summary.erase("extra_json");
+  if (surface) summary.update(surface->summary());
   ctx.setSummary(summary);
 }
 
