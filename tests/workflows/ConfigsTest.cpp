@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -64,11 +65,27 @@ TEST(BrazilNutSmoke, RunsWithPreparationAndWallFrictionSweep) {
   EXPECT_EQ(store.query(q).size(), 2u);
   q.table = "force_statistics";
   const auto forces = store.query(q);
-  EXPECT_EQ(forces.size(), 4u);  // Eqs. 6.11 and 6.13 for each wall friction
+  // Eqs. 6.11 and 6.13 for each wall friction, over all contacts and over the contacts each of
+  // the five MST passes found (Figs. 6.14-6.15).
+  std::multiset<long> contactCounts, lastPassCounts;
+  int contactRows = 0, mstRows = 0;
   for (const auto& row : forces) {
     EXPECT_TRUE(row["a"].is_number() || row["extra_json"].get<std::string>().find("fit_error") != std::string::npos)
         << row.dump();
+    const std::string source = row["source"];
+    if (source == "contacts") {
+      ++contactRows;
+      contactCounts.insert(row["forces"].get<long>());
+    } else {
+      EXPECT_EQ(source.rfind("mst_pass", 0), 0u) << source;
+      ++mstRows;
+      if (source == "mst_pass5") lastPassCounts.insert(row["forces"].get<long>());
+    }
   }
+  EXPECT_EQ(contactRows, 4);
+  EXPECT_EQ(mstRows, 5 * 4);
+  // These small frames: five passes find every repulsive contact.
+  EXPECT_EQ(lastPassCounts, contactCounts);
   q.table = "structure_statistics";
   const auto structure = store.query(q);
   EXPECT_GT(structure.size(), 0u);

@@ -16,16 +16,11 @@
 #include "extract/coarse/CoarseGrain.hpp"
 #include "extract/coarse/DissipationRate.hpp"
 #include "extract/coarse/DomainAverages.hpp"
-#include "extract/statistics/CorrelationLength.hpp"
-#include "extract/statistics/DensityHistogram.hpp"
-#include "extract/statistics/ForceCorrelation.hpp"
-#include "extract/statistics/ForcePdfFit.hpp"
-#include "extract/statistics/NormalForces.hpp"
-#include "extract/statistics/VelocityCorrelation.hpp"
-#include "extract/statistics/VelocityMoments.hpp"
 #include "extract/structure/ForceNetworks.hpp"
+#include "extract/structure/MstTreeContacts.hpp"
 #include "extract/structure/MultiPassMst.hpp"
 #include "workflows/stages/DemSetup.hpp"
+#include "workflows/stages/ExtractForceStatistics.hpp"
 #include "workflows/stages/SurfaceTracker.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -215,143 +210,6 @@ core::data::FieldFrame toFieldFrame(const core::data::ParticleFrame& frame, cons
   return out;
 }
 
-json fitRow(const json& family, const char* model, const extract::statistics::ForcePdfFit& fit, double meanForce) {
-  json row = {{"family", family},
-              {"source", "contacts"},
-              {"forces", fit.samples},
-              {"mean_force", meanForce},
-              {"model", model},
-              {"a", fit.params.a},
-              {"a_err", fit.error.a},
-              {"b", fit.params.b},
-              {"b_err", fit.error.b},
-              {"beta", fit.params.beta},
-              {"beta_err", fit.error.beta},
-              {"chi2_dof", fit.chi2PerDof},
-              {"density_integral", fit.integral},
-              {"extra_json",
-               {{"normalised_a", fit.normalisedA},
-                {"normalised_a_err", fit.normalisedAError},
-                {"gamma_rule", fit.gammaRule},
-                {"fit_range", {fit.fitMin, fit.fitMax}}}}};
-  if (std::string(model) == "eq6.13") {
-    row["alpha"] = fit.params.alpha;
-    row["alpha_err"] = fit.error.alpha;
-    row["gamma"] = fit.params.gamma;
-    row["gamma_err"] = fit.error.gamma;
-  }
-  return row;
-}
-
-// Force PDF and its fits (Eqs. 6.11, 6.13), force (Eq. 6.12) and velocity correlations with
-// their lengths, and the velocity kurtosis (Section 8.2.1.1), pooled over `frames`.
-void addForceStatistics(StageContext& ctx, const std::vector<core::data::ParticleFrame>& allFrames, double diameter,
-                        json& point) {
-  namespace st = extract::statistics;
-  const json& p = ctx.params();
-  // Frames without a repulsive contact (a dilute gas between collisions) have no <F_n>.
-  std::vector<core::data::ParticleFrame> frames;
-  for (const auto& frame : allFrames) {
-    bool repulsive = false;
-    for (std::size_t k = 0; k < frame.contacts.size() && !repulsive; ++k) {
-      repulsive = frame.contacts.forceNormal[k].dot(frame.contacts.branch[k]) > 0.0;
-    }
-    if (repulsive) frames.push_back(frame);
-  }
-  if (frames.empty()) {
-    throw Error("/stages/" + ctx.stage() + "/params/force_statistics: none of the " + std::to_string(allFrames.size()) +
-                " averaged frames has a contact with F_n > 0");
-  }
-  const auto f = st::normalisedForces(frames);
-  double meanForce = 0.0;
-  for (const auto& frame : frames) meanForce += st::repulsiveForces(frame).meanForce;
-  meanForce /= static_cast<double>(frames.size());
-  const auto histogram = st::densityHistogram(f, st::BinOptions{}, "normalised contact forces");
-  // A fit the data cannot constrain (few contacts, a narrow range) is reported, not fatal: the
-  // histogram and the other statistics still stand.
-  auto fitted = [&](const char* model, auto&& fit) -> std::optional<st::ForcePdfFit> {
-    try {
-      return fit(histogram, st::ForcePdfFitOptions{});
-    } catch (const Error& e) {
-      spdlog::warn("{}: force PDF fit {} of {} forces failed: {}", ctx.stage(), model, f.size(), e.what());
-      ctx.addRecord("force_statistics", {{"family", p.at("family")},
-                                         {"source", "contacts"},
-                                         {"forces", f.size()},
-                                         {"mean_force", meanForce},
-                                         {"model", model},
-                                         {"extra_json", {{"fit_error", e.what()}}}});
-      return std::nullopt;
-    }
-  };
-  const auto fit611 = fitted("eq6.11", [](const auto& h, const auto& o) { return st::fitEq611(h, o); });
-  const auto fit613 = fitted("eq6.13", [](const auto& h, const auto& o) { return st::fitEq613(h, o); });
-  auto curve = [&](const std::optional<st::ForcePdfFit>& fit, double x) {
-    return fit ? csvNumber(st::forcePdf(fit->params, x)) : std::string();
-  };
-  std::ostringstream pdf;
-  pdf << "f_lo,f_hi,density,error,eq6.11,eq6.13\n";
-  for (std::size_t k = 0; k + 1 < histogram.edges.size(); ++k) {
-    const double c = histogram.centre[k];
-    pdf << csvNumber(histogram.edges[k]) << ',' << csvNumber(histogram.edges[k + 1]) << ','
-        << csvNumber(histogram.density[k]) << ',' << csvNumber(histogram.error[k]) << ',' << curve(fit611, c) << ','
-        << curve(fit613, c) << '\n';
-  }
-  core::writeFileAtomically(ctx.outputDir() / "force_pdf.csv", pdf.str());
-  ctx.addArtifact("force_pdf.csv", "csv");
-
-  // Correlations up to correlation_range diameters, or half the shortest periodic edge.
-  const auto& domain = frames.front().domain;
-  double rMax = p.at("correlation_range").get<double>() * diameter;
-  for (int a = 0; a < 3; ++a) {
-    if (domain.periodic[static_cast<std::size_t>(a)]) rMax = std::min(rMax, 0.5 * (domain.hi[a] - domain.lo[a]));
-  }
-  const st::CorrelationOptions options{0.1 * diameter, rMax, 16};
-  const auto forces = st::forceCorrelation(frames, options);
-  const auto velocities = st::velocityCorrelation(frames, options);
-  std::ostringstream corr;
-  corr << "r,force_pairs,force_correlation,force_correlation_err,velocity_correlation,velocity_correlation_err\n";
-  for (std::size_t k = 0; k < forces.r.size(); ++k) {
-    corr << csvNumber(forces.r[k]) << ',' << csvNumber(forces.pairs[k]) << ',' << csvNumber(forces.normalised[k]) << ','
-         << csvNumber(forces.normalisedError[k]) << ',' << csvNumber(velocities.normalised[k]) << ','
-         << csvNumber(velocities.normalisedError[k]) << '\n';
-  }
-  core::writeFileAtomically(ctx.outputDir() / "correlations.csv", corr.str());
-  ctx.addArtifact("correlations.csv", "csv");
-  // A correlation that does not decay within the range has no length: say so, keep the rest.
-  auto length = [&](const st::CorrelationFunction& c, const char* what) -> std::optional<st::CorrelationLength> {
-    try {
-      return st::decayLength(c);
-    } catch (const Error& e) {
-      spdlog::warn("{}: no {} correlation length: {}", ctx.stage(), what, e.what());
-      return std::nullopt;
-    }
-  };
-  if (const auto xi = length(forces, "force")) {
-    point["force_correlation_length"] = xi->length;
-    point["force_correlation_length_err"] = xi->error;
-  }
-  if (const auto xi = length(velocities, "velocity")) {
-    point["velocity_correlation_length"] = xi->length;
-    point["velocity_correlation_length_err"] = xi->error;
-  }
-  for (const auto& [model, fit] : {std::pair{"eq6.11", &fit611}, std::pair{"eq6.13", &fit613}}) {
-    if (!*fit) continue;
-    json row = fitRow(p.at("family"), model, **fit, meanForce);
-    if (point.contains("force_correlation_length")) {
-      row["correlation_length"] = point["force_correlation_length"];
-      row["correlation_length_err"] = point["force_correlation_length_err"];
-    }
-    ctx.addRecord("force_statistics", row);
-  }
-  const auto moments = st::velocityMoments(frames);
-  point["extra_json"]["velocity_kurtosis"] = {moments.component[0].kurtosis, moments.component[1].kurtosis,
-                                              moments.component[2].kurtosis};
-  if (fit611) {
-    point["extra_json"]["force_pdf_eq611"] = {
-        {"a", fit611->params.a}, {"b", fit611->params.b}, {"beta", fit611->params.beta}};
-  }
-}
-
 }  // namespace
 
 void ExtractStage::run(StageContext& ctx) const {
@@ -414,6 +272,8 @@ void ExtractStage::run(StageContext& ctx) const {
   const auto kernel = extract::coarse::CoarseGrainingKernel::fromName(p.at("kernel").get<std::string>(),
                                                                       p.at("kernel_width").get<double>());
   std::vector<core::data::ParticleFrame> kept;  // for the pooled statistics
+  // Per kept frame, per MST pass p: the contacts passes 1..p found (Figs. 6.14-6.16).
+  std::vector<std::vector<std::vector<std::size_t>>> mstContacts;
   auto surface = surfaceTracker(ctx, up);
   for (const auto& file : selected) {
     if (ctx.stopRequested()) throw StageInterrupted{};
@@ -463,6 +323,12 @@ void ExtractStage::run(StageContext& ctx) const {
       options.passes = static_cast<int>(p.at("mst_passes").get<std::int64_t>());
       options.elongationFactor = p.at("mst_elongation");
       const auto mst = extract::structure::runMultiPassMst(frame, options);
+      if (forceStatistics) {
+        auto& perPass = mstContacts.emplace_back();
+        for (std::size_t pass = 1; pass <= mst.passes.size(); ++pass) {
+          perPass.push_back(extract::structure::treeContactsUpToPass(mst, static_cast<int>(pass)));
+        }
+      }
       for (std::size_t pass = 0; pass < mst.passes.size(); ++pass) {
         const auto& mp = mst.passes[pass];
         structureRows.push_back({{"family", p.at("family")},
@@ -553,7 +419,10 @@ void ExtractStage::run(StageContext& ctx) const {
       row["eta_theta_err"] = std::abs(etaTheta) * relativeError({{mu, 1.0}, {T, 0.5}});
     }
   }
-  if (forceStatistics) addForceStatistics(ctx, kept, diameter, row);
+  if (forceStatistics) {
+    addForceStatistics(ctx, kept, diameter, row);
+    if (!mstContacts.empty()) addMstForceStatistics(ctx, kept, mstContacts, diameter);
+  }
   for (auto& s : structureRows) ctx.addRecord("structure_statistics", std::move(s));
   json summary = json::object();
   if (p.at("closure_point").get<bool>()) {

@@ -4,8 +4,9 @@
 // stress, Eq. 3.38 temperature, solid fraction, coordination, dissipation rate), time-averages
 // the frames after a start time or strain with block-averaging errors, and reports one closure
 // point to the closure database; optionally force networks and the multi-pass MST per frame
-// (structure_statistics), and the height of chosen particles against the local free surface of
-// the bed (surface.csv, the Brazil-nut criterion).
+// (structure_statistics), force statistics pooled over the frames, for all contacts and for
+// those each MST pass found (ExtractForceStatistics.hpp), and the height of chosen particles
+// against the local free surface of the bed (surface.csv, the Brazil-nut criterion).
 #include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::stages {

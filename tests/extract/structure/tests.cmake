@@ -5,5 +5,6 @@ grainbridge_add_test(test_extract_structure
     ${CMAKE_CURRENT_SOURCE_DIR}/structure/ForceNetworksTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/structure/MultiPassMstTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/structure/LocalFreeSurfaceTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/structure/MstTreeContactsTest.cpp
   LIBS extract
   LABELS "unit;extract")
