@@ -16,6 +16,7 @@
 #include "extract/coarse/CoarseGrain.hpp"
 #include "extract/coarse/DissipationRate.hpp"
 #include "extract/coarse/DomainAverages.hpp"
+#include "extract/coarse/FieldTimeAverage.hpp"
 #include "extract/structure/ForceNetworks.hpp"
 #include "extract/structure/MstTreeContacts.hpp"
 #include "extract/structure/MultiPassMst.hpp"
@@ -46,7 +47,8 @@ ExtractStage::ExtractStage() {
                .doc("under Lees-Edwards shear: frames before this strain (shear rate x time) are discarded"))
       .add(ParamSpec::quantityList("grid_cells", Dimension::none(), 3)
                .doc("coarse-grained fields on a grid of nx x ny x nz cells over the domain, one field frame per "
-                    "averaged frame (fields.xmf opens in ParaView); none when absent"))
+                    "averaged frame (fields.xmf opens in ParaView) and their time average with block-averaging "
+                    "errors (mean/fields.xmf, <field>_err); none when absent"))
       .add(ParamSpec::string("kernel")
                .defaultValue("bin")
                .options({"bin", "overlap", "gaussian", "lucy"})
@@ -269,6 +271,7 @@ void ExtractStage::run(StageContext& ctx) const {
     }
   }
   extract::coarse::CoarseGrainer coarseGrainer;  // keeps its cell arrays from frame to frame
+  extract::coarse::FieldTimeAverage fieldAverage;
   const auto kernel = extract::coarse::CoarseGrainingKernel::fromName(p.at("kernel").get<std::string>(),
                                                                       p.at("kernel_width").get<double>());
   std::vector<core::data::ParticleFrame> kept;  // for the pooled statistics
@@ -346,7 +349,9 @@ void ExtractStage::run(StageContext& ctx) const {
       std::array<int, 3> cells{};
       for (std::size_t axis = 0; axis < 3; ++axis) cells[axis] = static_cast<int>(p["grid_cells"][axis].get<double>());
       const auto grid = core::grid::CellGrid::overDomain(frame.domain, cells);
-      fieldWriter->write(toFieldFrame(frame, coarseGrainer(frame, grid, kernel), speciesNames));
+      const auto fields = toFieldFrame(frame, coarseGrainer(frame, grid, kernel), speciesNames);
+      fieldWriter->write(fields);
+      fieldAverage.add(fields);
     }
     if (surface) {
       try {
@@ -368,6 +373,13 @@ void ExtractStage::run(StageContext& ctx) const {
       ctx.addArtifact(f.lexically_relative(ctx.outputDir()).string(), "field_frame");
     }
     ctx.addArtifact("fields.xmf", "xdmf");
+    // The time-averaged fields with their block-averaging errors, as a one-frame collection.
+    core::io::FieldFrameWriter meanWriter(ctx.outputDir() / "mean", core::io::ArtifactStamp{ctx.key()});
+    meanWriter.write(fieldAverage.mean());
+    for (const auto& f : core::io::listFieldFrames(ctx.outputDir() / "mean")) {
+      ctx.addArtifact(f.lexically_relative(ctx.outputDir()).string(), "field_frame");
+    }
+    ctx.addArtifact("mean/fields.xmf", "xdmf");
   }
 
   // The closure point: time averages with their block-averaging errors.

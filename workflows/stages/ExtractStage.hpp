@@ -15,7 +15,7 @@ class ExtractStage final : public StageType {
  public:
   ExtractStage();
   [[nodiscard]] std::string name() const override { return "extract"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] int implVersion() const override { return 2; }  // 2: time-averaged fields (mean/)
   [[nodiscard]] std::string summary() const override {
     return "closure point (stress, temperature, dissipation, ...) and structure statistics from particle frames";
   }
