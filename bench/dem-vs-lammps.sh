@@ -9,35 +9,45 @@
 # Builds nothing: it uses build-release/bin/grainbridge (scripts/quickstart.sh builds it) or
 # $GRAINBRIDGE. Installs Debian's lammps package if missing (bench/lammps/run-lammps-reference.sh).
 #
-# Usage: bench/dem-vs-lammps.sh [--runs N]
-# Last line: ratio grainbridge/lammps = X   (particle-steps per second)
+# Usage: bench/dem-vs-lammps.sh [--runs N] [--scaling]
+#   --scaling  also times 5,000 (n 25, nz 8) and 80,000 (n 50, nz 32) beds, settled the same way,
+#              and says for each engine whether its rate is flat: rate(80k) >= 0.85 x rate(5k).
+# Last line: ratio grainbridge/lammps = X   (particle-steps per second, the 20,000 bed)
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 runs=3
+scaling=0
 while (($#)); do
   case "$1" in
     --runs) runs=$2; shift 2 ;;
-    *) echo "usage: bench/dem-vs-lammps.sh [--runs N]" >&2; exit 2 ;;
+    --scaling) scaling=1; shift ;;
+    *) echo "usage: bench/dem-vs-lammps.sh [--runs N] [--scaling]" >&2; exit 2 ;;
   esac
 done
 gb=${GRAINBRIDGE:-$repo/build-release/bin/grainbridge}
 [[ -x "$gb" ]] || { echo "no grainbridge binary at $gb: run scripts/quickstart.sh first (or set GRAINBRIDGE)" >&2; exit 2; }
 core=$(($(nproc) - 1))
-
 lmp_ref="$repo/bench/lammps/run-lammps-reference.sh"
-datafile=$("$lmp_ref" --settle-only | awk -F' = ' '/^lammps_datafile/ {print $2}')
-[[ -f "$datafile" ]] || { echo "settled bed not found" >&2; exit 1; }
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# The box comes from the data file; gamma_n as in.box computes it (e = 0.9 at m_eff = 1/2).
-read -r xlo xhi < <(awk '/xlo xhi/ {print $1, $2; exit}' "$datafile")
-read -r ylo yhi < <(awk '/ylo yhi/ {print $1, $2; exit}' "$datafile")
-read -r zlo zhi < <(awk '/zlo zhi/ {print $1, $2; exit}' "$datafile")
-gn=$(awk 'BEGIN {pi = atan2(0, -1); b = -log(0.9) / pi; printf "%.17g", 2 * b * sqrt(2e5 / 0.5) / sqrt(1 + b * b)}')
-gt=$(awk -v g="$gn" 'BEGIN {printf "%.17g", g / 2}')
-cat > "$work/bench.json" <<JSON
+median() { sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+
+# time_bed N NZ: settle (or find) the N x N x NZ bed, time both engines on it `runs` times,
+# interleaved, and leave the medians in $work/N-NZ.{gb,lmp} (particle-steps per second).
+time_bed() {
+  local n=$1 nz=$2 tag="$1-$2" datafile xlo xhi ylo yhi zlo zhi gn gt r out lr lc log line gr gc
+  datafile=$("$lmp_ref" --settle-only --n "$n" --nz "$nz" | awk -F' = ' '/^lammps_datafile/ {print $2}')
+  [[ -f "$datafile" ]] || { echo "settled bed ($n x $n x $nz) not found" >&2; exit 1; }
+  # The box comes from the data file; gamma_n as in.box computes it (e = 0.9 at m_eff = 1/2).
+  read -r xlo xhi < <(awk '/xlo xhi/ {print $1, $2; exit}' "$datafile")
+  read -r ylo yhi < <(awk '/ylo yhi/ {print $1, $2; exit}' "$datafile")
+  read -r zlo zhi < <(awk '/zlo zhi/ {print $1, $2; exit}' "$datafile")
+  gn=$(awk 'BEGIN {pi = atan2(0, -1); b = -log(0.9) / pi; printf "%.17g", 2 * b * sqrt(2e5 / 0.5) / sqrt(1 + b * b)}')
+  gt=$(awk -v g="$gn" 'BEGIN {printf "%.17g", g / 2}')
+  mkdir -p "$work/$tag"
+  cat > "$work/$tag/bench.json" <<JSON
 {
   "name": "bench-dense-bed",
   "stages": {
@@ -54,24 +64,48 @@ cat > "$work/bench.json" <<JSON
   }
 }
 JSON
+  : > "$work/$tag/gb.rates"; : > "$work/$tag/lmp.rates"; : > "$work/$tag/gb.contacts"; : > "$work/$tag/lmp.contacts"
+  echo "bed $n x $n x $nz = $((n * n * nz)) spheres: $datafile"
+  for ((r = 1; r <= runs; r++)); do
+    out=$("$lmp_ref" --runs 1 --datafile "$datafile")
+    lr=$(awk -F' = ' '/^lammps_particle_steps_per_s/ {print $2}' <<<"$out")
+    lc=$(awk -F' = ' '/^lammps_contacts_per_particle/ {print $2}' <<<"$out")
+    echo "$lr" >> "$work/$tag/lmp.rates"; echo "$lc" >> "$work/$tag/lmp.contacts"
+    log=$(cd "$work/$tag" && OMP_NUM_THREADS=1 taskset -c "$core" "$gb" run bench.json --force 2>&1)
+    line=$(grep -m1 'particle-steps/s' <<<"$log") || { echo "$log" >&2; exit 1; }
+    gr=$(sed -E 's/.*s: ([0-9.e+]+) particle-steps\/s.*/\1/' <<<"$line")
+    gc=$(sed -E 's/.*, ([0-9.]+) contacts per particle.*/\1/' <<<"$line")
+    echo "$gr" >> "$work/$tag/gb.rates"; echo "$gc" >> "$work/$tag/gb.contacts"
+    echo "  run $r: lammps $lr particle-steps/s ($lc contacts/particle), grainbridge $gr particle-steps/s ($gc contacts/particle)"
+  done
+  median < "$work/$tag/lmp.rates" > "$work/$tag.lmp"
+  median < "$work/$tag/gb.rates" > "$work/$tag.gb"
+  median < "$work/$tag/lmp.contacts" > "$work/$tag.lmp.contacts"
+  median < "$work/$tag/gb.contacts" > "$work/$tag.gb.contacts"
+  echo "  lammps median: $(cat "$work/$tag.lmp") particle-steps/s, contacts per particle $(median < "$work/$tag/lmp.contacts")"
+  echo "  grainbridge median: $(cat "$work/$tag.gb") particle-steps/s, contacts per particle $(median < "$work/$tag/gb.contacts")"
+  awk -v g="$(cat "$work/$tag.gb")" -v l="$(cat "$work/$tag.lmp")" 'BEGIN {printf "  ratio on this bed: %.3f\n", g / l}'
+}
 
-median() { sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
-: > "$work/gb.rates"; : > "$work/lmp.rates"; : > "$work/gb.contacts"; : > "$work/lmp.contacts"
 echo "machine: $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 echo "grainbridge: $gb ($(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)), core $core"
-for ((r = 1; r <= runs; r++)); do
-  out=$("$lmp_ref" --runs 1 --datafile "$datafile")
-  lr=$(awk -F' = ' '/^lammps_particle_steps_per_s/ {print $2}' <<<"$out")
-  lc=$(awk -F' = ' '/^lammps_contacts_per_particle/ {print $2}' <<<"$out")
-  echo "$lr" >> "$work/lmp.rates"; echo "$lc" >> "$work/lmp.contacts"
-  log=$(cd "$work" && OMP_NUM_THREADS=1 taskset -c "$core" "$gb" run bench.json --force 2>&1)
-  line=$(grep -m1 'particle-steps/s' <<<"$log") || { echo "$log" >&2; exit 1; }
-  gr=$(sed -E 's/.*s: ([0-9.e+]+) particle-steps\/s.*/\1/' <<<"$line")
-  gc=$(sed -E 's/.*, ([0-9.]+) contacts per particle.*/\1/' <<<"$line")
-  echo "$gr" >> "$work/gb.rates"; echo "$gc" >> "$work/gb.contacts"
-  echo "run $r: lammps $lr particle-steps/s ($lc contacts/particle), grainbridge $gr particle-steps/s ($gc contacts/particle)"
-done
-lm=$(median < "$work/lmp.rates"); gm=$(median < "$work/gb.rates")
-echo "lammps median: $lm particle-steps/s, contacts per particle $(median < "$work/lmp.contacts")"
-echo "grainbridge median: $gm particle-steps/s, contacts per particle $(median < "$work/gb.contacts")"
-awk -v g="$gm" -v l="$lm" 'BEGIN {printf "ratio grainbridge/lammps = %.3f\n", g / l}'
+if ((scaling)); then
+  time_bed 25 8
+  time_bed 50 32
+fi
+time_bed 25 32
+if ((scaling)); then
+  # Flat: the rate per particle-step does not fall with system size (cache misses, list rebuilds).
+  # The 5k bed is only 8 layers deep, so more of it is free surface with fewer contacts per
+  # particle: the rate per contact-step (rate x contacts per particle) is printed beside it.
+  for engine in lmp gb; do
+    awk -v name="$([[ $engine == gb ]] && echo grainbridge || echo lammps)" -v small="$(cat "$work/25-8.$engine")" \
+        -v big="$(cat "$work/50-32.$engine")" -v zs="$(cat "$work/25-8.$engine.contacts")" \
+        -v zb="$(cat "$work/50-32.$engine.contacts")" 'BEGIN {
+      f = big / small
+      printf "scaling %s: rate(80k) / rate(5k) = %.3f (%s); per contact-step %.3f\n", name, f,
+             (f >= 0.85) ? "flat" : "not flat, below 0.85", f * zb / zs
+    }'
+  done
+fi
+awk -v g="$(cat "$work/25-32.gb")" -v l="$(cat "$work/25-32.lmp")" 'BEGIN {printf "ratio grainbridge/lammps = %.3f\n", g / l}'

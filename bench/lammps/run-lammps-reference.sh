@@ -18,11 +18,13 @@
 # "Ave neighs/atom" (half list, cutoff d + skin) is printed too, but it is not a contact count.
 #
 # Usage: bench/lammps/run-lammps-reference.sh [--runs N] [--datafile PATH] [--cache-dir DIR]
-#          [--steps N] [--core CPU] [--lmp BINARY] [--settle-only]
+#          [--steps N] [--core CPU] [--lmp BINARY] [--n N] [--nz NZ] [--settle-only]
 #   --datafile PATH  the settled bed to time from; if PATH does not exist it is settled there.
 #                    Default: <cache-dir>/bed-n25-nz32-settle40000.data.
 #   --runs N         timed runs (default 3).      --steps N   timed steps (default 10000).
 #   --core CPU       CPU for taskset (default: the last one).
+#   --n N --nz NZ    the bed's lattice: N x N x NZ spheres (default 25 x 25 x 32 = 20,000; the
+#                    --scaling beds of bench/dem-vs-lammps.sh are 25 x 25 x 8 and 50 x 50 x 32).
 #   --settle-only    settle (or find) the bed, print its path as lammps_datafile = PATH, stop.
 # Environment: LAMMPS_BENCH_DIR (default: <repo>/../shared/lammps-bench).
 set -euo pipefail
@@ -57,6 +59,8 @@ while [[ $# -gt 0 ]]; do
     --cache-dir) need_value "$@"; cache_dir=$2; shift 2 ;;
     --core) need_value "$@"; core=$2; shift 2 ;;
     --lmp) need_value "$@"; lmp=$2; shift 2 ;;
+    --n) need_value "$@"; settle_n=$2; shift 2 ;;
+    --nz) need_value "$@"; settle_nz=$2; shift 2 ;;
     --settle-only) settle_only=1; shift ;;
     -h | --help) sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
     *) die "unknown option '$1' (try --help)" ;;
@@ -64,6 +68,8 @@ while [[ $# -gt 0 ]]; do
 done
 [[ "$runs" =~ ^[1-9][0-9]*$ ]] || die "--runs must be a positive integer, got '$runs'"
 [[ "$steps" =~ ^[1-9][0-9]*$ ]] || die "--steps must be a positive integer, got '$steps'"
+[[ "$settle_n" =~ ^[1-9][0-9]*$ ]] || die "--n must be a positive integer, got '$settle_n'"
+[[ "$settle_nz" =~ ^[1-9][0-9]*$ ]] || die "--nz must be a positive integer, got '$settle_nz'"
 for f in in.box in.timed; do
   [[ -r "$bench_inputs/$f" ]] || die "cannot read $bench_inputs/$f (set LAMMPS_BENCH_DIR)"
 done
