@@ -39,7 +39,7 @@ std::vector<PairHistory> NeighborList::exportHistory() const {
   return out;
 }
 
-void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff,
+void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff, double skin,
                          const std::vector<PairHistory>* seed) {
   // 1. Remember the history of pairs in contact, keyed by ids in (low, high) orientation.
   std::unordered_map<PairKey, Vec3, PairKeyHash> carried;
@@ -72,14 +72,14 @@ void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, dou
     for (std::size_t i = 0; i < n; ++i) cellItems_[fill[cellOf_[i]]++] = static_cast<std::uint32_t>(i);
   }
 
-  // 3. Pairs: for each owned particle, the 27 surrounding cells; test r^2 < cutoff^2 (no sqrt).
-  const double cut2 = cutoff * cutoff;
+  // 3. Pairs: for each owned particle, the 27 surrounding cells; test r^2 < (a_i + a_j + skin)^2.
   offset_.assign(p.nOwned + 1, 0);
   partner_.clear();
   for (std::size_t i = 0; i < p.nOwned; ++i) {
     const Vec3i ci = cellCoord(p.x[i]);
     const Vec3& xi = p.x[i];
     const bool iFrozen = p.isFrozen(i);
+    const double reachI = p.radius[i] + skin;
     for (int dz = -1; dz <= 1; ++dz) {
       const int cz = ci[2] + dz;
       if (cz < 0 || cz >= cells[2]) continue;
@@ -94,7 +94,8 @@ void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, dou
             const std::uint32_t j = cellItems_[k];
             if (j < p.nOwned ? j <= i : p.id[j] <= p.id[i]) continue;  // each pair once
             if (iFrozen && p.isFrozen(j)) continue;
-            if ((p.x[j] - xi).squaredNorm() < cut2) partner_.push_back(j);
+            const double reach = reachI + p.radius[j];
+            if ((p.x[j] - xi).squaredNorm() < reach * reach) partner_.push_back(j);
           }
         }
       }

@@ -1,6 +1,6 @@
 #pragma once
-// Verlet list over cell bins with a skin (STYLE.md 12): pairs within cutoff = max contact
-// distance + skin, stored in CSR form per owned particle, each pair once. The list is rebuilt
+// Verlet list over cell bins with a skin (STYLE.md 12): pairs within a_i + a_j + skin, stored in
+// CSR form per owned particle, each pair once. The list is rebuilt
 // when some particle has moved more than half the skin. Tangential contact history lives in
 // slots parallel to the pairs, so the hot loop reads it with no lookup; at a rebuild it is
 // carried over by the pair's global ids, which keeps it across rebuilds and re-sorting.
@@ -21,12 +21,18 @@ struct PairHistory {
 
 class NeighborList {
  public:
-  // Bins owned and ghost particles over [lo - cutoff, hi + cutoff] and lists every pair closer
-  // than `cutoff` once: owned-owned pairs with j > i, owned-ghost pairs only when the owned id is
-  // the smaller (the mirrored image pair is listed from the other side). Frozen-frozen pairs are
-  // left out. History of pairs still listed is carried over.
+  // Bins owned and ghost particles over [lo - cutoff, hi + cutoff] in cells of side >= cutoff
+  // (the largest contact distance + skin) and lists every pair closer than its own reach
+  // a_i + a_j + skin, once: owned-owned pairs with j > i, owned-ghost pairs only when the owned id
+  // is the smaller (the mirrored image pair is listed from the other side). Frozen-frozen pairs
+  // are left out. History of pairs still listed is carried over.
+  // The per-pair reach matters for size ratios like the Brazil nut's 3.16: with one cutoff set by
+  // the largest pair, every small grain would list every grain within 3.5 d0 (about 150) instead
+  // of its dozen neighbours, and the force loop would walk them all every step (LAMMPS's
+  // `neighbor multi` answers the same problem). The rebuild rule (half-skin displacement) keeps
+  // it exact: a pair left out is more than a_i + a_j + skin apart and cannot touch before then.
   // `seed`, when given, replaces the list's own history as the source carried over (restart).
-  void build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff,
+  void build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff, double skin,
              const std::vector<PairHistory>* seed = nullptr);
   // The history of every pair currently in contact (for checkpoints).
   [[nodiscard]] std::vector<PairHistory> exportHistory() const;

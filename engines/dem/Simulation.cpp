@@ -47,7 +47,7 @@ Simulation::Simulation(SimulationSetup setup, EngineState state)
   p_.x = state.buildPositions;
   buildTime_ = state.buildTime;
   buildGhosts(shearOffset(buildTime_));
-  list_.build(p_, setup_.lo, setup_.hi, cutoff_, &state.pairHistory);
+  list_.build(p_, setup_.lo, setup_.hi, cutoff_, setup_.skin, &state.pairHistory);
   for (std::size_t i = 0; i < p_.nOwned; ++i) p_.x[i] = current[i];
   p_.refreshGhosts(shearDrift());
 }
@@ -329,7 +329,7 @@ void Simulation::rebuild(bool sort) {
   }
   buildTime_ = time_;
   buildGhosts(shearOffset(time_));
-  list_.build(p_, setup_.lo, setup_.hi, cutoff_);
+  list_.build(p_, setup_.lo, setup_.hi, cutoff_, setup_.skin);
 }
 
 void Simulation::computeForces(bool record) {
