@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/Error.hpp"
+#include "db/BusyError.hpp"
 #include "db/Database.hpp"
 #include "db/Statement.hpp"
 
@@ -84,7 +85,14 @@ void ClosureStore::insertRecords(std::int64_t runId, const json& records) {
       st.bind(1, runId);
       int index = 2;
       for (const auto& [column, value] : row.items()) bindJson(st, index++, value, where + "/" + column);
-      st.step();
+      try {
+        st.step();
+      } catch (const BusyError&) {
+        throw;  // the transaction's retry handles a locked database
+      } catch (const Error& e) {
+        // A CHECK or NOT NULL constraint: say which row broke it.
+        throw Error("closure database: " + where + ": " + e.what());
+      }
     }
   }
 }
