@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -92,6 +93,22 @@ TEST(BrazilNutSmoke, RunsWithPreparationAndWallFrictionSweep) {
   int mstPasses = 0;
   for (const auto& row : structure) mstPasses += row["kind"] == "mst" ? 1 : 0;
   EXPECT_EQ(mstPasses % 5, 0);
+
+  // The validation report gathers the Brazil-nut figures from the database: the Eq. 6.11 fit of
+  // all contacts (not of the MST passes' contacts), the networks and the Table 6.2 fractions.
+  const auto report =
+      runGrainbridge(work.path(), "report validation --db results/bnp-smoke/grainbridge.sqlite -o v.html");
+  EXPECT_EQ(report.exitCode, 0) << report.output;
+  std::ifstream html(work.path() / "v.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  for (const char* check : {"Eq. 6.11 fit to the Brazil-nut contact forces: a (", "particles in the largest network",
+                            "after 1 MST pass(es)", "after 5 MST pass(es)"}) {
+    EXPECT_NE(page.find(check), std::string::npos) << check;
+  }
+  int forcePdfRows = 0;
+  const std::string fit = "Eq. 6.11 fit to the Brazil-nut contact forces: a (";
+  for (auto at = page.find(fit); at != std::string::npos; at = page.find(fit, at + 1)) ++forcePdfRows;
+  EXPECT_EQ(forcePdfRows, 1);  // the one instance whose Eq. 6.11 fit succeeded; the MST passes' fits are not rows
 
   // The nut against the local free surface: one row per frame in surface.csv, its verdict in
   // the manifest summary, and no closure point (closure_point: false; the 2 above are forces').
