@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/data/ParticleFrame.hpp"
+#include "tests/extract/structure/StructureTestFrames.hpp"
 #include "workflows/stages/SurfaceTracker.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -18,17 +19,8 @@ core::data::ParticleFrame frame(double time, double depth) {
   f.time = time;
   f.domain.lo = Vec3(-5, -5, 0);
   f.domain.hi = Vec3(5, 5, 50);
-  auto add = [&](std::int64_t id, const Vec3& p, double r) {
-    f.id.push_back(id);
-    f.species.push_back(0);
-    f.radius.push_back(r);
-    f.mass.push_back(1.0);
-    f.position.push_back(p);
-    f.velocity.push_back(Vec3::Zero());
-    f.angularVelocity.push_back(Vec3::Zero());
-  };
-  add(0, Vec3(0, 0, 10), 1.5);
-  add(1, Vec3(0, 0, 10 + 1.5 + depth - 0.5), 0.5);
+  extract::structure::testing::addParticle(f, 0, Vec3(0, 0, 10), 1.5);
+  extract::structure::testing::addParticle(f, 1, Vec3(0, 0, 10 + 1.5 + depth - 0.5), 0.5);
   f.wallContacts.particle.push_back(1);  // part of the bed, not in flight
   f.wallContacts.wall.push_back(0);
   f.wallContacts.point.push_back(Vec3::Zero());

@@ -17,20 +17,16 @@
 #include "extract/statistics/NormalForces.hpp"
 #include "extract/statistics/VelocityCorrelation.hpp"
 #include "extract/statistics/VelocityMoments.hpp"
+#include "workflows/report/CsvField.hpp"
 
 namespace grainbridge::workflows::stages {
+
+using report::csvNumber;
 
 using nlohmann::json;
 namespace st = extract::statistics;
 
 namespace {
-
-std::string csvNumber(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
-}
 
 json fitRow(const json& family, const std::string& source, const char* model, const st::ForcePdfFit& fit,
             double meanForce) {
@@ -205,15 +201,19 @@ void addMstForceStatistics(StageContext& ctx, const std::vector<core::data::Part
   pdfCsv << "pass,f_lo,f_hi,density,error,eq6.11,eq6.13\n";
   corrCsv << "pass,r,force_pairs,force_correlation,force_correlation_err\n";
   const std::size_t passes = treeContacts.empty() ? 0 : treeContacts.front().size();
+  // <F_n> of all repulsive contacts of each frame (0: none), not of the MST's own.
+  std::vector<double> frameMean(frames.size(), 0.0);
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    if (hasRepulsiveContact(frames[k])) frameMean[k] = st::repulsiveForces(frames[k]).meanForce;
+  }
   for (std::size_t p = 0; p < passes; ++p) {
     const std::string source = "mst_pass" + std::to_string(p + 1);
     std::vector<double> f;
     std::vector<core::data::ParticleFrame> subsets;
     double meanForce = 0.0;
     for (std::size_t k = 0; k < frames.size(); ++k) {
-      if (!hasRepulsiveContact(frames[k])) continue;
-      // <F_n> of all repulsive contacts of the frame, not of the MST's own.
-      const double mean = st::repulsiveForces(frames[k]).meanForce;
+      const double mean = frameMean[k];
+      if (mean == 0.0) continue;
       meanForce += mean;
       auto subset = st::withContacts(frames[k], treeContacts[k][p]);
       const auto& c = subset.contacts;

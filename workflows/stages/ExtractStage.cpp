@@ -20,11 +20,14 @@
 #include "extract/structure/ForceNetworks.hpp"
 #include "extract/structure/MstTreeContacts.hpp"
 #include "extract/structure/MultiPassMst.hpp"
+#include "workflows/report/CsvField.hpp"
 #include "workflows/stages/DemSetup.hpp"
 #include "workflows/stages/ExtractForceStatistics.hpp"
 #include "workflows/stages/SurfaceTracker.hpp"
 
 namespace grainbridge::workflows::stages {
+
+using report::csvNumber;
 
 using core::units::Dimension;
 using nlohmann::json;
@@ -124,13 +127,6 @@ void upstreamMaterial(const UpstreamInstance& up, json& row) {
   const DemSetup setup = makeDemSetup(params);
   if (!setup.timings.empty()) row["restitution"] = setup.timings.front().restitution;
   row["friction"] = params.at("contact").at("mu").get<double>();
-}
-
-std::string csvNumber(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
 }
 
 // Heights are measured against gravity: up is -g of a dem upstream, +z otherwise.
