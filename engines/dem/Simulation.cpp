@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/Error.hpp"
+#include "core/grid/MortonKey.hpp"
 #include "engines/dem/contact/SpringDashpot.hpp"
 
 namespace grainbridge::dem {
@@ -203,10 +204,14 @@ void Simulation::forceRebuild(bool sort) {
 }
 
 bool Simulation::needsRebuild() const {
-  const double limit2 = 0.25 * setup_.skin * setup_.skin;
-  // Ghosts across the shearing boundary move with the offset: it counts like a displacement.
-  const double drift = shearDrift();
-  if (drift * drift > limit2) return true;
+  // The list holds every pair within a_i + a_j + skin at the build. Two particles close that
+  // gap by at most |dx_i| + |dx_j| <= 2 max|dx|. A ghost across the shearing boundary also moves
+  // with the offset drift, so a pair there closes it by up to 2 max|dx| + |drift|: rebuild once
+  // that could exceed the skin. Without shear the drift is 0 and this is the half-skin rule.
+  const double drift = std::abs(shearDrift());
+  if (drift >= setup_.skin) return true;
+  const double reach = 0.5 * (setup_.skin - drift);
+  const double limit2 = reach * reach;
   const auto& x0 = list_.referencePositions();
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     if ((p_.x[i] - x0[i]).squaredNorm() > limit2) return true;
@@ -292,17 +297,21 @@ void Simulation::buildGhosts(double shearOffsetNow) {
 
 void Simulation::sortByCell() {
   // Particles close in space close in memory: the pair loop then touches fewer cache lines.
+  // Cells go in Morton (Z) order, not row by row: row-major order puts a cell's neighbours in
+  // the next layer a whole layer of particles away (about 3000 in an 80k bed), Morton order
+  // keeps most of them within a block of nearby cells.
   const double cell = cutoff_;
   const Vec3 extent = setup_.hi - setup_.lo;
   Vec3i cells;
-  for (int a = 0; a < 3; ++a) cells[a] = std::max(1, static_cast<int>(extent[a] / cell));
-  std::vector<std::size_t> key(p_.nOwned);
+  // at most 2^21 cells per axis, the reach of a 63-bit Morton key
+  for (int a = 0; a < 3; ++a) cells[a] = std::clamp(static_cast<int>(extent[a] / cell), 1, 1 << 21);
+  std::vector<std::uint64_t> key(p_.nOwned);
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     Vec3i c;
     for (int a = 0; a < 3; ++a) {
       c[a] = std::clamp(static_cast<int>((p_.x[i][a] - setup_.lo[a]) / extent[a] * cells[a]), 0, cells[a] - 1);
     }
-    key[i] = (static_cast<std::size_t>(c[2]) * cells[1] + c[1]) * cells[0] + c[0];
+    key[i] = grid::mortonKey(c);
   }
   std::vector<std::size_t> order(p_.nOwned);
   std::iota(order.begin(), order.end(), 0);

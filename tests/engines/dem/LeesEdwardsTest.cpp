@@ -160,3 +160,52 @@ TEST(LeesEdwards, SteadyShearHasLinearProfileAndShearWorkEqualsDissipation) {
                     "VALIDATION.md DEM (Lees-Edwards simple shear)", r.sigmaXyUpper, r.sigmaXyLower, "5 %",
                     std::abs(r.sigmaXyLower / r.sigmaXyUpper - 1.0) <= 0.05, setup});
 }
+
+// A pair across the shearing boundary closes its list gap by both displacements plus the offset
+// drift. Here each particle moves 0.149 (just under half the 0.3 skin) and the offset drifts
+// 0.149 too, so a half-skin rule on each alone never rebuilds: the pair starts 0.015 beyond the
+// list's reach and ends 0.088 inside contact. The rebuild must come in time for the contact.
+TEST(LeesEdwards, RebuildCountsTheOffsetDriftWithBothDisplacements) {
+  PairMaterial mat;
+  mat.kn = 1e4;
+  mat.kt = 0.0;
+  mat.mu = 0.0;
+  mat.gammaN = 0.0;
+  SimulationSetup s;
+  s.lo = Vec3::Zero();
+  s.hi = Vec3::Constant(10.0);
+  s.periodic = {true, true, true};
+  s.dt = 1e-3;
+  s.skin = 0.3;
+  s.species = 1;
+  s.pairMaterial = {mat};
+  const double travel = 0.149;  // per particle and for the offset, over t = 1
+  s.shearRate = travel / 10.0;  // offset drift gammadot L_y t = travel
+  const double gap = 0.93;      // each component of the separation from A to B's upper image
+  const Vec3 towardB = Vec3(-1.0, 1.0, 0.0).normalized();
+  const Vec3 a(5.0, 9.6, 5.0);
+  const Vec3 bImage = a + Vec3(-gap, gap, 0.0);  // |A B'| = 1.315 > 1 + skin: not listed
+  const Vec3 b = bImage - Vec3(0.0, 10.0, 0.0);  // offset 0 at t = 0
+  Particles p;
+  p.addOwned(0, 0, 0.5, 1.0, a, travel * towardB, Vec3::Zero(), false);
+  p.addOwned(1, 0, 0.5, 1.0, b, -travel * towardB, Vec3::Zero(), false);
+  Simulation sim(s, std::move(p));
+
+  bool touched = false;
+  for (int k = 0; k < 1000; ++k) {
+    sim.step();
+    // Separation to B's image through the shearing boundary, as the ghost sees it.
+    const auto& x = sim.particles().x;
+    const std::size_t ia = *sim.indexOf(0), ib = *sim.indexOf(1);
+    Vec3 r = x[ib] + Vec3(sim.shearOffset(sim.time()), 10.0, 0.0) - x[ia];
+    r[0] -= 10.0 * std::round(r[0] / 10.0);
+    if (r.norm() < 1.0) {
+      touched = true;
+      ASSERT_EQ(sim.contactCount(), 1u) << "centres " << r.norm() << " apart at step " << k + 1
+                                        << " but the contact is not in the list";
+    }
+  }
+  EXPECT_TRUE(touched);
+  // The contact pushed them apart: A no longer moves straight toward B.
+  EXPECT_LT(sim.particles().v[*sim.indexOf(0)].dot(towardB), travel);
+}
