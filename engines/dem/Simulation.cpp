@@ -6,7 +6,6 @@
 #include <string>
 
 #include "core/Error.hpp"
-#include "core/grid/MortonKey.hpp"
 #include "engines/dem/contact/SpringDashpot.hpp"
 
 namespace grainbridge::dem {
@@ -297,21 +296,17 @@ void Simulation::buildGhosts(double shearOffsetNow) {
 
 void Simulation::sortByCell() {
   // Particles close in space close in memory: the pair loop then touches fewer cache lines.
-  // Cells go in Morton (Z) order, not row by row: row-major order puts a cell's neighbours in
-  // the next layer a whole layer of particles away (about 3000 in an 80k bed), Morton order
-  // keeps most of them within a block of nearby cells.
   const double cell = cutoff_;
   const Vec3 extent = setup_.hi - setup_.lo;
   Vec3i cells;
-  // at most 2^21 cells per axis, the reach of a 63-bit Morton key
-  for (int a = 0; a < 3; ++a) cells[a] = std::clamp(static_cast<int>(extent[a] / cell), 1, 1 << 21);
-  std::vector<std::uint64_t> key(p_.nOwned);
+  for (int a = 0; a < 3; ++a) cells[a] = std::max(1, static_cast<int>(extent[a] / cell));
+  std::vector<std::size_t> key(p_.nOwned);
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     Vec3i c;
     for (int a = 0; a < 3; ++a) {
       c[a] = std::clamp(static_cast<int>((p_.x[i][a] - setup_.lo[a]) / extent[a] * cells[a]), 0, cells[a] - 1);
     }
-    key[i] = grid::mortonKey(c);
+    key[i] = (static_cast<std::size_t>(c[2]) * cells[1] + c[1]) * cells[0] + c[0];
   }
   std::vector<std::size_t> order(p_.nOwned);
   std::iota(order.begin(), order.end(), 0);

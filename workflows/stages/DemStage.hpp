@@ -13,8 +13,7 @@ class DemStage final : public StageType {
   [[nodiscard]] std::string name() const override { return "dem"; }
   // 2: series.csv gains top_z_<species> (free surface)
   // 3: the kinetic stress in series.csv takes C about the mean peculiar velocity under Lees-Edwards
-  // 4: Morton-ordered particle sort; Lees-Edwards rebuild counts the offset drift with both
-  // displacements
+  // 4: the Lees-Edwards rebuild counts the offset drift with both displacements
   [[nodiscard]] int implVersion() const override { return 4; }
   [[nodiscard]] std::string summary() const override {
     return "soft-sphere DEM: random insertion, gravity, frictional contacts with history, walls; frames and series";

@@ -9,6 +9,5 @@ grainbridge_add_test(test_core_grid
     ${CMAKE_CURRENT_SOURCE_DIR}/grid/SmoothingKernelTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/grid/KernelCellSharesTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/grid/SegmentCellSharesTest.cpp
-    ${CMAKE_CURRENT_SOURCE_DIR}/grid/MortonKeyTest.cpp
   LIBS core
   LABELS "unit;core")
