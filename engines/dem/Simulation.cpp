@@ -176,19 +176,29 @@ void Simulation::run(std::int64_t steps) {
 void Simulation::step(bool recordContacts) {
   const double dt = setup_.dt;
   const double half = 0.5 * dt;
-  // Velocity Verlet: half kick, drift, forces at the new positions, half kick.
+  // Velocity Verlet: half kick, drift, forces at the new positions, half kick. The first loop
+  // also clears the forces it has used and checks each displacement against the rebuild
+  // reach: one pass over the particle arrays instead of three, which counts on beds larger than
+  // the cache.
+  time_ += dt;
+  ++step_;
+  const double reach = rebuildReach();
+  const double reach2 = reach * reach;
+  const auto& x0 = list_.referencePositions();
+  bool movedTooFar = reach <= 0.0;
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     p_.v[i] += (half * p_.invMass[i]) * p_.force[i];
     p_.omega[i] += (half * p_.invInertia[i]) * p_.torque[i];
     p_.x[i] += dt * p_.v[i];
+    p_.force[i].setZero();
+    p_.torque[i].setZero();
+    movedTooFar |= (p_.x[i] - x0[i]).squaredNorm() > reach2;
   }
-  time_ += dt;
-  ++step_;
-  if (needsRebuild())
+  if (movedTooFar)
     rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
   else
     p_.refreshGhosts(shearDrift());
-  computeForces(recordContacts);
+  computeForces(recordContacts, /*ownedCleared=*/true);
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     p_.v[i] += (half * p_.invMass[i]) * p_.force[i];
     p_.omega[i] += (half * p_.invInertia[i]) * p_.torque[i];
@@ -202,20 +212,12 @@ void Simulation::forceRebuild(bool sort) {
   rebuild(sort);
 }
 
-bool Simulation::needsRebuild() const {
+double Simulation::rebuildReach() const {
   // The list holds every pair within a_i + a_j + skin at the build. Two particles close that
   // gap by at most |dx_i| + |dx_j| <= 2 max|dx|. A ghost across the shearing boundary also moves
   // with the offset drift, so a pair there closes it by up to 2 max|dx| + |drift|: rebuild once
   // that could exceed the skin. Without shear the drift is 0 and this is the half-skin rule.
-  const double drift = std::abs(shearDrift());
-  if (drift >= setup_.skin) return true;
-  const double reach = 0.5 * (setup_.skin - drift);
-  const double limit2 = reach * reach;
-  const auto& x0 = list_.referencePositions();
-  for (std::size_t i = 0; i < p_.nOwned; ++i) {
-    if ((p_.x[i] - x0[i]).squaredNorm() > limit2) return true;
-  }
-  return false;
+  return 0.5 * (setup_.skin - std::abs(shearDrift()));
 }
 
 void Simulation::wrapAndCheck() {
@@ -336,9 +338,9 @@ void Simulation::rebuild(bool sort) {
   list_.build(p_, setup_.lo, setup_.hi, cutoff_, setup_.skin);
 }
 
-void Simulation::computeForces(bool record) {
+void Simulation::computeForces(bool record, bool ownedCleared) {
   const std::size_t n = p_.size();
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = ownedCleared ? p_.nOwned : 0; i < n; ++i) {
     p_.force[i].setZero();
     p_.torque[i].setZero();
   }

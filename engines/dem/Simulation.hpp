@@ -123,11 +123,14 @@ class Simulation {
  private:
   void validateSetup();
   void rebuild(bool sort);
-  bool needsRebuild() const;
+  // How far one particle may move from its position at the last build before the list must be
+  // rebuilt (<= 0: rebuild now).
+  [[nodiscard]] double rebuildReach() const;
   void wrapAndCheck();
   void buildGhosts(double shearOffsetNow);
   [[nodiscard]] double shearDrift() const;  // offset growth since the last build
-  void computeForces(bool record);
+  // ownedCleared: the owned particles' forces and torques are zero already (step clears them)
+  void computeForces(bool record, bool ownedCleared = false);
   void constrainToPlane();
   template <class Law, bool Record>
   void pairForces();
