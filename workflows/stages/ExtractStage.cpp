@@ -1,5 +1,6 @@
 #include "workflows/stages/ExtractStage.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -316,6 +317,12 @@ void ExtractStage::run(StageContext& ctx) const {
         n["largest_edges"] = largest.contacts;
         n["largest_coordination"] = largest.coordination;
         n["largest_extent"] = largest.extent.largestCentreDistance;
+        // The reference gives the extent in d0, the small grains' diameter (52.2 d0, Section
+        // 6.3.2): record it in units of the smallest diameter in the frame too.
+        double smallest = std::numeric_limits<double>::infinity();
+        for (const double r : frame.radius) smallest = std::min(smallest, 2.0 * r);
+        n["extra_json"] = {{"smallest_diameter", smallest},
+                           {"largest_extent_diameters", largest.extent.largestCentreDistance / smallest}};
       }
       structureRows.push_back(n);
       extract::structure::MultiPassMstOptions options;

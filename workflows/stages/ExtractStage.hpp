@@ -15,7 +15,8 @@ class ExtractStage final : public StageType {
  public:
   ExtractStage();
   [[nodiscard]] std::string name() const override { return "extract"; }
-  [[nodiscard]] int implVersion() const override { return 2; }  // 2: time-averaged fields (mean/)
+  // 2: time-averaged fields (mean/); 3: network extent also in smallest-grain diameters
+  [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::string summary() const override {
     return "closure point (stress, temperature, dissipation, ...) and structure statistics from particle frames";
   }
