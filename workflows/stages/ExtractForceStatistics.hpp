@@ -15,7 +15,9 @@
 namespace grainbridge::workflows::stages {
 
 // Writes force_pdf.csv and correlations.csv, records force_statistics rows (source "contacts"),
-// and adds the correlation lengths and the kurtosis to the closure point `point`.
+// and adds the correlation lengths and the kurtosis to the closure point `point`. Velocity
+// statistics use every frame. With no repulsive contact in any frame (a dilute gas) there is no
+// force PDF: the point's extra_json says why (force_statistics_skipped) and the run goes on.
 void addForceStatistics(StageContext& ctx, const std::vector<core::data::ParticleFrame>& frames, double diameter,
                         nlohmann::json& point);
 
