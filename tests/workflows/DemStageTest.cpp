@@ -160,3 +160,101 @@ TEST(DemStage, SeriesRecordsTheHeightOfTrackedParticles) {
   }
   EXPECT_EQ(rows, 5);
 }
+
+namespace {
+
+// A sheared fcc lattice at solid fraction 0.1 (SI units as configs/shear-closures.json): its
+// lattice planes normal to y are 1.38 d apart, so on the bare streaming profile they slide past
+// each other for ever without a collision.
+json shearedLattice(const char* initialTemperature) {
+  json p = {{"box_lo", {0, 0, 0}},
+            {"box_hi", {"13.78 mm", "13.78 mm", "13.78 mm"}},
+            {"periodic", "xyz"},
+            {"gravity", {0, 0, 0}},
+            {"shear_rate", "100 1/s"},
+            {"dt", "1e-6 s"},
+            {"duration", "0.02 s"},
+            {"frames", 1},
+            {"series_points", 20},
+            {"progress", false},
+            {"insertion", "fcc_lattice"},
+            {"species", {{{"name", "grain"}, {"diameter", "1 mm"}, {"density", "2500 kg/m3"}, {"count", 500}}}},
+            {"contact", {{"kn", "2500 N/m"}, {"restitution", 0.9}, {"mu", 0.0}}}};
+  if (initialTemperature != nullptr) p["initial_temperature"] = initialTemperature;
+  return {{"name", "wf"}, {"stages", {{"bed", {{"type", "dem"}, {"params", p}}}}}};
+}
+
+// Largest contact count in series.csv.
+double mostContacts(const fs::path& work) {
+  for (const auto& e : fs::recursive_directory_iterator(work / "results/wf/bed")) {
+    if (e.path().filename() != "series.csv") continue;
+    std::istringstream lines(readText(e.path()));
+    std::string line;
+    std::getline(lines, line);
+    std::size_t column = 0;
+    for (std::size_t at = 0; line.substr(at, line.find(',', at) - at) != "contacts"; at = line.find(',', at) + 1) {
+      ++column;
+    }
+    double most = 0.0;
+    while (std::getline(lines, line)) {
+      std::istringstream in(line);
+      std::string c;
+      for (std::size_t k = 0; k <= column; ++k) std::getline(in, c, ',');
+      most = std::max(most, std::stod(c));
+    }
+    return most;
+  }
+  return -1.0;
+}
+
+}  // namespace
+
+TEST(DemStage, InitialTemperatureGivesMaxwellianFluctuationsAboutTheStreamingProfile) {
+  TempDir work;
+  writeText(work.path() / "wf.json", shearedLattice("0.01 m2/s2").dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  fs::path first;
+  for (const auto& e : fs::recursive_directory_iterator(work.path() / "results/wf/bed")) {
+    if (e.path().extension() == ".h5" && (first.empty() || e.path().string() < first.string())) first = e.path();
+  }
+  const auto f = core::io::readParticleFrame(first);
+  ASSERT_EQ(f.step, 0);
+  ASSERT_EQ(f.size(), 500u);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  double c2 = 0.0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const Eigen::Vector3d c = f.velocity[i] - Eigen::Vector3d(100.0 * (f.position[i][1] - 0.5 * 13.78e-3), 0, 0);
+    mean += c / 500.0;
+    c2 += c.squaredNorm() / 500.0;
+  }
+  EXPECT_LT(mean.norm(), 1e-12);  // zero total momentum about the profile
+  // T = <C^2>/3 of 500 draws: relative standard error sqrt(2/1500) = 3.7 %.
+  EXPECT_NEAR(c2 / 3.0, 0.01, 0.01 * 0.15);
+  // and the lattice starts colliding
+  EXPECT_GT(mostContacts(work.path()), 0.0);
+}
+
+TEST(DemStage, AShearedDiluteLatticeWithoutInitialTemperatureNeverCollides) {
+  // Why initial_temperature exists: the bare profile keeps the lattice intact.
+  TempDir work;
+  writeText(work.path() / "wf.json", shearedLattice(nullptr).dump());
+  ASSERT_EQ(runGrainbridge(work.path(), "run wf.json").exitCode, 0);
+  EXPECT_EQ(mostContacts(work.path()), 0.0);
+}
+
+TEST(DemStage, InitialTemperatureIsRefusedForAStateReadFromAFile) {
+  TempDir work;
+  writeText(work.path() / "wf.json", bed().dump());
+  ASSERT_EQ(runGrainbridge(work.path(), "run wf.json").exitCode, 0);
+  fs::copy_file(lastFrame(work.path()), work.path() / "start.h5");
+  json config = bed();
+  config["stages"]["bed"]["params"]["initial_frame"] = "start.h5";
+  config["stages"]["bed"]["params"]["species"][0]["count"] = 0;
+  config["stages"]["bed"]["params"]["species"][1]["count"] = 0;
+  config["stages"]["bed"]["params"]["initial_temperature"] = "1e-4 m2/s2";
+  writeText(work.path() / "wf.json", config.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("/stages/bed/params/initial_temperature"), std::string::npos) << r.output;
+}

@@ -67,6 +67,24 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
   const auto centres = p.at("insertion") == "fcc_lattice"
                            ? dem::fccLatticeSites(request.lo, request.hi, request.radii.size(), largest, rng)
                            : dem::insertRandomly(request, rng);
+  // Velocity fluctuations: Maxwellian, each component of variance T, less their mean so the
+  // total momentum about the streaming profile is zero (under shear a net y momentum P_y would
+  // drive x momentum as -gammadot P_y t).
+  std::vector<Vec3> fluctuation(centres.size(), Vec3::Zero());
+  if (const double T0 = p.at("initial_temperature").get<double>(); T0 > 0.0) {
+    std::normal_distribution<double> normal(0.0, std::sqrt(T0));
+    Vec3 sum = Vec3::Zero();
+    std::size_t mobile = 0;
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+      if (setup.species[static_cast<std::size_t>(speciesOf[i])].frozen) continue;
+      fluctuation[i] = Vec3(normal(rng), normal(rng), normal(rng));
+      sum += fluctuation[i];
+      ++mobile;
+    }
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+      if (!setup.species[static_cast<std::size_t>(speciesOf[i])].frozen) fluctuation[i] -= sum / mobile;
+    }
+  }
   dem::Particles particles;
   std::int64_t id = 0;
   for (std::size_t k = 0; k < placedSpecies.size(); ++k) {
@@ -80,8 +98,8 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
     const double ux = setup.engine.shearRate == 0.0
                           ? 0.0
                           : setup.engine.shearRate * (centres[i][1] - 0.5 * (setup.engine.lo[1] + setup.engine.hi[1]));
-    particles.addOwned(id++, speciesOf[i], sp.radius, sp.mass, centres[i], Vec3(sp.frozen ? 0.0 : ux, 0, 0),
-                       Vec3::Zero(), sp.frozen);
+    const Vec3 v = sp.frozen ? Vec3(Vec3::Zero()) : Vec3(Vec3(ux, 0, 0) + fluctuation[i]);
+    particles.addOwned(id++, speciesOf[i], sp.radius, sp.mass, centres[i], v, Vec3::Zero(), sp.frozen);
   }
   return particles;
 }

@@ -204,6 +204,12 @@ DemStage::DemStage() {
                .options({"random", "fcc_lattice"})
                .doc("random non-overlapping insertion, or an fcc lattice with random vacancies (dense states "
                     "above about 0.38 solid fraction, where random insertion jams)"))
+      .add(ParamSpec::quantity("initial_temperature", Dimension::granularTemperature())
+               .defaultValue("0 m2/s2")
+               .min(0.0)
+               .doc("granular temperature T = <C^2>/3 of Maxwellian velocity fluctuations (zero total momentum) "
+                    "given to inserted particles on top of the streaming profile; an unperturbed sheared "
+                    "lattice below about 0.3 solid fraction slides without a collision"))
       .add(ParamSpec::quantityList("insert_lo", Dimension::lengthDim(), 3)
                .doc("insertion region lower corner (default: the box)"))
       .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
@@ -242,6 +248,10 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   checkContact(p.at("contact"), ptr + "/contact");
   if (p.contains("lammps_data") && p.contains("initial_frame")) {
     d.add(ptr + "/initial_frame", "give one initial state: lammps_data or initial_frame");
+  }
+  if ((p.contains("lammps_data") || p.contains("initial_frame")) && p.at("initial_temperature").get<double>() > 0.0) {
+    d.add(ptr + "/initial_temperature",
+          "applies to inserted particles; a state from lammps_data or initial_frame keeps its own velocities");
   }
   std::set<std::string> names;
   for (std::size_t i = 0; i < p.at("species").size(); ++i) {
