@@ -110,7 +110,9 @@ TEST(BrazilNutSmoke, RunsWithPreparationAndWallFrictionSweep) {
   const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
   for (const char* check :
        {"Eq. 6.11 fit to the Brazil-nut contact forces: a (", "particles in the largest network",
-        "after 1 MST pass(es)", "after 5 MST pass(es)", "extent of the largest network [d0, the smallest diameter]"}) {
+        "after 1 MST pass(es)", "after 5 MST pass(es)", "extent of the largest network [d0, the smallest diameter]",
+        // each row names the state of its run: the two wall frictions of the sweep
+        ": pack, seed 1, side-wall friction 0.5)", ": pack, seed 1, side-wall friction 0)"}) {
     EXPECT_NE(page.find(check), std::string::npos) << check;
   }
   int forcePdfRows = 0;

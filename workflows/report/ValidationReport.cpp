@@ -69,6 +69,28 @@ std::vector<Row> testRecords(const fs::path& dir) {
   return rows;
 }
 
+// "31: pack55, seed 2, side-wall friction 0.5": the run id and what its DEM upstream was, so
+// the rows of a sweep say which state they come from (the reference's Brazil-nut figures are
+// for wall friction 0.5).
+std::string runWithState(db::ProvenanceStore& provenance, std::int64_t runId) {
+  std::string label = std::to_string(runId);
+  const auto run = provenance.run(runId);
+  if (!run) return label;
+  for (const auto& key : run->upstreamKeys) {
+    const auto ups = provenance.runsOfKey(key);
+    if (ups.empty() || ups.back().stageType != "dem") continue;
+    const json p = json::parse(ups.back().paramsJson, nullptr, false);
+    if (!p.is_object()) continue;
+    label += ": " + ups.back().stage;
+    if (p.contains("seed")) label += ", seed " + p["seed"].dump();
+    for (const auto& w : p.value("walls", json::array())) {
+      if (w.value("kind", "") == "cylinder" && w.contains("mu")) label += ", side-wall friction " + number(w["mu"]);
+    }
+    break;
+  }
+  return label;
+}
+
 // Figures VALIDATION.md asks to report from workflow runs.
 std::vector<Row> databaseRows(const fs::path& path) {
   std::vector<Row> rows;
@@ -117,13 +139,14 @@ std::vector<Row> databaseRows(const fs::path& path) {
   for (const auto& f : closures.query(q)) {
     if (f.value("model", "") != "eq6.11" || f.value("source", "") != "contacts" || !f["a"].is_number()) continue;
     const std::string run = std::to_string(f["run_id"].get<std::int64_t>());
+    const std::string who = runWithState(provenance, f["run_id"].get<std::int64_t>());
     for (const auto& [name, ref, note] : {std::tuple{"a", 2.46, ""},
                                           {"beta", 1.35, ""},
                                           {"b", 0.68, "0.83 in the text, 0.68 in the Fig. 6.12 caption"}}) {
       Row row;
       row.section = "Extraction (Section 2.3, Sections 6.3.2-6.3.3)";
       row.id = std::string("db.bnp.force_pdf.") + name + ".run" + run;
-      row.check = std::string("Eq. 6.11 fit to the Brazil-nut contact forces: ") + name + " (run " + run + ", " +
+      row.check = std::string("Eq. 6.11 fit to the Brazil-nut contact forces: ") + name + " (run " + who + ", " +
                   std::to_string(f["forces"].get<std::int64_t>()) + " forces)";
       row.reference = "Section 6.3.2, Fig. 6.12";
       row.referenceValue = ref;
@@ -155,7 +178,7 @@ std::vector<Row> databaseRows(const fs::path& path) {
     row.id = "db.bnp.mst.pass" + std::to_string(pass) + ".run" + run + "." + number(s.value("time", NAN));
     row.check = "Brazil nut, T = 10: contacts of the largest TCP after " + std::to_string(pass) +
                 " MST pass(es), as a fraction of the largest force network's, at t = " + number(s.value("time", NAN)) +
-                " (run " + run + ")";
+                " (run " + runWithState(provenance, s["run_id"].get<std::int64_t>()) + ")";
     row.reference = "Table 6.2";
     row.referenceValue = kTable62LargestEdges[static_cast<std::size_t>(pass - 1)] / 11533.0;
     row.ours = s["largest_edges"].get<double>() / network->second["largest_edges"].get<double>();
@@ -168,7 +191,8 @@ std::vector<Row> databaseRows(const fs::path& path) {
   for (const auto& s : structure) {
     if (s.value("kind", "") != "force_networks" || !s["largest_particles"].is_number()) continue;
     const std::string run = std::to_string(s["run_id"].get<std::int64_t>());
-    const std::string at = " at t = " + number(s.value("time", NAN)) + " (run " + run + ")";
+    const std::string at = " at t = " + number(s.value("time", NAN)) + " (run " +
+                           runWithState(provenance, s["run_id"].get<std::int64_t>()) + ")";
     for (const auto& [column, ref, what] : {std::tuple{"networks", 80.0, "number of force networks"},
                                             {"largest_particles", 5796.0, "particles in the largest network"},
                                             {"largest_coordination", 3.98, "coordination in the largest network"},
