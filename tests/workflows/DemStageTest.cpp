@@ -41,6 +41,29 @@ fs::path lastFrame(const fs::path& work) {
   return last;
 }
 
+// One column of the run's series.csv, by name (empty if the file or the column is missing).
+std::vector<double> seriesColumn(const fs::path& work, const std::string& name) {
+  for (const auto& e : fs::recursive_directory_iterator(work / "results/wf/bed")) {
+    if (e.path().filename() != "series.csv") continue;
+    std::istringstream lines(readText(e.path()));
+    auto fields = [](const std::string& line) {
+      std::vector<std::string> out;
+      std::istringstream in(line);
+      for (std::string c; std::getline(in, c, ',');) out.push_back(c);
+      return out;
+    };
+    std::string line;
+    std::getline(lines, line);
+    const auto names = fields(line);
+    const auto column = static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    if (column == names.size()) return {};
+    std::vector<double> values;
+    while (std::getline(lines, line)) values.push_back(std::stod(fields(line).at(column)));
+    return values;
+  }
+  return {};
+}
+
 }  // namespace
 
 TEST(DemStage, StartsFromASavedFrame) {
@@ -132,33 +155,12 @@ TEST(DemStage, SeriesRecordsTheHeightOfTrackedParticles) {
   writeText(work.path() / "wf.json", config.dump());
   const auto r = runGrainbridge(work.path(), "run wf.json");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  fs::path seriesFile;
-  for (const auto& e : fs::recursive_directory_iterator(work.path() / "results/wf/bed")) {
-    if (e.path().filename() == "series.csv") seriesFile = e.path();
-  }
-  ASSERT_FALSE(seriesFile.empty());
-  std::istringstream lines(readText(seriesFile));
-  std::string header;
-  std::getline(lines, header);
-  auto columns = [](const std::string& line) {
-    std::vector<std::string> out;
-    std::istringstream in(line);
-    for (std::string c; std::getline(in, c, ',');) out.push_back(c);
-    return out;
-  };
-  const auto names = columns(header);
-  const auto column = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
-  };
-  ASSERT_LT(column("z_id30"), names.size()) << header;
-  ASSERT_LT(column("com_z_large"), names.size()) << header;
-  int rows = 0;
-  for (std::string line; std::getline(lines, line); ++rows) {
-    const auto values = columns(line);
-    // The large species is that one particle, so its centre of mass is its height.
-    EXPECT_NEAR(std::stod(values[column("z_id30")]), std::stod(values[column("com_z_large")]), 1e-12);
-  }
-  EXPECT_EQ(rows, 5);
+  const auto nut = seriesColumn(work.path(), "z_id30");
+  const auto large = seriesColumn(work.path(), "com_z_large");
+  ASSERT_EQ(nut.size(), 5u);
+  ASSERT_EQ(large.size(), 5u);
+  // The large species is that one particle, so its centre of mass is its height.
+  for (std::size_t k = 0; k < nut.size(); ++k) EXPECT_NEAR(nut[k], large[k], 1e-12);
 }
 
 namespace {
@@ -184,27 +186,10 @@ json shearedLattice(const char* initialTemperature) {
   return {{"name", "wf"}, {"stages", {{"bed", {{"type", "dem"}, {"params", p}}}}}};
 }
 
-// Largest contact count in series.csv.
+// Largest contact count in series.csv (-1 without the column).
 double mostContacts(const fs::path& work) {
-  for (const auto& e : fs::recursive_directory_iterator(work / "results/wf/bed")) {
-    if (e.path().filename() != "series.csv") continue;
-    std::istringstream lines(readText(e.path()));
-    std::string line;
-    std::getline(lines, line);
-    std::size_t column = 0;
-    for (std::size_t at = 0; line.substr(at, line.find(',', at) - at) != "contacts"; at = line.find(',', at) + 1) {
-      ++column;
-    }
-    double most = 0.0;
-    while (std::getline(lines, line)) {
-      std::istringstream in(line);
-      std::string c;
-      for (std::size_t k = 0; k <= column; ++k) std::getline(in, c, ',');
-      most = std::max(most, std::stod(c));
-    }
-    return most;
-  }
-  return -1.0;
+  const auto contacts = seriesColumn(work, "contacts");
+  return contacts.empty() ? -1.0 : *std::max_element(contacts.begin(), contacts.end());
 }
 
 }  // namespace
@@ -218,6 +203,7 @@ TEST(DemStage, InitialTemperatureGivesMaxwellianFluctuationsAboutTheStreamingPro
   for (const auto& e : fs::recursive_directory_iterator(work.path() / "results/wf/bed")) {
     if (e.path().extension() == ".h5" && (first.empty() || e.path().string() < first.string())) first = e.path();
   }
+  // T = <C^2>/3 (Eq. 3.38) about the imposed profile u_x = gammadot (y - y_mid).
   const auto f = core::io::readParticleFrame(first);
   ASSERT_EQ(f.step, 0);
   ASSERT_EQ(f.size(), 500u);

@@ -98,7 +98,8 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
     const double ux = setup.engine.shearRate == 0.0
                           ? 0.0
                           : setup.engine.shearRate * (centres[i][1] - 0.5 * (setup.engine.lo[1] + setup.engine.hi[1]));
-    const Vec3 v = sp.frozen ? Vec3(Vec3::Zero()) : Vec3(Vec3(ux, 0, 0) + fluctuation[i]);
+    Vec3 v = Vec3::Zero();
+    if (!sp.frozen) v = Vec3(ux, 0, 0) + fluctuation[i];
     particles.addOwned(id++, speciesOf[i], sp.radius, sp.mass, centres[i], v, Vec3::Zero(), sp.frozen);
   }
   return particles;

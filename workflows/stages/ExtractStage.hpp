@@ -15,7 +15,8 @@ class ExtractStage final : public StageType {
  public:
   ExtractStage();
   [[nodiscard]] std::string name() const override { return "extract"; }
-  // 2: time-averaged fields (mean/); 3: network extent also in smallest-grain diameters
+  // 2: time-averaged fields (mean/); 3: network extent also in smallest-grain diameters,
+  // velocity statistics over every frame, no failure when no frame has a contact
   [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::string summary() const override {
     return "closure point (stress, temperature, dissipation, ...) and structure statistics from particle frames";
