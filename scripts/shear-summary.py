@@ -9,6 +9,12 @@ VALIDATION.md (p* = p/(rho_p d^2 gammadot^2), tau*, T* = T/(d gammadot)^2) and t
 temperature-scaled forms a continuum engine reads (p/(rho_p theta), mu/(rho_p d sqrt(theta)),
 J d/(rho_p theta^1.5)).
 
+Then the energy balance of every state from the closure database beside the CSV
+(results/<workflow>/grainbridge.sqlite): the power the contacts' dashpots dissipate over the work
+done by the shear, tau_xy gammadot, with its block-averaging error. For frictionless grains it is
+1 in a steady state (VALIDATION.md); with friction the dashpots miss the sliding losses, which is
+why the closure's J is the shear work (extract impl_version 4).
+
 Then the states VALIDATION.md asserts (solid fraction <= 0.2, e = 0.9, frictionless) with the
 largest |deviation| against the 15 % tolerance, for lun1984.
 
@@ -18,7 +24,10 @@ Usage: scripts/shear-summary.py results/shear-closures [--model lun1984] [--valu
 import argparse
 import csv
 import glob
+import json
+import math
 import os
+import sqlite3
 import sys
 
 QUANTITIES = [
@@ -46,6 +55,35 @@ def comparison_rows(root):
                        r["quantity"], r["model"])
                 rows[key] = r  # the newest compare instance wins
     return rows
+
+
+def energy_balance(database):
+    con = sqlite3.connect(f"file:{database}?mode=ro", uri=True)
+    points = con.execute(
+        "SELECT solid_fraction, restitution, friction, shear_stress, shear_stress_err, shear_rate,"
+        " dissipation_rate, dissipation_rate_err, extra_json FROM closure_points WHERE family = 'simple_shear'"
+        " ORDER BY friction, solid_fraction, restitution").fetchall()
+    if not points:
+        return
+    print("### Energy balance: contact dashpot dissipation over the shear work tau_xy gammadot\n")
+    print("| friction | solid fraction | e | dashpots / shear work | error |")
+    print("|---|---|---|---|---|")
+    worst = {}
+    for phi, e, mu, tau, tau_err, rate, j, j_err, extra in points:
+        extra = json.loads(extra or "{}")
+        if "dissipation_rate_dashpots" in extra:  # extract impl_version >= 4
+            j, j_err = extra["dissipation_rate_dashpots"], extra["dissipation_rate_dashpots_err"]
+        work = tau * rate
+        if not work:
+            continue
+        ratio = j / work
+        error = abs(ratio) * math.hypot(tau_err / tau, j_err / j if j else 0.0)
+        worst[mu] = max(worst.get(mu, 0.0), abs(ratio - 1.0))
+        print(f"| {mu:g} | {phi:.3g} | {e:g} | {ratio:.4f} | {error:.4f} |")
+    print()
+    for mu, w in sorted(worst.items()):
+        print(f"friction {mu:g}: largest |dashpots / shear work - 1| = {100 * w:.1f} %")
+    print()
 
 
 def main():
@@ -86,6 +124,10 @@ def main():
                   f"{float(r['dem_err']):.2g} | {float(r['prediction']):.4g} | "
                   f"{100 * float(r['deviation']):+.1f} % |")
         print()
+
+    database = os.path.join(args.root, "grainbridge.sqlite")
+    if os.path.exists(database):
+        energy_balance(database)
 
     asserted = [r for k, r in rows.items() if k[0] <= 0.2 and k[1] == 0.9 and k[2] == 0 and k[3] in ASSERTED]
     if asserted and args.model == "lun1984":

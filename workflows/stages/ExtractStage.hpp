@@ -16,8 +16,9 @@ class ExtractStage final : public StageType {
   ExtractStage();
   [[nodiscard]] std::string name() const override { return "extract"; }
   // 2: time-averaged fields (mean/); 3: network extent also in smallest-grain diameters,
-  // velocity statistics over every frame, no failure when no frame has a contact
-  [[nodiscard]] int implVersion() const override { return 3; }
+  // velocity statistics over every frame, no failure when no frame has a contact; 4: under
+  // Lees-Edwards shear the dissipation rate is the shear work (frictional sliding losses included)
+  [[nodiscard]] int implVersion() const override { return 4; }
   [[nodiscard]] std::string summary() const override {
     return "closure point (stress, temperature, dissipation, ...) and structure statistics from particle frames";
   }
