@@ -56,3 +56,42 @@ TEST(ValidationReportCli, NoSourcesIsAUsageError) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.output, HasSubstr("no validation records in 'nowhere'"));
 }
+
+// A compare stage run again (here: a new title) supersedes its older run: the report lists each
+// state's figures once, from the newest run.
+TEST(ValidationReportCli, OnlyTheNewestRunOfACompareStageIsListed) {
+  TempDir work;
+  nlohmann::json wf = {
+      {"name", "kt"},
+      {"stages",
+       {{"shear",
+         {{"type", "dem"},
+          {"params",
+           {{"box_lo", {0, 0, 0}},
+            {"box_hi", {"6 mm", "6 mm", "6 mm"}},
+            {"periodic", "xyz"},
+            {"gravity", {0, 0, 0}},
+            {"shear_rate", "100 1/s"},
+            {"dt", "1e-6 s"},
+            {"duration", "0.02 s"},
+            {"frames", 4},
+            {"series_points", 4},
+            {"progress", false},
+            {"species", {{{"name", "grain"}, {"diameter", "1 mm"}, {"density", "2500 kg/m3"}, {"count", 40}}}},
+            {"contact", {{"kn", "2500 N/m"}, {"restitution", 0.9}, {"mu", 0}}}}}}},
+        {"closure", {{"type", "extract"}, {"from", "shear"}, {"params", {{"family", "simple_shear"}}}}},
+        {"kt", {{"type", "compare"}, {"from", "closure"}, {"params", {{"title", "first"}}}}}}}};
+  writeText(work.path() / "wf.json", wf.dump());
+  ASSERT_EQ(runGrainbridge(work.path(), "run wf.json -q").exitCode, 0);
+  wf["stages"]["kt"]["params"]["title"] = "second";
+  writeText(work.path() / "wf.json", wf.dump());
+  ASSERT_EQ(runGrainbridge(work.path(), "run wf.json -q").exitCode, 0);
+
+  // One state, three asserted figures (p*, tau*, T*): whether this tiny run passes 15 % or not
+  // does not matter here, only that each figure is listed once, from run 4 (the second compare).
+  const auto r = runGrainbridge(work.path(), "report validation --db results/kt/grainbridge.sqlite -o v.html");
+  EXPECT_THAT(r.output, HasSubstr("3 figures")) << r.output;
+  const std::string csv = readText(work.path() / "v.csv");
+  EXPECT_THAT(csv, HasSubstr("(workflow kt, run 4)"));
+  EXPECT_THAT(csv, ::testing::Not(HasSubstr("(workflow kt, run 3)")));
+}
