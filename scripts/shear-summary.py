@@ -62,7 +62,10 @@ def energy_balance(database):
     points = con.execute(
         "SELECT solid_fraction, restitution, friction, shear_stress, shear_stress_err, shear_rate,"
         " dissipation_rate, dissipation_rate_err, extra_json FROM closure_points WHERE family = 'simple_shear'"
-        " ORDER BY friction, solid_fraction, restitution").fetchall()
+        " ORDER BY id").fetchall()
+    # The newest point of each state: a rerun extract (new impl_version) leaves the older row.
+    newest = {(round(p[0], 3), p[1], p[2]): p for p in points}
+    points = [newest[k] for k in sorted(newest, key=lambda k: (k[2], k[0], k[1]))]
     if not points:
         return
     print("### Energy balance: contact dashpot dissipation over the shear work tau_xy gammadot\n")
