@@ -11,7 +11,7 @@
 // simple shear it equals the shear work -sigma_xy gammadot (the DEM engine checks that balance
 // to 2 %). Coulomb sliding loses energy also when the tangential spring is reset to the cap;
 // that loss is not in the dissipative part, nor is the tangential spring energy a contact
-// carries off when it opens, so with friction J from this function is a lower bound (35-55 %
+// carries off when it opens, so with friction J from this function is a lower bound (9-56 %
 // of the shear work at friction 0.5 in the shear sweep) and the extract stage takes the shear
 // work as J under Lees-Edwards shear.
 #include "core/data/ParticleFrame.hpp"

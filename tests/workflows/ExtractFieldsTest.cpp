@@ -10,6 +10,7 @@
 
 #include "core/io/FieldFrameReader.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/TinyShear.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::testing;
@@ -29,21 +30,9 @@ const core::data::NamedCellField& extra(const core::data::FieldFrame& f, const s
 
 TEST(ExtractFields, TheTimeAveragedFieldsAreTheCellMeansOfTheFrameFields) {
   TempDir work;
-  const json dem = {
-      {"type", "dem"},
-      {"params",
-       {{"box_lo", {0, 0, 0}},
-        {"box_hi", {"6 mm", "6 mm", "6 mm"}},
-        {"periodic", "xyz"},
-        {"gravity", {0, 0, 0}},
-        {"shear_rate", "100 1/s"},
-        {"dt", "1e-6 s"},
-        {"duration", "0.02 s"},
-        {"frames", 6},
-        {"series_points", 2},
-        {"progress", false},
-        {"species", {{{"name", "grain"}, {"diameter", "1 mm"}, {"density", "2500 kg/m3"}, {"count", 40}}}},
-        {"contact", {{"kn", "2500 N/m"}, {"restitution", 0.9}, {"mu", 0.0}}}}}};
+  json params = tinyShearDemParams();
+  params["frames"] = 6;
+  const json dem = {{"type", "dem"}, {"params", params}};
   const json x = {{"type", "extract"}, {"from", "shear"}, {"params", {{"grid_cells", {2, 2, 2}}}}};
   writeText(work.path() / "wf.json", json{{"name", "fields"}, {"stages", {{"shear", dem}, {"x", x}}}}.dump(2));
   const auto r = runGrainbridge(work.path(), "run wf.json -q");

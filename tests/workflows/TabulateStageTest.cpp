@@ -9,6 +9,7 @@
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/TinyShear.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::testing;
@@ -19,20 +20,10 @@ namespace {
 
 // A few hundred steps of Lees-Edwards shear of 40 grains: enough for closure points, not physics.
 json shear(json boxes, json restitutions, double mu = 0.0) {
-  return {{"type", "dem"},
-          {"params",
-           {{"box_lo", {0, 0, 0}},
-            {"periodic", "xyz"},
-            {"gravity", {0, 0, 0}},
-            {"shear_rate", "100 1/s"},
-            {"dt", "1e-6 s"},
-            {"duration", "0.02 s"},
-            {"frames", 4},
-            {"series_points", 2},
-            {"progress", false},
-            {"species", {{{"name", "grain"}, {"diameter", "1 mm"}, {"density", "2500 kg/m3"}, {"count", 40}}}},
-            {"contact", {{"kn", "2500 N/m"}, {"restitution", 0.9}, {"mu", mu}}}}},
-          {"sweep", {{"box_hi", boxes}, {"contact/restitution", restitutions}}}};
+  json params = tinyShearDemParams();
+  params.erase("box_hi");
+  params["contact"]["mu"] = mu;
+  return {{"type", "dem"}, {"params", params}, {"sweep", {{"box_hi", boxes}, {"contact/restitution", restitutions}}}};
 }
 
 const json kBig = {"6 mm", "6 mm", "6 mm"};

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/Cli.hpp"
+#include "tests/support/TinyShear.hpp"
 
 using namespace grainbridge::testing;
 using ::testing::HasSubstr;
@@ -64,21 +65,7 @@ TEST(ValidationReportCli, OnlyTheNewestRunOfACompareStageIsListed) {
   nlohmann::json wf = {
       {"name", "kt"},
       {"stages",
-       {{"shear",
-         {{"type", "dem"},
-          {"params",
-           {{"box_lo", {0, 0, 0}},
-            {"box_hi", {"6 mm", "6 mm", "6 mm"}},
-            {"periodic", "xyz"},
-            {"gravity", {0, 0, 0}},
-            {"shear_rate", "100 1/s"},
-            {"dt", "1e-6 s"},
-            {"duration", "0.02 s"},
-            {"frames", 4},
-            {"series_points", 4},
-            {"progress", false},
-            {"species", {{{"name", "grain"}, {"diameter", "1 mm"}, {"density", "2500 kg/m3"}, {"count", 40}}}},
-            {"contact", {{"kn", "2500 N/m"}, {"restitution", 0.9}, {"mu", 0}}}}}}},
+       {{"shear", {{"type", "dem"}, {"params", tinyShearDemParams()}}},
         {"closure", {{"type", "extract"}, {"from", "shear"}, {"params", {{"family", "simple_shear"}}}}},
         {"kt", {{"type", "compare"}, {"from", "closure"}, {"params", {{"title", "first"}}}}}}}};
   writeText(work.path() / "wf.json", wf.dump());

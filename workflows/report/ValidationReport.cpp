@@ -103,15 +103,12 @@ std::vector<Row> databaseRows(const fs::path& path) {
   // 15 % holds at solid fraction <= 0.2, e = 0.9, mu = 0; the other states are the result to
   // report.
   const fs::path resultsRoot = path.parent_path().parent_path();
-  std::map<std::pair<std::string, std::string>, std::int64_t> newestCompare;
-  for (const auto& run : provenance.runs("")) {
-    if (run.status != "done" || run.stageType != "compare") continue;
-    auto& newest = newestCompare[{run.workflow, run.stage}];
-    newest = std::max(newest, run.id);
+  // Runs come by id, so a later run of the same stage replaces an earlier one.
+  std::map<std::pair<std::string, std::string>, db::RunRecord> newestCompare;
+  for (auto& run : provenance.runs("")) {
+    if (run.status == "done" && run.stageType == "compare") newestCompare[{run.workflow, run.stage}] = std::move(run);
   }
-  for (const auto& run : provenance.runs("")) {
-    if (run.status != "done" || run.stageType != "compare") continue;
-    if (run.id != newestCompare.at({run.workflow, run.stage})) continue;
+  for (const auto& [stage, run] : newestCompare) {
     for (const auto& artifact : provenance.artifactsOfRun(run.id)) {
       if (fs::path(artifact.path).filename() != "comparison.csv") continue;
       std::istringstream lines(core::readFile(resultsRoot / artifact.path));

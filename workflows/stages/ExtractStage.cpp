@@ -392,7 +392,7 @@ void ExtractStage::run(StageContext& ctx) const {
   // take out of the relative motion (DissipationRate.hpp). With friction that misses the Coulomb
   // sliding loss (the tangential spring cut back to the cap) and the tangential spring energy a
   // contact carries off when it opens: at friction 0.5 in the shear sweep the dashpots took only
-  // 35-55 % of the shear work. In steady Lees-Edwards shear the work done by the shear,
+  // 9-56 % of the shear work. In steady Lees-Edwards shear the work done by the shear,
   // -sigma_xy gammadot, is the whole dissipation (energy balance, VALIDATION.md), with a smaller
   // error too, so it is J there; the dashpot figure stays in extra_json, and for frictionless
   // grains their ratio is the check that the averaged window is a steady state. Without shear
