@@ -66,9 +66,23 @@ std::string contentDigest(const fs::path& file, const std::string& kind) {
   digestArray(out, f.species);
   digestArray(out, f.radius);
   digestArray(out, f.mass);
-  for (const auto* vs : {&f.position, &f.velocity, &f.angularVelocity, &f.externalForce}) {
-    for (const auto& v : *vs) out.write(reinterpret_cast<const char*>(v.data()), 3 * sizeof(double));
-  }
+  auto digestVectors = [&out](std::initializer_list<const std::vector<Vec3>*> arrays) {
+    for (const auto* vs : arrays) {
+      for (const auto& v : *vs) out.write(reinterpret_cast<const char*>(v.data()), 3 * sizeof(double));
+    }
+  };
+  digestVectors({&f.position, &f.velocity, &f.angularVelocity, &f.externalForce});
+  // The contact lists carry the contact law's forces: a changed law must show even where the
+  // trajectory is not yet different. (A frame without contacts digests as before.)
+  const auto& c = f.contacts;
+  digestArray(out, c.i);
+  digestArray(out, c.j);
+  digestVectors({&c.branch, &c.contactPoint, &c.forceNormal, &c.forceTangential, &c.forceNormalElastic,
+                 &c.forceNormalDissipative, &c.forceTangentialElastic, &c.forceTangentialDissipative});
+  const auto& w = f.wallContacts;
+  digestArray(out, w.particle);
+  digestArray(out, w.wall);
+  digestVectors({&w.point, &w.forceNormal, &w.forceTangential});
   return core::sha256Hex(out.str());
 }
 
@@ -118,11 +132,12 @@ TEST_P(Golden, OutputUnchangedUnlessImplVersionBumped) {
     writeText(goldenFile, golden.dump(2) + "\n");
     GTEST_SKIP() << "updated " << goldenFile;
   }
-  if (golden.value("impl_versions", json::object()) != versions) {
-    GTEST_SKIP() << "impl_versions are now " << versions.dump()
-                 << " (golden: " << golden.value("impl_versions", json::object()).dump()
-                 << "): regenerate the golden case";
-  }
+  // A golden case recorded with other versions guards nothing until it is regenerated: fail, so
+  // a bump cannot silently retire it.
+  ASSERT_EQ(golden.value("impl_versions", json::object()), versions)
+      << "impl_versions are now " << versions.dump() << " (golden: "
+      << golden.value("impl_versions", json::object()).dump() << "): regenerate the golden case (see the top of "
+      << "tests/workflows/GoldenTest.cpp) and review the diff";
   EXPECT_EQ(digests, golden.at("digests"))
       << GetParam() << " output changed but its impl_version did not: bump impl_version (so cached results of the "
       << "old code are not reused) and regenerate the golden case";
