@@ -123,11 +123,11 @@ TEST(DemPreparationResume, ACrashDuringThePreparationResumesFromItsCheckpointBit
 
   // The third preparation checkpoint (step 768, inside the 5000 shaking steps) is followed by
   // a SIGKILL.
-  auto crashed = runGrainbridge(work.path(), "run wf.json", "GRAINBRIDGE_FAILPOINT=dem.preparation_checkpoint:3");
+  auto crashed = runGrainbridge(work.path(), "run wf.json", "GRAINBRIDGE_FAILPOINT=engine.checkpoint:3");
   ASSERT_NE(crashed.exitCode, 0) << crashed.output;
   auto resumed = runGrainbridge(work.path(), "run wf.json");
   ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
-  EXPECT_NE(resumed.output.find("resuming the preparation from its checkpoint at step 768"), std::string::npos)
+  EXPECT_NE(resumed.output.find("resuming the preparation (shaking) from its checkpoint at step 768"), std::string::npos)
       << resumed.output;
   EXPECT_EQ(artifactDigests(work.path()), artifactDigests(reference.path()));
 }

@@ -155,51 +155,17 @@ dem::Particles readFrameParticles(const json& p, const DemSetup& setup) {
   return particles;
 }
 
-// Section 6.2's two-step preparation: the held species fixed, the whole container shaken at
-// high frequency until the bed reaches its equilibrium height, then left to relax; then the
-// held particles are released and the run's clock starts. Not checkpointed: a stop during
-// preparation restarts it.
-void prepare(StageContext& ctx, const DemSetup& setup, dem::Simulation& sim,
-             const PreparationCheckpoints& checkpoints) {
+std::vector<driver::Phase> preparationPhases(const StageContext& ctx, const DemSetup& setup, dem::DemEngine& engine) {
   const json& prep = ctx.params().at("preparation");
   const std::string hold = prep.at("hold_species");
   std::vector<std::int64_t> held;
-  const auto& particles = sim.particles();
+  const auto& particles = engine.simulation().particles();
   for (std::size_t i = 0; i < particles.nOwned; ++i) {
     if (!hold.empty() && setup.species[static_cast<std::size_t>(particles.species[i])].name == hold) {
       held.push_back(particles.id[i]);
     }
   }
-  // The engine's step counter runs through both phases, so a state restored from a
-  // preparation checkpoint says where to continue; the held particles' infinite mass is part
-  // of that state already.
-  const std::int64_t resumedAt = sim.stepCount();
-  if (resumedAt == 0) {
-    for (auto id : held) sim.setFrozen(id, true);
-  } else {
-    spdlog::info("{}: resuming the preparation from its checkpoint at step {}", ctx.stage(), resumedAt);
-  }
   const double dt = setup.engine.dt;
-  auto lastCheckpoint = std::chrono::steady_clock::now();
-  // Runs the engine up to step `end` of the preparation.
-  auto runUntil = [&](std::int64_t end, const char* what) {
-    for (std::int64_t s = sim.stepCount() + 1; s <= end; ++s) {
-      sim.step(false);
-      if ((s & 255) != 0) continue;
-      if (ctx.stopRequested()) {
-        checkpoints.save();
-        spdlog::warn("{}: stopped during the preparation at step {}; checkpoint written, the next run resumes here",
-                     ctx.stage(), s);
-        throw StageInterrupted{};
-      }
-      if (std::chrono::steady_clock::now() - lastCheckpoint > checkpoints.every) {
-        checkpoints.save();
-        lastCheckpoint = std::chrono::steady_clock::now();
-      }
-    }
-    spdlog::info("{}: preparation: {} until step {}, kinetic energy now {:.4g} J", ctx.stage(), what, end,
-                 sim.energies().kinetic());
-  };
   dem::Vibration shake;
   shake.direction = Vec3::UnitZ();
   shake.amplitude = prep.at("shake_amplitude");
@@ -211,15 +177,37 @@ void prepare(StageContext& ctx, const DemSetup& setup, dem::Simulation& sim,
                               ? static_cast<std::int64_t>(std::llround(periods / shake.frequency / dt))
                               : static_cast<std::int64_t>(std::ceil(prep.at("shake_duration").get<double>() / dt));
   const auto relaxSteps = static_cast<std::int64_t>(std::ceil(prep.at("relax_duration").get<double>() / dt));
-  if (sim.stepCount() < shakeSteps) {
-    for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, shake);
-    runUntil(shakeSteps, "shaking");
-  }
-  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, dem::Vibration{});
-  runUntil(shakeSteps + relaxSteps, "relaxing");
-  for (auto id : held) sim.setFrozen(id, false);
-  for (std::size_t w = 0; w < setup.engine.walls.size(); ++w) sim.setWallVibration(w, setup.engine.walls[w].vibration);
-  sim.restartClock();
+  const std::string stage = ctx.stage();
+  auto setVibration = [&engine, &setup](auto vibrationOf) {
+    for (std::size_t w = 0; w < setup.engine.walls.size(); ++w)
+      engine.mutableSimulation().setWallVibration(w, vibrationOf(w));
+  };
+  auto report = [&engine, stage](const char* what) {
+    spdlog::info("{}: preparation: {} until step {}, kinetic energy now {:.4g} J", stage, what, engine.step(),
+                 engine.simulation().energies().kinetic());
+  };
+
+  driver::Phase shaking;
+  shaking.name = "preparation (shaking)";
+  shaking.steps = shakeSteps;
+  // Infinite mass is part of the engine state: a resumed preparation has it already.
+  shaking.enter = [&engine, held] {
+    for (auto id : held) engine.mutableSimulation().setFrozen(id, true);
+  };
+  shaking.configure = [setVibration, shake] { setVibration([&](std::size_t) { return shake; }); };
+  shaking.leave = [report] { report("shaking"); };
+
+  driver::Phase relaxing;
+  relaxing.name = "preparation (relaxing)";
+  relaxing.steps = relaxSteps;
+  relaxing.configure = [setVibration] { setVibration([](std::size_t) { return dem::Vibration{}; }); };
+  relaxing.leave = [&engine, &setup, held, setVibration, report] {
+    report("relaxing");
+    for (auto id : held) engine.mutableSimulation().setFrozen(id, false);
+    setVibration([&](std::size_t w) { return setup.engine.walls[w].vibration; });
+    engine.mutableSimulation().restartClock();
+  };
+  return {shaking, relaxing};
 }
 
 }  // namespace grainbridge::workflows::stages

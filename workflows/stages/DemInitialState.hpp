@@ -1,11 +1,11 @@
 #pragma once
 // The initial state of a `dem` run and its preparation: random insertion (after placed
 // particles), a LAMMPS data file or a saved frame, and Section 6.2's two-step preparation.
-#include <chrono>
-#include <functional>
 #include <nlohmann/json.hpp>
+#include <vector>
 
-#include "engines/dem/Simulation.hpp"
+#include "engines/dem/DemEngine.hpp"
+#include "workflows/driver/Phase.hpp"
 #include "workflows/stages/DemSetup.hpp"
 #include "workflows/stages/StageContext.hpp"
 
@@ -17,14 +17,10 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup);
 dem::Particles readLammpsParticles(const nlohmann::json& params, const DemSetup& setup);
 // Particles of a saved frame, species by index.
 dem::Particles readFrameParticles(const nlohmann::json& params, const DemSetup& setup);
-// How the preparation saves its progress: `save` writes a checkpoint of the engine state, at
-// most every `every` and when a stop is requested.
-struct PreparationCheckpoints {
-  std::function<void()> save;
-  std::chrono::duration<double> every{std::chrono::duration<double>::max()};
-};
-// Runs the `preparation` phases on `sim` and restarts its clock. A `sim` restored from a
-// preparation checkpoint (stepCount() > 0) continues where that checkpoint was taken.
-void prepare(StageContext& ctx, const DemSetup& setup, dem::Simulation& sim, const PreparationCheckpoints& checkpoints);
+// Section 6.2's two-step preparation as phases of the time loop before the run proper: the
+// held species fixed and the container shaken, then left to relax; at the end the held
+// particles are released and the run's clock starts. The driver checkpoints and resumes inside
+// them like in any phase.
+std::vector<driver::Phase> preparationPhases(const StageContext& ctx, const DemSetup& setup, dem::DemEngine& engine);
 
 }  // namespace grainbridge::workflows::stages

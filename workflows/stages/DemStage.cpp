@@ -4,23 +4,17 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <limits>
 #include <map>
 #include <memory>
-#include <optional>
 #include <set>
 #include <sstream>
 
 #include "core/Error.hpp"
-#include "core/FailPoint.hpp"
-#include "core/Files.hpp"
 #include "core/Log.hpp"
-#include "core/Progress.hpp"
-#include "core/io/ParticleFrameWriter.hpp"
-#include "engines/dem/Checkpoint.hpp"
-#include "engines/dem/DomainStress.hpp"
+#include "engines/dem/DemEngine.hpp"
+#include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/DemInitialState.hpp"
+#include "workflows/stages/DemSeriesColumns.hpp"
 #include "workflows/stages/DemSetup.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -368,23 +362,7 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
 
 namespace {
 
-std::string csvHeader(const DemSetup& s) {
-  std::string h = "time,step,ke_translational,ke_rotational,contacts,coordination";
-  for (const char* c : {"xx", "yy", "zz", "xy", "xz", "yz"}) h += std::string(",stress_") + c;
-  for (std::size_t w = 0; w < s.engine.walls.size(); ++w) {
-    for (const char* c : {"x", "y", "z"}) h += ",wall" + std::to_string(w) + "_f" + c;
-  }
-  for (const auto& sp : s.species) h += ",com_z_" + sp.name;
-  for (const auto& sp : s.species) h += ",top_z_" + sp.name;  // highest z + a: the free surface
-  for (const auto id : s.trackedIds) h += ",z_id" + std::to_string(id);
-  return h + "\n";
-}
-
-}  // namespace
-
-void DemStage::run(StageContext& ctx) const {
-  const json& p = ctx.params();
-  const DemSetup setup = makeDemSetup(p);
+void logContactTimes(const StageContext& ctx, const DemSetup& setup) {
   for (const auto& t : setup.timings) {
     spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {:.4g} s, largest safe dt (t_c/10) = {:.4g} s", ctx.stage(), t.pair,
                  t.restitution, t.contactTime, t.contactTime / 10.0);
@@ -393,176 +371,79 @@ void DemStage::run(StageContext& ctx) const {
                    setup.engine.dt, t.pair);
     }
   }
+}
 
-  const std::filesystem::path checkpointFile = ctx.checkpointDir() / "engine.h5";
-  const std::filesystem::path checkpointSeries = ctx.checkpointDir() / "series.csv";
-  // A checkpoint taken during the preparation lives in its own file: its step counter counts
-  // preparation steps, and the run proper has not started.
-  const std::filesystem::path preparationCheckpointFile = ctx.checkpointDir() / "preparation.h5";
-  const auto checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
-  std::optional<dem::Simulation> simulation;
-  std::ostringstream series;
-  series.precision(17);
-  if (std::filesystem::exists(checkpointFile)) {
-    // Resume: the state continues bit for bit, and the series rows written so far come back.
-    simulation.emplace(setup.engine, dem::readCheckpoint(checkpointFile, ctx.key()));
-    series << core::readFile(checkpointSeries);
-    spdlog::info("{}: resuming from the checkpoint at step {}", ctx.stage(), simulation->stepCount());
-  } else {
-    if (std::filesystem::exists(preparationCheckpointFile)) {
-      simulation.emplace(setup.engine, dem::readCheckpoint(preparationCheckpointFile, ctx.key()));
-    } else {
-      const bool fromFile = p.contains("lammps_data") || p.contains("initial_frame");
-      simulation.emplace(setup.engine, p.contains("lammps_data")     ? readLammpsParticles(p, setup)
-                                       : p.contains("initial_frame") ? readFrameParticles(p, setup)
-                                                                     : insertSpecies(ctx, setup));
-      if (fromFile) {
-        // A state from a file may overlap: refuse it before the first step rather than let the
-        // springs explode.
-        const auto worst = simulation->largestOverlap();
-        if (worst.relative > p.at("max_initial_overlap").get<double>()) {
-          throw Error("/stages/" + ctx.stage() + "/params/" +
-                      (p.contains("lammps_data") ? "lammps_data" : "initial_frame") + ": particles " +
-                      std::to_string(worst.i) + " and " + std::to_string(worst.j) + " overlap by " +
-                      std::to_string(worst.relative) + " of the smaller diameter, above max_initial_overlap = " +
-                      std::to_string(p.at("max_initial_overlap").get<double>()));
-        }
-      }
-    }
-    if (p.contains("preparation")) {
-      PreparationCheckpoints checkpoints;
-      checkpoints.every = checkpointEvery;
-      checkpoints.save = [&] {
-        std::filesystem::create_directories(ctx.checkpointDir());
-        dem::writeCheckpoint(preparationCheckpointFile, simulation->captureState(), ctx.key());
-        core::failPoint("dem.preparation_checkpoint");
-      };
-      prepare(ctx, setup, *simulation, checkpoints);
-    }
-    series << csvHeader(setup);
+// The initial particles of a fresh run: inserted, or read from a file and refused if they
+// overlap (before the first step, rather than let the springs explode).
+std::unique_ptr<dem::DemEngine> freshEngine(StageContext& ctx, const DemSetup& setup) {
+  const json& p = ctx.params();
+  const core::io::ArtifactStamp stamp{ctx.key()};
+  if (!p.contains("lammps_data") && !p.contains("initial_frame")) {
+    return std::make_unique<dem::DemEngine>(setup.engine, insertSpecies(ctx, setup), ctx.outputDir(), stamp);
   }
-  dem::Simulation& sim = *simulation;
+  const char* source = p.contains("lammps_data") ? "lammps_data" : "initial_frame";
+  auto engine = std::make_unique<dem::DemEngine>(
+      setup.engine, p.contains("lammps_data") ? readLammpsParticles(p, setup) : readFrameParticles(p, setup),
+      ctx.outputDir(), stamp);
+  const auto worst = engine->simulation().largestOverlap();
+  if (worst.relative > p.at("max_initial_overlap").get<double>()) {
+    throw Error("/stages/" + ctx.stage() + "/params/" + source + ": particles " + std::to_string(worst.i) + " and " +
+                std::to_string(worst.j) + " overlap by " + std::to_string(worst.relative) +
+                " of the smaller diameter, above max_initial_overlap = " +
+                std::to_string(p.at("max_initial_overlap").get<double>()));
+  }
+  return engine;
+}
+
+// A state from a file brings its own ids: the tracked ones must be among them.
+void checkTrackedIds(const StageContext& ctx, const DemSetup& setup, const dem::Simulation& sim) {
   for (std::size_t k = 0; k < setup.trackedIds.size(); ++k) {
-    const auto& ids = sim.particles().id;
-    if (std::find(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(sim.particles().nOwned),
-                  setup.trackedIds[k]) == ids.begin() + static_cast<std::ptrdiff_t>(sim.particles().nOwned)) {
+    if (!sim.indexOf(setup.trackedIds[k])) {
       throw Error("/stages/" + ctx.stage() + "/params/track_ids/" + std::to_string(k) + ": no particle with id " +
                   std::to_string(setup.trackedIds[k]) + " in the initial state");
     }
   }
-  const auto totalSteps = static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / setup.engine.dt - 1e-9));
-  const auto frames = p.at("frames").get<std::int64_t>();
-  const auto seriesPoints = p.at("series_points").get<std::int64_t>();
-  // True on `count` evenly spaced steps of 1..totalSteps (the last one included).
-  auto isMultiple = [totalSteps](std::int64_t step, std::int64_t count) {
-    return count > 0 && step * count / totalSteps != (step - 1) * count / totalSteps;
-  };
+}
 
-  core::io::ParticleFrameWriter writer(ctx.outputDir(), core::io::ArtifactStamp{ctx.key()});
-  const Vec3 box = setup.engine.hi - setup.engine.lo;
-  const double volume = box.prod();
+}  // namespace
+
+void DemStage::run(StageContext& ctx) const {
+  const json& p = ctx.params();
+  const DemSetup setup = makeDemSetup(p);
+  logContactTimes(ctx, setup);
+
+  driver::TimeLoopOptions options;
+  options.frames = p.at("frames");
+  options.seriesRows = p.at("series_points");
+  options.checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
+  options.progress = p.at("progress");
+  driver::TimeLoopDriver loop(ctx, options);
+  auto engine = loop.start<dem::DemEngine>([&] { return freshEngine(ctx, setup); },
+                                           [&](const std::filesystem::path& state) {
+                                             return dem::DemEngine::restore(setup.engine, state, ctx.key(),
+                                                                            ctx.outputDir(),
+                                                                            core::io::ArtifactStamp{ctx.key()});
+                                           });
+  checkTrackedIds(ctx, setup, engine->simulation());
+  if (p.contains("preparation")) {
+    for (auto& phase : preparationPhases(ctx, setup, *engine)) loop.addPhase(std::move(phase));
+  }
+  const auto steps = static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / setup.engine.dt - 1e-9));
+  driver::Phase run;
+  run.name = "run";
+  run.steps = steps;
+  run.output = true;
+  loop.addPhase(std::move(run));
+  for (auto& columns : demSeriesColumns(*engine, setup)) loop.addColumns(std::move(columns));
+  loop.run(*engine);
+
+  const auto& sim = engine->simulation();
+  const auto e = sim.energies();
+  const auto& last = engine->frame();
   std::int64_t mobile = 0;
   for (const auto& s : setup.species) mobile += s.frozen ? 0 : s.count;
-
-  auto writeSeriesRow = [&](const core::data::ParticleFrame& f) {
-    const auto e = sim.energies();
-    const Mat3 sigma = dem::wholeDomainStress(f, volume);
-    series << sim.time() << ',' << sim.stepCount() << ',' << e.translational << ',' << e.rotational << ','
-           << f.contacts.size() << ','
-           << (mobile > 0 ? 2.0 * static_cast<double>(f.contacts.size()) / static_cast<double>(mobile) : 0.0);
-    for (auto [a, b] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) series << ',' << sigma(a, b);
-    for (const auto& fw : sim.wallForces()) series << ',' << fw[0] << ',' << fw[1] << ',' << fw[2];
-    std::vector<double> z(setup.species.size(), 0.0);
-    std::vector<double> m(setup.species.size(), 0.0);
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      z[static_cast<std::size_t>(f.species[i])] += f.mass[i] * f.position[i][2];
-      m[static_cast<std::size_t>(f.species[i])] += f.mass[i];
-    }
-    for (std::size_t s = 0; s < z.size(); ++s) series << ',' << (m[s] > 0 ? z[s] / m[s] : 0.0);
-    std::vector<double> top(setup.species.size(), -std::numeric_limits<double>::infinity());
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      auto& t = top[static_cast<std::size_t>(f.species[i])];
-      t = std::max(t, f.position[i][2] + f.radius[i]);
-    }
-    for (double t : top) series << ',' << t;
-    for (const auto id : setup.trackedIds) {
-      const auto it = std::find(f.id.begin(), f.id.end(), id);
-      series << ',' << f.position[static_cast<std::size_t>(it - f.id.begin())][2];
-    }
-    series << '\n';
-  };
-
-  auto checkpoint = [&] {
-    std::filesystem::create_directories(ctx.checkpointDir());
-    core::writeFileAtomically(checkpointSeries, series.str());
-    dem::writeCheckpoint(checkpointFile, sim.captureState(), ctx.key());
-  };
-  if (sim.stepCount() == 0) writer.write(sim.frame());  // the initial state, with its first contacts
-  std::optional<core::Progress> progress;
-  if (p.at("progress").get<bool>()) {
-    progress.emplace(ctx.stage(), static_cast<double>(totalSteps), "steps", 10.0, static_cast<double>(sim.stepCount()));
-  }
-  auto lastCheckpoint = std::chrono::steady_clock::now();
-  const std::int64_t firstStep = sim.stepCount() + 1;
-  const auto loopStart = std::chrono::steady_clock::now();
-  for (std::int64_t s = firstStep; s <= totalSteps; ++s) {
-    const bool frameStep = isMultiple(s, frames);
-    const bool seriesStep = isMultiple(s, seriesPoints) || s == totalSteps;
-    try {
-      sim.step(frameStep || seriesStep);
-    } catch (const Error& e) {
-      // A particle left the domain or went non-finite: keep the last good state on disk next to
-      // the periodic frames (for a non-finite state, the last periodic frame is the good one).
-      bool finite = true;
-      for (std::size_t i = 0; i < sim.particles().nOwned && finite; ++i) {
-        finite = sim.particles().x[i].allFinite() && sim.particles().v[i].allFinite();
-      }
-      if (finite) writer.write(sim.frame());
-      throw Error(std::string(e.what()) + "; frames up to step " + std::to_string(finite ? sim.stepCount() : s - 1) +
-                  " are kept in " + ctx.outputDir().string());
-    }
-    if (frameStep || seriesStep) {
-      const auto f = sim.frame();
-      if (seriesStep) writeSeriesRow(f);
-      if (frameStep) writer.write(f);
-    }
-    if ((s & 255) == 0) {
-      if (ctx.stopRequested()) {
-        checkpoint();  // a batch system's SIGTERM: save, then stop cleanly
-        spdlog::warn("{}: stopped at step {} of {}; checkpoint written, the next run resumes here", ctx.stage(), s,
-                     totalSteps);
-        throw StageInterrupted{};
-      }
-      if (std::chrono::steady_clock::now() - lastCheckpoint > checkpointEvery) {
-        checkpoint();
-        lastCheckpoint = std::chrono::steady_clock::now();
-      }
-      if (progress) progress->update(static_cast<double>(s));
-    }
-  }
-  if (progress) progress->finish();
-  {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
-    const double steps = static_cast<double>(totalSteps - firstStep + 1);
-    spdlog::info(
-        "{}: {} steps of {} particles in {:.3f} s: {:.4g} particle-steps/s, {:.3f} contacts per particle (2 x particle "
-        "pairs / N, walls not counted)",
-        ctx.stage(), totalSteps - firstStep + 1, sim.particles().nOwned, seconds,
-        steps * static_cast<double>(sim.particles().nOwned) / seconds,
-        2.0 * static_cast<double>(sim.contactCount()) / static_cast<double>(sim.particles().nOwned));
-  }
-
-  core::writeFileAtomically(ctx.outputDir() / "series.csv", series.str());
-  std::filesystem::remove_all(ctx.checkpointDir());  // complete: the checkpoint has served
-  for (const auto& f : core::io::listParticleFrames(ctx.outputDir())) {
-    ctx.addArtifact(f.lexically_relative(ctx.outputDir()).string(), "particle_frame");
-  }
-  ctx.addArtifact("particles.xmf", "xdmf");
-  ctx.addArtifact("series.csv", "series_csv");
-  const auto e = sim.energies();
-  const auto last = sim.frame();
   ctx.setSummary({{"particles", static_cast<std::int64_t>(sim.particles().nOwned)},
-                  {"steps", totalSteps},
+                  {"steps", steps},
                   {"final_ke_translational", e.translational},
                   {"final_ke_rotational", e.rotational},
                   {"final_contacts", last.contacts.size()},

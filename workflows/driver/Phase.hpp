@@ -1,0 +1,27 @@
+#pragma once
+// One stretch of an engine stage's time loop. Most stages have one phase, the run proper, which
+// writes frames and series rows; a stage may put phases without output before it (the two-step
+// preparation of Section 6.2: shaking, then relaxing). The driver checkpoints and resumes inside
+// any phase; the hooks say what a phase changes:
+//   enter      once, when the phase starts: changes the engine state, which checkpoints carry
+//              (hold particles in place);
+//   configure  when the phase starts and again when a run resumes inside it: settings outside
+//              the saved state (a wall's vibration);
+//   leave      once, when the phase has run all its steps (release held particles, restart the
+//              clock for the next phase).
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace grainbridge::workflows::driver {
+
+struct Phase {
+  std::string name;  // "run", "preparation (shaking)": for logs and progress
+  std::int64_t steps = 0;
+  bool output = false;  // frames (the initial one included), series rows, throughput log
+  std::function<void()> enter;
+  std::function<void()> configure;
+  std::function<void()> leave;
+};
+
+}  // namespace grainbridge::workflows::driver

@@ -1,0 +1,143 @@
+#include "workflows/driver/TimeLoopDriver.hpp"
+
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "core/FailPoint.hpp"
+#include "core/Files.hpp"
+#include "core/Log.hpp"
+#include "core/Progress.hpp"
+#include "core/io/FieldFrameReader.hpp"
+#include "core/io/ParticleFrameReader.hpp"
+
+namespace grainbridge::workflows::driver {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// True on `count` evenly spaced steps of 1..total, the last one included.
+bool onSchedule(std::int64_t step, std::int64_t count, std::int64_t total) {
+  return count > 0 && step * count / total != (step - 1) * count / total;
+}
+
+// Stops, checkpoints and progress are looked at every this many steps: often enough for a
+// prompt stop, rarely enough to cost nothing next to a step.
+constexpr std::int64_t kPollMask = 255;
+
+}  // namespace
+
+TimeLoopDriver::TimeLoopDriver(stages::StageContext& ctx, TimeLoopOptions options)
+    : ctx_(ctx), options_(options), checkpoints_(ctx.checkpointDir(), ctx.key()) {}
+
+std::string TimeLoopDriver::header() const {
+  std::string h = "time,step";
+  for (const auto& c : columns_) {
+    for (const auto& name : c->names()) h += "," + name;
+  }
+  return h + "\n";
+}
+
+void TimeLoopDriver::run(core::engine::SteppedEngine& engine) {
+  GB_ASSERT(!phases_.empty(), "an engine stage needs at least one phase");
+  std::size_t firstPhase = 0;
+  std::int64_t firstStep = 0;
+  if (resumeFrom_) {
+    firstPhase = resumeFrom_->phase;
+    firstStep = resumeFrom_->phaseStep;
+    series_ = resumeFrom_->series;
+    GB_ASSERT(firstPhase < phases_.size(), "checkpoint of a phase this stage does not have");
+    const Phase& phase = phases_[firstPhase];
+    if (phase.output)
+      spdlog::info("{}: resuming from the checkpoint at step {}", ctx_.stage(), engine.step());
+    else
+      spdlog::info("{}: resuming the {} from its checkpoint at step {}", ctx_.stage(), phase.name, engine.step());
+  } else {
+    series_ = header();
+  }
+  lastCheckpoint_ = std::chrono::steady_clock::now();
+  for (std::size_t k = firstPhase; k < phases_.size(); ++k) runPhase(engine, k, k == firstPhase ? firstStep : 0);
+
+  core::writeFileAtomically(ctx_.outputDir() / "series.csv", series_);
+  checkpoints_.clear();
+  registerArtifacts();
+}
+
+void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t index, std::int64_t firstStep) {
+  const Phase& phase = phases_[index];
+  if (firstStep == 0 && phase.enter) phase.enter();
+  if (phase.configure) phase.configure();
+  if (phase.output && firstStep == 0) engine.writeFrames();  // the initial state
+  std::optional<core::Progress> progress;
+  if (options_.progress) {
+    progress.emplace(phase.output ? ctx_.stage() : ctx_.stage() + " " + phase.name, static_cast<double>(phase.steps),
+                     "steps", 10.0, static_cast<double>(firstStep));
+  }
+  const auto loopStart = std::chrono::steady_clock::now();
+  for (std::int64_t s = firstStep + 1; s <= phase.steps; ++s) {
+    const bool frameStep = phase.output && onSchedule(s, options_.frames, phase.steps);
+    const bool seriesStep = phase.output && (onSchedule(s, options_.seriesRows, phase.steps) || s == phase.steps);
+    try {
+      engine.advance(frameStep || seriesStep);
+    } catch (const Error& e) {
+      // Keep the last good state on disk next to the periodic frames (for an unusable state, the
+      // last periodic frame is the good one).
+      const bool kept = engine.writeFramesIfUsable();
+      throw Error(std::string(e.what()) + "; frames up to step " + std::to_string(kept ? engine.step() : s - 1) +
+                  " are kept in " + ctx_.outputDir().string());
+    }
+    if (seriesStep) sampleSeries(engine);
+    if (frameStep) engine.writeFrames();
+    if ((s & kPollMask) == 0) {
+      if (ctx_.stopRequested()) {
+        checkpoint(engine, index, s);  // a batch system's SIGTERM: save, then stop cleanly
+        spdlog::warn("{}: stopped at step {} of {}{}; checkpoint written, the next run resumes here", ctx_.stage(), s,
+                     phase.steps, phase.output ? "" : " of the " + phase.name);
+        throw stages::StageInterrupted{};
+      }
+      if (std::chrono::steady_clock::now() - lastCheckpoint_ > options_.checkpointEvery) {
+        checkpoint(engine, index, s);
+        lastCheckpoint_ = std::chrono::steady_clock::now();
+      }
+      if (progress) progress->update(static_cast<double>(s));
+    }
+  }
+  if (progress) progress->finish();
+  if (phase.output) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
+    const auto steps = phase.steps - firstStep;
+    const double rate = static_cast<double>(steps) * static_cast<double>(engine.workItems()) / seconds;
+    const std::string note = engine.throughputNote();
+    spdlog::info("{}: {} steps of {} {}s in {:.3f} s: {:.4g} {}-steps/s{}", ctx_.stage(), steps, engine.workItems(),
+                 engine.workItem(), seconds, rate, engine.workItem(), note.empty() ? "" : ", " + note);
+  }
+  if (phase.leave) phase.leave();
+}
+
+void TimeLoopDriver::sampleSeries(const core::engine::SteppedEngine& engine) {
+  std::ostringstream row;
+  row.precision(17);
+  row << engine.time() << ',' << engine.step();
+  SeriesRow values(row);
+  for (const auto& c : columns_) c->sample(values);
+  row << '\n';
+  series_ += row.str();
+}
+
+void TimeLoopDriver::checkpoint(const core::engine::SteppedEngine& engine, std::size_t phase, std::int64_t phaseStep) {
+  checkpoints_.save(engine, phase, phaseStep, series_);
+  core::failPoint("engine.checkpoint");
+}
+
+void TimeLoopDriver::registerArtifacts() {
+  const auto& dir = ctx_.outputDir();
+  const auto particleFrames = core::io::listParticleFrames(dir);
+  for (const auto& f : particleFrames) ctx_.addArtifact(f.lexically_relative(dir).string(), "particle_frame");
+  if (!particleFrames.empty()) ctx_.addArtifact("particles.xmf", "xdmf");
+  const auto fieldFrames = core::io::listFieldFrames(dir);
+  for (const auto& f : fieldFrames) ctx_.addArtifact(f.lexically_relative(dir).string(), "field_frame");
+  if (!fieldFrames.empty()) ctx_.addArtifact("fields.xmf", "xdmf");
+  ctx_.addArtifact("series.csv", "series_csv");
+}
+
+}  // namespace grainbridge::workflows::driver

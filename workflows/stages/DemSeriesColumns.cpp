@@ -1,0 +1,151 @@
+#include "workflows/stages/DemSeriesColumns.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/Error.hpp"
+#include "engines/dem/DomainStress.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using driver::SeriesColumns;
+using driver::SeriesRow;
+
+namespace {
+
+class EnergyColumns final : public SeriesColumns {
+ public:
+  explicit EnergyColumns(const dem::DemEngine& engine) : engine_(engine) {}
+  [[nodiscard]] std::vector<std::string> names() const override { return {"ke_translational", "ke_rotational"}; }
+  void sample(SeriesRow& row) override {
+    const auto e = engine_.simulation().energies();
+    row.add(e.translational).add(e.rotational);
+  }
+
+ private:
+  const dem::DemEngine& engine_;
+};
+
+// Coordination counts the mobile grains only: a frozen rough base is not part of the packing.
+class ContactColumns final : public SeriesColumns {
+ public:
+  ContactColumns(dem::DemEngine& engine, std::int64_t mobile) : engine_(engine), mobile_(mobile) {}
+  [[nodiscard]] std::vector<std::string> names() const override { return {"contacts", "coordination"}; }
+  void sample(SeriesRow& row) override {
+    const auto contacts = engine_.frame().contacts.size();
+    row.add(contacts).add(mobile_ > 0 ? 2.0 * static_cast<double>(contacts) / static_cast<double>(mobile_) : 0.0);
+  }
+
+ private:
+  dem::DemEngine& engine_;
+  std::int64_t mobile_;
+};
+
+// Eq. 2.3 over the whole box.
+class StressColumns final : public SeriesColumns {
+ public:
+  StressColumns(dem::DemEngine& engine, double volume) : engine_(engine), volume_(volume) {}
+  [[nodiscard]] std::vector<std::string> names() const override {
+    return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_xz", "stress_yz"};
+  }
+  void sample(SeriesRow& row) override {
+    const Mat3 sigma = dem::wholeDomainStress(engine_.frame(), volume_);
+    for (auto [a, b] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) row.add(sigma(a, b));
+  }
+
+ private:
+  dem::DemEngine& engine_;
+  double volume_;
+};
+
+class WallForceColumns final : public SeriesColumns {
+ public:
+  explicit WallForceColumns(const dem::DemEngine& engine) : engine_(engine) {}
+  [[nodiscard]] std::vector<std::string> names() const override {
+    std::vector<std::string> out;
+    for (std::size_t w = 0; w < engine_.simulation().setup().walls.size(); ++w) {
+      for (const char* c : {"x", "y", "z"}) out.push_back("wall" + std::to_string(w) + "_f" + c);
+    }
+    return out;
+  }
+  void sample(SeriesRow& row) override {
+    for (const auto& f : engine_.simulation().wallForces()) row.add(f[0]).add(f[1]).add(f[2]);
+  }
+
+ private:
+  const dem::DemEngine& engine_;
+};
+
+// Per species: the centre of mass height, then the highest top (z + a), the free surface.
+class SpeciesHeightColumns final : public SeriesColumns {
+ public:
+  SpeciesHeightColumns(dem::DemEngine& engine, std::vector<std::string> species)
+      : engine_(engine), species_(std::move(species)) {}
+  [[nodiscard]] std::vector<std::string> names() const override {
+    std::vector<std::string> out;
+    for (const auto& s : species_) out.push_back("com_z_" + s);
+    for (const auto& s : species_) out.push_back("top_z_" + s);
+    return out;
+  }
+  void sample(SeriesRow& row) override {
+    const auto& f = engine_.frame();
+    std::vector<double> z(species_.size(), 0.0);
+    std::vector<double> m(species_.size(), 0.0);
+    std::vector<double> top(species_.size(), -std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const auto s = static_cast<std::size_t>(f.species[i]);
+      z[s] += f.mass[i] * f.position[i][2];
+      m[s] += f.mass[i];
+      top[s] = std::max(top[s], f.position[i][2] + f.radius[i]);
+    }
+    for (std::size_t s = 0; s < z.size(); ++s) row.add(m[s] > 0 ? z[s] / m[s] : 0.0);
+    for (double t : top) row.add(t);
+  }
+
+ private:
+  dem::DemEngine& engine_;
+  std::vector<std::string> species_;
+};
+
+class TrackedHeightColumns final : public SeriesColumns {
+ public:
+  TrackedHeightColumns(dem::DemEngine& engine, std::vector<std::int64_t> ids) : engine_(engine), ids_(std::move(ids)) {}
+  [[nodiscard]] std::vector<std::string> names() const override {
+    std::vector<std::string> out;
+    for (const auto id : ids_) out.push_back("z_id" + std::to_string(id));
+    return out;
+  }
+  void sample(SeriesRow& row) override {
+    const auto& f = engine_.frame();
+    for (const auto id : ids_) {
+      const auto it = std::find(f.id.begin(), f.id.end(), id);
+      GB_ASSERT(it != f.id.end(), "tracked particle " + std::to_string(id) + " is checked at the start of the run");
+      row.add(f.position[static_cast<std::size_t>(it - f.id.begin())][2]);
+    }
+  }
+
+ private:
+  dem::DemEngine& engine_;
+  std::vector<std::int64_t> ids_;
+};
+
+}  // namespace
+
+std::vector<std::unique_ptr<SeriesColumns>> demSeriesColumns(dem::DemEngine& engine, const DemSetup& setup) {
+  std::int64_t mobile = 0;
+  std::vector<std::string> species;
+  for (const auto& s : setup.species) {
+    mobile += s.frozen ? 0 : s.count;
+    species.push_back(s.name);
+  }
+  std::vector<std::unique_ptr<SeriesColumns>> out;
+  out.push_back(std::make_unique<EnergyColumns>(engine));
+  out.push_back(std::make_unique<ContactColumns>(engine, mobile));
+  out.push_back(std::make_unique<StressColumns>(engine, (setup.engine.hi - setup.engine.lo).prod()));
+  out.push_back(std::make_unique<WallForceColumns>(engine));
+  out.push_back(std::make_unique<SpeciesHeightColumns>(engine, std::move(species)));
+  out.push_back(std::make_unique<TrackedHeightColumns>(engine, setup.trackedIds));
+  return out;
+}
+
+}  // namespace grainbridge::workflows::stages
