@@ -39,6 +39,12 @@ std::vector<PairHistory> NeighborList::exportHistory() const {
   return out;
 }
 
+double NeighborList::gridCells(const Vec3& lo, const Vec3& hi, double cutoff) {
+  double cells = 1.0;
+  for (int a = 0; a < 3; ++a) cells *= std::max(1.0, std::floor((hi[a] - lo[a] + 2.0 * cutoff) / cutoff));
+  return cells;
+}
+
 void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, double cutoff, double skin,
                          const std::vector<PairHistory>* seed) {
   // 1. Remember the history of pairs in contact, keyed by ids in (low, high) orientation.
@@ -48,6 +54,7 @@ void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, dou
   // 2. Counting sort of all particles (owned and ghost) into cells of side >= cutoff.
   const Vec3 gridLo = lo - Vec3::Constant(cutoff);
   const Vec3 extent = (hi - lo) + Vec3::Constant(2.0 * cutoff);
+  GB_ASSERT(gridCells(lo, hi, cutoff) <= kMaxGridCells, "setups with larger grids are refused at set-up");
   Vec3i cells;
   for (int a = 0; a < 3; ++a) cells[a] = std::max(1, static_cast<int>(std::floor(extent[a] / cutoff)));
   const Vec3 cellSize = extent.cwiseQuotient(cells.cast<double>());

@@ -37,6 +37,14 @@ class NeighborList {
   // The history of every pair currently in contact (for checkpoints).
   [[nodiscard]] std::vector<PairHistory> exportHistory() const;
 
+  // Cells of the grid build() bins into over [lo - cutoff, hi + cutoff]: floor(extent / cutoff)
+  // per axis, at least 1, as a double so that an absurd request is a number, not an overflow.
+  [[nodiscard]] static double gridCells(const Vec3& lo, const Vec3& hi, double cutoff);
+  // The most cells one list may take: 2^28, 1 GiB of 4-byte cell starts. A box of 10^4 grain
+  // diameters per side would need about 5e11: that is a mistaken unit or box, refused at set-up
+  // (SimulationSetup::problems) with the parameter named, not a length_error mid-run.
+  static constexpr double kMaxGridCells = 268435456.0;
+
   [[nodiscard]] std::size_t pairCount() const { return partner_.size(); }
   [[nodiscard]] std::size_t begin(std::size_t i) const { return offset_[i]; }
   [[nodiscard]] std::size_t end(std::size_t i) const { return offset_[i + 1]; }

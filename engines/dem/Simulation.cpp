@@ -67,30 +67,18 @@ EngineState Simulation::captureState() const {
 }
 
 void Simulation::validateSetup() {
-  if (!(setup_.dt > 0)) throw Error("DEM: time step must be positive");
-  if (setup_.skin < 0) throw Error("DEM: skin must be >= 0");
-  if (setup_.species < 1 || setup_.pairMaterial.size() != static_cast<std::size_t>(setup_.species * setup_.species))
-    throw Error("DEM: need one material per species pair");
-  for (const auto& w : setup_.walls) {
-    if (w.material.size() != static_cast<std::size_t>(setup_.species))
-      throw Error("DEM: each wall needs a material per species");
-  }
   GB_ASSERT(p_.size() == p_.nOwned, "the engine creates ghosts itself");
   double maxRadius = 0.0;
   for (std::size_t i = 0; i < p_.nOwned; ++i) maxRadius = std::max(maxRadius, p_.radius[i]);
-  cutoff_ = 2.0 * maxRadius + setup_.skin;
-  for (int a = 0; a < 3; ++a) {
-    // One image per neighbour: a periodic length must exceed twice the cutoff.
-    if (setup_.periodic[static_cast<std::size_t>(a)] && setup_.hi[a] - setup_.lo[a] < 2.0 * cutoff_) {
-      throw Error("DEM: the periodic box is " + std::to_string(setup_.hi[a] - setup_.lo[a]) + " m along axis " +
-                  std::to_string(a) + ", less than twice the interaction range " + std::to_string(cutoff_) +
-                  " m (largest diameter + skin)");
-    }
+  // The same rules the dem stage reports at load (with the particles' own largest diameter
+  // here: a state read from a file may hold grains the config did not declare).
+  const auto problems = setup_.problems(2.0 * maxRadius);
+  if (!problems.empty()) {
+    std::string message = "DEM setup";
+    for (const auto& p : problems) message += (&p == &problems.front() ? ": " : "; ") + p.pointer + ": " + p.message;
+    throw Error(message);
   }
-  if (setup_.planarAxis < -1 || setup_.planarAxis > 2) throw Error("DEM: planar axis must be -1, 0, 1 or 2");
-  if (setup_.shearRate != 0.0 && !(setup_.periodic[0] && setup_.periodic[1])) {
-    throw Error("DEM: Lees-Edwards shear needs a box periodic in x (flow) and y (gradient)");
-  }
+  cutoff_ = interactionRange(2.0 * maxRadius, setup_.skin);
   wallForce_.assign(setup_.walls.size(), Vec3::Zero());
 }
 

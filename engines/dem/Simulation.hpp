@@ -10,38 +10,11 @@
 
 #include "core/Types.hpp"
 #include "core/data/ParticleFrame.hpp"
-#include "engines/dem/Material.hpp"
 #include "engines/dem/NeighborList.hpp"
 #include "engines/dem/Particles.hpp"
-#include "engines/dem/Walls.hpp"
+#include "engines/dem/SimulationSetup.hpp"
 
 namespace grainbridge::dem {
-
-struct SimulationSetup {
-  Vec3 lo = Vec3::Zero();
-  Vec3 hi = Vec3::Ones();
-  std::array<bool, 3> periodic{false, false, false};
-  Vec3 gravity = Vec3::Zero();
-  double backgroundDamping = 0.0;  // b of Eq. 6.7 [kg/s]
-  // Lees-Edwards simple shear when non-zero: streaming velocity u_x = shearRate (y - y_mid); the
-  // periodic image above (y + L_y) is displaced by the offset shearRate L_y t (mod L_x) in x and
-  // moves with + shearRate L_y. Needs x and y periodic.
-  double shearRate = 0.0;
-  // Planar mode for 2-D beds (one particle layer): no motion along this axis (0, 1, 2) and
-  // rotation about it only; -1 for full 3-D.
-  int planarAxis = -1;
-  double dt = 0.0;
-  double skin = 0.0;  // Verlet skin [m]
-  NormalModel model = NormalModel::Linear;
-  int species = 1;
-  std::vector<PairMaterial> pairMaterial;  // species x species, row-major, symmetric
-  std::vector<Wall> walls;
-  int sortEveryRebuilds = 20;  // re-sort particles by cell every this many rebuilds (0: never)
-
-  [[nodiscard]] const PairMaterial& material(int a, int b) const {
-    return pairMaterial[static_cast<std::size_t>(a * species + b)];
-  }
-};
 
 // Everything a checkpoint needs to continue a run bit for bit on the same binary: the owned
 // particles in their current order (with the forces of the last evaluation, which the next

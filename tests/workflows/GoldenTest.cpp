@@ -135,8 +135,9 @@ TEST_P(Golden, OutputUnchangedUnlessImplVersionBumped) {
   // A golden case recorded with other versions guards nothing until it is regenerated: fail, so
   // a bump cannot silently retire it.
   ASSERT_EQ(golden.value("impl_versions", json::object()), versions)
-      << "impl_versions are now " << versions.dump() << " (golden: "
-      << golden.value("impl_versions", json::object()).dump() << "): regenerate the golden case (see the top of "
+      << "impl_versions are now " << versions.dump()
+      << " (golden: " << golden.value("impl_versions", json::object()).dump()
+      << "): regenerate the golden case (see the top of "
       << "tests/workflows/GoldenTest.cpp) and review the diff";
   EXPECT_EQ(digests, golden.at("digests"))
       << GetParam() << " output changed but its impl_version did not: bump impl_version (so cached results of the "

@@ -41,8 +41,8 @@ json keysOfShippedConfigs() {
   json keys = json::object();
   for (const auto& e : fs::directory_iterator(root / "configs")) {
     if (e.path().extension() != ".json") continue;
-    const auto config = config::loadWorkflow(fs::path("configs") / e.path().filename(),
-                                             stages::StageRegistry::builtin());
+    const auto config =
+        config::loadWorkflow(fs::path("configs") / e.path().filename(), stages::StageRegistry::builtin());
     json instances = json::object();
     for (const auto& instance : plan::makePlan(config).instances) {
       // Labels repeat for per-instance stages under a sweep upstream; the upstream keys tell

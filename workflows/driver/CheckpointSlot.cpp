@@ -56,9 +56,15 @@ void CheckpointSlot::save(const core::engine::SteppedEngine& engine, std::size_t
   const std::string seriesFile = numbered("series-", n, ".csv");
   engine.saveState(directory_ / state, fingerprint_);
   core::writeFileAtomically(directory_ / seriesFile, series);
-  const json r = {{"format", kRegisterFormat}, {"fingerprint", fingerprint_}, {"sequence", n},
-                  {"phase", phase},            {"phase_step", phaseStep},     {"state", state},
-                  {"series", seriesFile},      {"step", engine.step()},       {"time", engine.time()}};
+  const json r = {{"format", kRegisterFormat},
+                  {"fingerprint", fingerprint_},
+                  {"sequence", n},
+                  {"phase", phase},
+                  {"phase_step", phaseStep},
+                  {"state", state},
+                  {"series", seriesFile},
+                  {"step", engine.step()},
+                  {"time", engine.time()}};
   core::writeFileAtomically(registerFile(), r.dump(2) + "\n");
   if (previous >= 0) {
     fs::remove(directory_ / numbered("state-", previous, ".ckpt"));

@@ -18,10 +18,10 @@
 namespace grainbridge::workflows::driver {
 
 struct CheckpointRecord {
-  std::size_t phase = 0;          // index of the phase the loop was in
-  std::int64_t phaseStep = 0;     // steps of that phase already done
-  std::filesystem::path state;    // the engine's saved state
-  std::string series;             // series.csv as written so far (header included)
+  std::size_t phase = 0;        // index of the phase the loop was in
+  std::int64_t phaseStep = 0;   // steps of that phase already done
+  std::filesystem::path state;  // the engine's saved state
+  std::string series;           // series.csv as written so far (header included)
 };
 
 class CheckpointSlot {

@@ -15,8 +15,7 @@ class SeriesRow {
  public:
   explicit SeriesRow(std::ostream& out) : out_(out) {}
   template <class T>
-    requires std::is_arithmetic_v<T>
-  SeriesRow& add(T value) {
+  requires std::is_arithmetic_v<T> SeriesRow& add(T value) {
     out_ << ',' << value;
     return *this;
   }

@@ -225,15 +225,6 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     if (c != 'x' && c != 'y' && c != 'z')
       d.add(ptr + "/periodic", "expected letters from \"xyz\", found \"" + periodic + "\"");
   }
-  for (int a = 0; a < 3; ++a) {
-    if (!(p.at("box_hi")[a].get<double>() > p.at("box_lo")[a].get<double>())) {
-      d.add(ptr + "/box_hi/" + std::to_string(a), "box_hi must exceed box_lo on every axis");
-    }
-  }
-  if (p.at("shear_rate").get<double>() != 0.0 &&
-      (periodic.find('x') == std::string::npos || periodic.find('y') == std::string::npos)) {
-    d.add(ptr + "/shear_rate", "Lees-Edwards shear needs periodic \"x\" (flow) and \"y\" (gradient)");
-  }
   auto checkContact = [&](const json& c, const std::string& where) {
     if (c.contains("gamma_n") == c.contains("restitution")) {
       d.add(where, "give exactly one of gamma_n and restitution");
@@ -329,21 +320,11 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   }
   if (!d.empty()) return;
   const DemSetup setup = makeDemSetup(p);
-  // One periodic image per neighbour: a periodic length must exceed twice the interaction
-  // range (largest diameter + skin).
+  // The engine's own rules (box, periodic lengths, shear, neighbour grid), written once in
+  // dem::SimulationSetup, at the pointers of the keys the engine setup shares with these params.
   double maxDiameter = 0.0;
   for (const auto& s : setup.species) maxDiameter = std::max(maxDiameter, 2.0 * s.radius);
-  const double range = maxDiameter + setup.engine.skin;
-  for (int a = 0; a < 3; ++a) {
-    const double length = setup.engine.hi[a] - setup.engine.lo[a];
-    if (setup.engine.periodic[static_cast<std::size_t>(a)] && length < 2.0 * range) {
-      std::ostringstream msg;
-      msg << "the periodic length along "
-          << "xyz"[a] << " is " << length << " m, less than twice the interaction range " << range
-          << " m (largest diameter + skin)";
-      d.add(ptr + "/box_hi/" + std::to_string(a), msg.str());
-    }
-  }
+  for (const auto& problem : setup.engine.problems(maxDiameter)) d.add(ptr + problem.pointer, problem.message);
   // Every pair must rebound (not overdamped) and be resolved in time: dt <= t_c/10.
   const double dt = p.at("dt");
   for (const auto& t : setup.timings) {
@@ -418,12 +399,12 @@ void DemStage::run(StageContext& ctx) const {
   options.checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
   options.progress = p.at("progress");
   driver::TimeLoopDriver loop(ctx, options);
-  auto engine = loop.start<dem::DemEngine>([&] { return freshEngine(ctx, setup); },
-                                           [&](const std::filesystem::path& state) {
-                                             return dem::DemEngine::restore(setup.engine, state, ctx.key(),
-                                                                            ctx.outputDir(),
-                                                                            core::io::ArtifactStamp{ctx.key()});
-                                           });
+  auto engine =
+      loop.start<dem::DemEngine>([&] { return freshEngine(ctx, setup); },
+                                 [&](const std::filesystem::path& state) {
+                                   return dem::DemEngine::restore(setup.engine, state, ctx.key(), ctx.outputDir(),
+                                                                  core::io::ArtifactStamp{ctx.key()});
+                                 });
   checkTrackedIds(ctx, setup, engine->simulation());
   if (p.contains("preparation")) {
     for (auto& phase : preparationPhases(ctx, setup, *engine)) loop.addPhase(std::move(phase));

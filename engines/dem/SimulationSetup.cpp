@@ -1,0 +1,159 @@
+#include "engines/dem/SimulationSetup.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "engines/dem/NeighborList.hpp"
+
+namespace grainbridge::dem {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kAxes = "xyz";
+
+// A message from its pieces, numbers in the stream's default (shortest readable) format.
+template <class... Pieces>
+std::string text(const Pieces&... pieces) {
+  std::ostringstream out;
+  (out << ... << pieces);
+  return out.str();
+}
+
+json vec(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
+Vec3 vec(const json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()); }
+
+json materialJson(const PairMaterial& m) {
+  return {{"kn", m.kn}, {"kt", m.kt}, {"gamma_n", m.gammaN}, {"gamma_t", m.gammaT}, {"mu", m.mu}};
+}
+PairMaterial material(const json& j) {
+  return {j.at("kn").get<double>(), j.at("kt").get<double>(), j.at("gamma_n").get<double>(),
+          j.at("gamma_t").get<double>(), j.at("mu").get<double>()};
+}
+
+}  // namespace
+
+std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter) const {
+  std::vector<SetupProblem> out;
+  auto add = [&out](std::string pointer, std::string message) {
+    out.push_back({std::move(pointer), std::move(message)});
+  };
+  if (!(dt > 0.0)) add("/dt", text("the time step must be positive, found ", dt, " s"));
+  if (!(skin >= 0.0)) add("/skin", text("the Verlet skin must be >= 0, found ", skin, " m"));
+  bool boxUsable = true;
+  for (int a = 0; a < 3; ++a) {
+    if (!(hi[a] > lo[a])) {
+      add("/box_hi/" + std::to_string(a),
+          text("box_hi must exceed box_lo on every axis, found ", hi[a], " m against ", lo[a], " m along ", kAxes[a]));
+      boxUsable = false;
+    }
+  }
+  const double range = interactionRange(largestDiameter, skin);
+  for (int a = 0; a < 3 && boxUsable; ++a) {
+    // One periodic image per neighbour: a periodic length must exceed twice the range.
+    const double length = hi[a] - lo[a];
+    if (periodic[static_cast<std::size_t>(a)] && length < 2.0 * range) {
+      add("/box_hi/" + std::to_string(a),
+          text("the periodic length along ", kAxes[a], " is ", length, " m, less than twice the interaction range ",
+               range, " m (largest diameter + skin)"));
+    }
+  }
+  if (boxUsable && range > 0.0) {
+    const double cells = NeighborList::gridCells(lo, hi, range);
+    if (cells > NeighborList::kMaxGridCells) {
+      add("/box_hi", text("the neighbour grid over this box would have ", cells, " cells of side ", range,
+                          " m (the interaction range: largest diameter + skin), more than the ",
+                          static_cast<long long>(NeighborList::kMaxGridCells),
+                          " (1 GiB of cell starts) one neighbour list may take: a smaller box or larger grains"));
+    }
+  }
+  if (shearRate != 0.0 && !(periodic[0] && periodic[1])) {
+    add("/shear_rate", text("Lees-Edwards shear needs periodic \"x\" (flow) and \"y\" (gradient)"));
+  }
+  if (planarAxis < -1 || planarAxis > 2) {
+    add("/planar", text("the planar axis must be x, y, z or none, found index ", planarAxis));
+  }
+  if (species < 1 || pairMaterial.size() != static_cast<std::size_t>(species * species)) {
+    add("/pair_materials",
+        text("need one material per species pair: ", species, " species, ", pairMaterial.size(), " materials"));
+  }
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    if (walls[w].material.size() != static_cast<std::size_t>(species)) {
+      add("/walls/" + std::to_string(w),
+          text("need one material per species: ", species, " species, ", walls[w].material.size(), " materials"));
+    }
+  }
+  return out;
+}
+
+void to_json(json& j, const SimulationSetup& s) {
+  std::string periodic, planar;
+  for (int a = 0; a < 3; ++a) {
+    if (s.periodic[static_cast<std::size_t>(a)]) periodic += kAxes[a];
+  }
+  if (s.planarAxis >= 0 && s.planarAxis < 3) planar = std::string(1, kAxes[s.planarAxis]);
+  json pairs = json::array();
+  for (const auto& m : s.pairMaterial) pairs.push_back(materialJson(m));
+  json walls = json::array();
+  for (const auto& w : s.walls) {
+    json materials = json::array();
+    for (const auto& m : w.material) materials.push_back(materialJson(m));
+    walls.push_back({{"kind", w.kind == Wall::Kind::Cylinder ? "cylinder" : "plane"},
+                     {"point", vec(w.origin)},
+                     {"direction", vec(w.direction)},
+                     {"radius", w.radius},
+                     {"vibration_amplitude", w.vibration.amplitude},
+                     {"vibration_frequency", w.vibration.frequency},
+                     {"vibration_direction", vec(w.vibration.direction)},
+                     {"materials", materials}});
+  }
+  j = {{"box_lo", vec(s.lo)},
+       {"box_hi", vec(s.hi)},
+       {"periodic", periodic},
+       {"gravity", vec(s.gravity)},
+       {"background_damping", s.backgroundDamping},
+       {"shear_rate", s.shearRate},
+       {"planar", planar},
+       {"dt", s.dt},
+       {"skin", s.skin},
+       {"normal_model", s.model == NormalModel::Hertz ? "hertz" : "linear"},
+       {"species", s.species},
+       {"pair_materials", pairs},
+       {"walls", walls},
+       {"sort_every_rebuilds", s.sortEveryRebuilds}};
+}
+
+void from_json(const json& j, SimulationSetup& s) {
+  s.lo = vec(j.at("box_lo"));
+  s.hi = vec(j.at("box_hi"));
+  const std::string periodic = j.at("periodic");
+  for (int a = 0; a < 3; ++a) s.periodic[static_cast<std::size_t>(a)] = periodic.find(kAxes[a]) != std::string::npos;
+  s.gravity = vec(j.at("gravity"));
+  s.backgroundDamping = j.at("background_damping");
+  s.shearRate = j.at("shear_rate");
+  const std::string planar = j.at("planar");
+  s.planarAxis = planar.empty() ? -1 : planar[0] - 'x';
+  s.dt = j.at("dt");
+  s.skin = j.at("skin");
+  s.model = j.at("normal_model") == "hertz" ? NormalModel::Hertz : NormalModel::Linear;
+  s.species = j.at("species");
+  s.pairMaterial.clear();
+  for (const auto& m : j.at("pair_materials")) s.pairMaterial.push_back(material(m));
+  s.walls.clear();
+  for (const auto& wj : j.at("walls")) {
+    Wall w;
+    w.kind = wj.at("kind") == "cylinder" ? Wall::Kind::Cylinder : Wall::Kind::Plane;
+    w.origin = vec(wj.at("point"));
+    w.direction = vec(wj.at("direction"));
+    w.radius = wj.at("radius");
+    w.vibration.amplitude = wj.at("vibration_amplitude");
+    w.vibration.frequency = wj.at("vibration_frequency");
+    w.vibration.direction = vec(wj.at("vibration_direction"));
+    for (const auto& m : wj.at("materials")) w.material.push_back(material(m));
+    s.walls.push_back(std::move(w));
+  }
+  s.sortEveryRebuilds = j.at("sort_every_rebuilds");
+}
+
+}  // namespace grainbridge::dem

@@ -1,0 +1,62 @@
+#pragma once
+// The DEM engine's parameters, declared next to the engine (STYLE.md 6): what Simulation runs
+// with, in SI, contact coefficients already derived per pair (Material.hpp). Its JSON form uses
+// the keys of the `dem` stage's params where the two coincide (box_lo, box_hi, periodic,
+// gravity, shear_rate, dt, skin, planar, ...), so a problem found here is reported at the JSON
+// pointer of the key the user wrote, and the engine and the stage check each rule once, here.
+#include <array>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/Types.hpp"
+#include "engines/dem/Material.hpp"
+#include "engines/dem/Walls.hpp"
+
+namespace grainbridge::dem {
+
+// A setup the engine cannot run: the JSON pointer of the key at fault ("/box_hi/0") and why.
+struct SetupProblem {
+  std::string pointer;
+  std::string message;
+};
+
+struct SimulationSetup {
+  Vec3 lo = Vec3::Zero();
+  Vec3 hi = Vec3::Ones();
+  std::array<bool, 3> periodic{false, false, false};
+  Vec3 gravity = Vec3::Zero();
+  double backgroundDamping = 0.0;  // b of Eq. 6.7 [kg/s]
+  // Lees-Edwards simple shear when non-zero: streaming velocity u_x = shearRate (y - y_mid); the
+  // periodic image above (y + L_y) is displaced by the offset shearRate L_y t (mod L_x) in x and
+  // moves with + shearRate L_y. Needs x and y periodic.
+  double shearRate = 0.0;
+  // Planar mode for 2-D beds (one particle layer): no motion along this axis (0, 1, 2) and
+  // rotation about it only; -1 for full 3-D.
+  int planarAxis = -1;
+  double dt = 0.0;
+  double skin = 0.0;  // Verlet skin [m]
+  NormalModel model = NormalModel::Linear;
+  int species = 1;
+  std::vector<PairMaterial> pairMaterial;  // species x species, row-major, symmetric
+  std::vector<Wall> walls;
+  int sortEveryRebuilds = 20;  // re-sort particles by cell every this many rebuilds (0: never)
+
+  [[nodiscard]] const PairMaterial& material(int a, int b) const {
+    return pairMaterial[static_cast<std::size_t>(a * species + b)];
+  }
+
+  // Every reason this setup cannot run grains up to `largestDiameter` across: a box that is
+  // empty along an axis, a periodic length that would need two images of one neighbour, shear
+  // without the periodic axes it needs, a neighbour grid too large to allocate, missing
+  // materials. Empty when it can run.
+  [[nodiscard]] std::vector<SetupProblem> problems(double largestDiameter) const;
+};
+
+// The interaction range of the neighbour list: the largest contact distance plus the skin.
+[[nodiscard]] inline double interactionRange(double largestDiameter, double skin) { return largestDiameter + skin; }
+
+void to_json(nlohmann::json& j, const SimulationSetup& s);
+void from_json(const nlohmann::json& j, SimulationSetup& s);
+
+}  // namespace grainbridge::dem

@@ -1,0 +1,90 @@
+// The DEM engine's parameters (dem::SimulationSetup): their JSON form round-trips exactly, and
+// each rule that makes a setup unusable is written once, named by the JSON pointer of its key,
+// and enforced by the engine itself as well as reported by the dem stage at load.
+#include <gtest/gtest.h>
+
+#include "core/Error.hpp"
+#include "engines/dem/Simulation.hpp"
+#include "tests/engines/dem/DemTestSupport.hpp"
+
+using namespace grainbridge;
+using namespace grainbridge::dem;
+using nlohmann::json;
+
+namespace {
+
+SimulationSetup twoSpeciesWithWalls() {
+  SimulationSetup s = dem::testing::openBox(dem::testing::table61Particle(), 2, 1.7e-4);
+  s.lo = Vec3(-1.5, 0, 0.25);
+  s.hi = Vec3(7, 6.5, 11);
+  s.periodic = {true, false, true};
+  s.gravity = Vec3(0.1, 0, -9.81);
+  s.backgroundDamping = 0.02;
+  s.skin = 0.3;
+  s.model = NormalModel::Hertz;
+  s.pairMaterial[1].mu = 0.1;  // one pair differs
+  s.pairMaterial[2].mu = 0.1;
+  Wall cylinder = dem::testing::floorWall(dem::testing::table61Wall(0.3), 0.0, 2);
+  cylinder.kind = Wall::Kind::Cylinder;
+  cylinder.radius = 2.5;
+  cylinder.vibration = {Vec3(0, 0.6, 0.8), 0.01, 15.0};
+  s.walls = {dem::testing::floorWall(dem::testing::table61Wall(), 0.25, 2), cylinder};
+  return s;
+}
+
+std::vector<std::string> pointersOf(const std::vector<SetupProblem>& problems) {
+  std::vector<std::string> out;
+  for (const auto& p : problems) out.push_back(p.pointer);
+  return out;
+}
+
+TEST(SimulationSetup, JsonRoundTripIsExact) {
+  const SimulationSetup s = twoSpeciesWithWalls();
+  const json j = s;
+  const SimulationSetup back = j.get<SimulationSetup>();
+  EXPECT_EQ(json(back), j);
+  EXPECT_EQ(back.lo, s.lo);
+  EXPECT_EQ(back.walls[1].vibration.direction, s.walls[1].vibration.direction);
+  EXPECT_EQ(back.material(0, 1).mu, 0.1);
+  EXPECT_EQ(back.model, NormalModel::Hertz);
+  // The keys the dem stage's params share keep the stage's names, so pointers map one to one.
+  for (const char* key : {"box_lo", "box_hi", "periodic", "gravity", "shear_rate", "dt", "planar", "normal_model"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j.at("periodic"), "xz");
+}
+
+TEST(SimulationSetup, AUsableSetupHasNoProblem) { EXPECT_TRUE(twoSpeciesWithWalls().problems(1.0).empty()); }
+
+TEST(SimulationSetup, EachRuleNamesItsKey) {
+  SimulationSetup s = twoSpeciesWithWalls();
+  s.hi[0] = s.lo[0] + 2.0;  // periodic along x: 2 < 2 x (1 + 0.3)
+  s.shearRate = 5.0;        // y is not periodic
+  EXPECT_EQ(pointersOf(s.problems(1.0)), (std::vector<std::string>{"/box_hi/0", "/shear_rate"}));
+  s = twoSpeciesWithWalls();
+  s.hi[2] = s.lo[2];
+  s.dt = 0.0;
+  EXPECT_EQ(pointersOf(s.problems(1.0)), (std::vector<std::string>{"/dt", "/box_hi/2"}));
+  s = twoSpeciesWithWalls();
+  s.walls[0].material.pop_back();
+  EXPECT_EQ(pointersOf(s.problems(1.0)), (std::vector<std::string>{"/walls/0"}));
+}
+
+TEST(SimulationSetup, ANeighbourGridTooLargeToAllocateIsRefusedNamingTheBox) {
+  SimulationSetup s = twoSpeciesWithWalls();
+  s.hi = s.lo + Vec3::Constant(1.0e4);  // 10^4 diameters per side: 5.9e11 cells
+  const auto problems = s.problems(1.0);
+  ASSERT_EQ(pointersOf(problems), (std::vector<std::string>{"/box_hi"}));
+  EXPECT_NE(problems[0].message.find("neighbour grid over this box would have"), std::string::npos);
+  // The engine refuses it the same way, before allocating anything.
+  Particles p;
+  p.addOwned(0, 0, 0.5, 1.0, s.lo + Vec3::Constant(3.0), Vec3::Zero(), Vec3::Zero(), false);
+  try {
+    Simulation sim(s, p);
+    FAIL() << "a grid of 5.9e11 cells must be refused";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/box_hi: the neighbour grid"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
