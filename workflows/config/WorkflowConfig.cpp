@@ -303,6 +303,7 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
           for (const auto& point : points) {
             const json merged = withSweepPoint(sc.params, point);
             cj::Diagnostics local;
+            sc.type->params().checkRules(merged, ptr + "/params", local);
             sc.type->checkParams(merged, ptr + "/params", local);
             for (const auto& item : local.items()) {
               const std::string where = point.empty() ? item.where : item.where + " (sweep point " + point.dump() + ")";

@@ -21,14 +21,11 @@
 #include "extract/structure/ForceNetworks.hpp"
 #include "extract/structure/MstTreeContacts.hpp"
 #include "extract/structure/MultiPassMst.hpp"
-#include "workflows/report/CsvField.hpp"
 #include "workflows/stages/DemSetup.hpp"
 #include "workflows/stages/ExtractForceStatistics.hpp"
 #include "workflows/stages/SurfaceTracker.hpp"
 
 namespace grainbridge::workflows::stages {
-
-using report::csvNumber;
 
 using core::units::Dimension;
 using nlohmann::json;
@@ -49,7 +46,8 @@ ExtractStage::ExtractStage() {
                .defaultValue(0.0)
                .min(0.0)
                .doc("under Lees-Edwards shear: frames before this strain (shear rate x time) are discarded"))
-      .add(ParamSpec::quantityList("grid_cells", Dimension::none(), 3)
+      .add(ParamSpec::integerList("grid_cells", 3)
+               .min(1)
                .doc("coarse-grained fields on a grid of nx x ny x nz cells over the domain, one field frame per "
                     "averaged frame (fields.xmf opens in ParaView) and their time average with block-averaging "
                     "errors (mean/fields.xmf, <field>_err); none when absent"))
@@ -82,8 +80,9 @@ ExtractStage::ExtractStage() {
                .defaultValue(true)
                .doc("record the time-averaged closure point; false for runs that have no steady state to "
                     "average (a vibrated Brazil-nut bed analysed for its surface or structure)"))
-      .add(ParamSpec::quantityList("surface_particles", Dimension::none(), 0)
+      .add(ParamSpec::integerList("surface_particles", 0)
                .defaultValue(json::array())
+               .min(0)
                .doc("particle ids whose top is measured against the local free surface of the bed in every "
                     "averaged frame (surface.csv; the Brazil-nut 'at the top' criterion)"))
       .add(ParamSpec::number("surface_tolerance")
@@ -142,14 +141,8 @@ std::optional<SurfaceTracker> surfaceTracker(const StageContext& ctx, const Upst
   const json& p = ctx.params();
   if (p.at("surface_particles").empty()) return std::nullopt;
   SurfaceTrackerOptions options;
-  for (std::size_t k = 0; k < p["surface_particles"].size(); ++k) {
-    const double id = p["surface_particles"][k];
-    if (id != std::floor(id) || id < 0) {
-      throw Error("/stages/" + ctx.stage() + "/params/surface_particles/" + std::to_string(k) +
-                  ": a particle id is a non-negative integer, got " + csvNumber(id));
-    }
-    options.ids.push_back(static_cast<std::int64_t>(id));
-  }
+  // Integers >= 0 by declaration; whether the frames hold them is checked frame by frame.
+  for (const auto& id : p["surface_particles"]) options.ids.push_back(id.get<std::int64_t>());
   options.up = upstreamUp(up);
   options.tolerance = p.at("surface_tolerance");
   options.minCoordination = p.at("surface_min_coordination");
