@@ -197,8 +197,7 @@ TEST(ParamSchema, AtMostOneRequiresAndGoTogether) {
   const std::string all =
       checkRules(json{{"contact", {{"gamma_n", 1}}}, {"lammps_data", "f"}, {"initial_frame", "g"}, {"a", "1"}});
   EXPECT_NE(
-      all.find(
-          "/stages/x/params: give at most one of lammps_data and initial_frame (the initial state), found both"),
+      all.find("/stages/x/params: give at most one of lammps_data and initial_frame (the initial state), found both"),
       std::string::npos)
       << all;
   EXPECT_NE(all.find("/stages/x/params/b: a and b go together: a given without b"), std::string::npos) << all;

@@ -75,9 +75,9 @@ void KeyRule::check(const nlohmann::json& object, const std::string& pointer,
       break;
     case Kind::GoTogether:
       if (!given.empty() && !missing.empty()) {
-        diagnostics.add(pointer + "/" + core::json::pointerToken(missing.front()),
-                        joinAnd(keys_) + " go together" + why + ": " + joinAnd(given) + " given without " +
-                            joinAnd(missing));
+        diagnostics.add(
+            pointer + "/" + core::json::pointerToken(missing.front()),
+            joinAnd(keys_) + " go together" + why + ": " + joinAnd(given) + " given without " + joinAnd(missing));
       }
       break;
   }

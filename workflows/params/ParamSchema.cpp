@@ -153,10 +153,9 @@ std::optional<double> resolveQuantity(const ParamSpec& spec, const json& value, 
 std::optional<std::int64_t> resolveInteger(const ParamSpec& spec, const json& value, const std::string& pointer,
                                            cj::Diagnostics& diagnostics) {
   // 3.0 is accepted as 3 (JSON writers differ), 3.5 is not.
-  const bool integral =
-      value.is_number_integer() ||
-      (value.is_number_float() && std::isfinite(value.get<double>()) &&
-       value.get<double>() == std::floor(value.get<double>()) && std::abs(value.get<double>()) < 9.0e15);
+  const bool integral = value.is_number_integer() || (value.is_number_float() && std::isfinite(value.get<double>()) &&
+                                                      value.get<double>() == std::floor(value.get<double>()) &&
+                                                      std::abs(value.get<double>()) < 9.0e15);
   if (!integral) {
     diagnostics.add(pointer, "expected an integer, found " + found(value));
     return std::nullopt;
