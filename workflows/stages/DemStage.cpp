@@ -293,8 +293,8 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     const auto id = p["track_ids"][k].get<std::int64_t>();
     if (!fromFile && id >= particleCount) {
       d.add(ptr + "/track_ids/" + std::to_string(k), "no particle with id " + std::to_string(id) +
-                                                        " (ids run from 0 to " + std::to_string(particleCount - 1) +
-                                                        ")");
+                                                         " (ids run from 0 to " + std::to_string(particleCount - 1) +
+                                                         ")");
     }
   }
   if (p.at("insertion") == "fcc_lattice") {
@@ -557,6 +557,23 @@ void DemStage::run(StageContext& ctx) const {
                   {"final_coordination",
                    mobile > 0 ? 2.0 * static_cast<double>(last.contacts.size()) / static_cast<double>(mobile) : 0.0},
                   {"neighbour_rebuilds", sim.rebuilds()}});
+}
+
+// Frames at t = 0 (the initial state, after any preparation) and, with frames > 0, evenly up to
+// the last step; the step count is the one run() takes, ceil(duration / dt).
+std::optional<PlannedOutput> DemStage::plannedOutput(const json& p) const {
+  PlannedOutput out;
+  out.particleFrames = true;
+  const double dt = p.at("dt");
+  const auto totalSteps = static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / dt - 1e-9));
+  out.lastFrameTime = p.at("frames").get<std::int64_t>() > 0 ? static_cast<double>(totalSteps) * dt : 0.0;
+  out.leesEdwardsShearRate = p.at("shear_rate").get<double>();
+  if (!p.contains("lammps_data") && !p.contains("initial_frame")) {
+    std::int64_t count = 0;
+    for (const auto& s : p.at("species")) count += s.at("count").get<std::int64_t>();
+    out.particleCount = count;
+  }
+  return out;
 }
 
 }  // namespace grainbridge::workflows::stages
