@@ -68,6 +68,34 @@ TEST(BadConfigFile, RunRefusesBadConfigBeforeAnyWork) {
   EXPECT_FALSE(fs::exists(work.path() / "results"));
 }
 
+// A request the upstream run cannot serve is refused before the upstream stage starts: no dem
+// instance runs, none is recorded.
+TEST(BadConfigFile, RunRefusesAnExtractRequestBeforeTheDemRuns) {
+  TempDir work;
+  writeText(work.path() / "cfg.json",
+            readText(sourceDir() / "tests/workflows/bad_configs/extract_window_after_run.json"));
+  const auto r = runGrainbridge(work.path(), "run cfg.json");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("/stages/avg/params/start_time: the averaging window starts after the last frame"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(work.path() / "results")) << "a stage started (or a database was made)";
+}
+
+// The upstream dem of this case is swept over three seeds; the window misses all three runs in
+// the same way, so the problem is reported once.
+TEST(BadConfigFile, AProblemWithEveryUpstreamPointIsReportedOnce) {
+  TempDir work;
+  const auto r = runGrainbridge(
+      work.path(),
+      "check '" + (sourceDir() / "tests/workflows/bad_configs/extract_window_after_run.json").string() + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  const std::string message = "the averaging window starts after the last frame";
+  const auto first = r.output.find(message);
+  ASSERT_NE(first, std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find(message, first + 1), std::string::npos) << r.output;
+}
+
 TEST(Cli, UsageErrorExitsTwo) {
   TempDir work;
   EXPECT_EQ(runGrainbridge(work.path(), "frobnicate").exitCode, 2);

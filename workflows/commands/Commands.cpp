@@ -109,6 +109,24 @@ void printParams(const params::ParamSchema& schema, const std::string& prefix, b
     }
   }
 }
+// The key rules of a schema and of its nested objects, each with the path of its object
+// ("contact.", "walls[].").
+void collectRules(const params::ParamSchema& schema, const std::string& prefix, std::vector<std::string>& out) {
+  for (const auto& rule : schema.rules()) out.push_back(rule.description(prefix));
+  for (const auto& p : schema.specs()) {
+    if (p.nested() != nullptr) {
+      collectRules(*p.nested(), prefix + p.name() + (p.kind() == params::ParamKind::ObjectList ? "[]." : "."), out);
+    }
+  }
+}
+
+void printRules(const params::ParamSchema& schema, bool markdown) {
+  std::vector<std::string> rules;
+  collectRules(schema, "", rules);
+  if (rules.empty()) return;
+  std::printf(markdown ? "\nRules between parameters:\n\n" : "  rules:\n");
+  for (const auto& r : rules) std::printf(markdown ? "- %s\n" : "    %s\n", r.c_str());
+}
 }  // namespace
 
 int commandStages(const CommandOptions& opt) {
@@ -122,6 +140,7 @@ int commandStages(const CommandOptions& opt) {
       std::printf("%s (impl_version %d): %s\n", type->name().c_str(), type->implVersion(), type->summary().c_str());
     }
     printParams(type->params(), "", opt.markdown);
+    printRules(type->params(), opt.markdown);
     std::printf("\n");
   }
   return 0;

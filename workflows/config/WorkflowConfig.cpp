@@ -176,6 +176,45 @@ std::vector<std::size_t> topologicalOrder(const std::vector<StageConfig>& stages
   return order;
 }
 
+// Says where a problem found at one sweep point is, the point included when there is one.
+std::string atSweepPoint(const std::string& where, const json& point) {
+  return point.empty() ? where : where + " (sweep point " + point.dump() + ")";
+}
+
+// Rules that span stages: each stage's requests against what its upstream instances will
+// produce (PlannedOutput), for every sweep point on both sides. Only stages whose own params,
+// and whose upstreams' params, passed their checks take part: a planned output is computed
+// from valid params only. A problem shared by several points is reported once.
+void checkAgainstUpstreams(const WorkflowConfig& cfg, const std::set<std::string>& cleanStages, cj::Diagnostics& d) {
+  for (const auto& sc : cfg.stages) {
+    if (sc.type == nullptr || sc.from.empty() || cleanStages.count(sc.name) == 0) continue;
+    std::vector<stages::UpstreamPlan> upstream;
+    bool upstreamClean = true;
+    for (const auto& name : sc.from) {
+      const StageConfig* up = cfg.findStage(name);
+      if (up == nullptr || up->type == nullptr || cleanStages.count(name) == 0) {
+        upstreamClean = false;
+        continue;
+      }
+      for (const auto& point : sweepPoints(up->sweep)) {
+        if (auto planned = up->type->plannedOutput(withSweepPoint(up->params, point))) {
+          upstream.push_back({name, point, *planned});
+        }
+      }
+    }
+    if (!upstreamClean || upstream.empty()) continue;
+    const std::string ptr = "/stages/" + cj::pointerToken(sc.name) + "/params";
+    std::set<std::string> seen;
+    for (const auto& point : sweepPoints(sc.sweep)) {
+      cj::Diagnostics local;
+      sc.type->checkAgainstUpstream(withSweepPoint(sc.params, point), ptr, upstream, local);
+      for (const auto& item : local.items()) {
+        if (seen.insert(item.where + item.message).second) d.add(atSweepPoint(item.where, point), item.message);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, const stages::StageRegistry& registry) {
@@ -212,6 +251,7 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
   } else if (!doc["stages"].is_object() || doc["stages"].empty()) {
     d.add("/stages", "expected a non-empty object of named stages, found " + found(doc["stages"]));
   } else {
+    std::set<std::string> cleanStages;  // stages with no problem of their own
     for (const auto& [name, stage] : doc["stages"].items()) {
       const std::string ptr = "/stages/" + cj::pointerToken(name);
       const std::size_t problemsBefore = d.size();
@@ -303,10 +343,10 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
           for (const auto& point : points) {
             const json merged = withSweepPoint(sc.params, point);
             cj::Diagnostics local;
+            sc.type->params().checkRules(merged, ptr + "/params", local);
             sc.type->checkParams(merged, ptr + "/params", local);
             for (const auto& item : local.items()) {
-              const std::string where = point.empty() ? item.where : item.where + " (sweep point " + point.dump() + ")";
-              if (seen.insert(item.where + item.message).second) d.add(where, item.message);
+              if (seen.insert(item.where + item.message).second) d.add(atSweepPoint(item.where, point), item.message);
             }
           }
         }
@@ -314,6 +354,7 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
           d.add(ptr + "/from", "stage type " + sc.type->name() + " takes no upstream stages");
         }
       }
+      if (d.size() == problemsBefore) cleanStages.insert(name);
       cfg.stages.push_back(std::move(sc));
     }
     // `from` must name other stages of this workflow.
@@ -333,6 +374,7 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
         }
       }
     }
+    checkAgainstUpstreams(cfg, cleanStages, d);
     const auto order = topologicalOrder(cfg.stages, d);
     std::vector<StageConfig> sorted;
     for (auto i : order) sorted.push_back(std::move(cfg.stages[i]));

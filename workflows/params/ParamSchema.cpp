@@ -28,6 +28,46 @@ ParamSchema& ParamSchema::add(ParamSpec spec) {
   return *this;
 }
 
+ParamSchema& ParamSchema::addRule(KeyRule rule) {
+  for (const auto& key : rule.keys()) {
+    const ParamSpec* spec = find(key);
+    GB_ASSERT(spec != nullptr, "key rule '" + rule.description() + "' names undeclared parameter '" + key + "'");
+    GB_ASSERT(!spec->defaultJson() && !spec->isRequired(),
+              "key rule '" + rule.description() + "' names '" + key + "', which is always given (default or required)");
+  }
+  rules_.push_back(std::move(rule));
+  return *this;
+}
+ParamSchema& ParamSchema::exactlyOneOf(std::vector<std::string> keys, std::string why) {
+  return addRule(KeyRule(KeyRule::Kind::ExactlyOneOf, std::move(keys), std::move(why)));
+}
+ParamSchema& ParamSchema::atMostOneOf(std::vector<std::string> keys, std::string why) {
+  return addRule(KeyRule(KeyRule::Kind::AtMostOneOf, std::move(keys), std::move(why)));
+}
+ParamSchema& ParamSchema::requiresKey(std::string key, std::string needed, std::string why) {
+  return addRule(KeyRule(KeyRule::Kind::Requires, {std::move(key), std::move(needed)}, std::move(why)));
+}
+ParamSchema& ParamSchema::goTogether(std::vector<std::string> keys, std::string why) {
+  return addRule(KeyRule(KeyRule::Kind::GoTogether, std::move(keys), std::move(why)));
+}
+
+void ParamSchema::checkRules(const json& resolved, const std::string& pointer, cj::Diagnostics& diagnostics) const {
+  if (!resolved.is_object()) return;  // reported by resolve
+  for (const auto& rule : rules_) rule.check(resolved, pointer, diagnostics);
+  for (const auto& spec : specs_) {
+    if (spec.nested() == nullptr || !resolved.contains(spec.name())) continue;
+    const json& value = resolved.at(spec.name());
+    const std::string where = pointer + "/" + cj::pointerToken(spec.name());
+    if (spec.kind() == ParamKind::Object) {
+      spec.nested()->checkRules(value, where, diagnostics);
+    } else if (value.is_array()) {
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        spec.nested()->checkRules(value[i], where + "/" + std::to_string(i), diagnostics);
+      }
+    }
+  }
+}
+
 const ParamSpec* ParamSchema::find(const std::string& name) const {
   for (const auto& s : specs_) {
     if (s.name() == name) return &s;
@@ -110,6 +150,21 @@ std::optional<double> resolveQuantity(const ParamSpec& spec, const json& value, 
   return v;
 }
 
+std::optional<std::int64_t> resolveInteger(const ParamSpec& spec, const json& value, const std::string& pointer,
+                                           cj::Diagnostics& diagnostics) {
+  // 3.0 is accepted as 3 (JSON writers differ), 3.5 is not.
+  const bool integral = value.is_number_integer() || (value.is_number_float() && std::isfinite(value.get<double>()) &&
+                                                      value.get<double>() == std::floor(value.get<double>()) &&
+                                                      std::abs(value.get<double>()) < 9.0e15);
+  if (!integral) {
+    diagnostics.add(pointer, "expected an integer, found " + found(value));
+    return std::nullopt;
+  }
+  const auto v = value.is_number_integer() ? value.get<std::int64_t>() : static_cast<std::int64_t>(value.get<double>());
+  if (!checkRange(spec, static_cast<double>(v), pointer, diagnostics)) return std::nullopt;
+  return v;
+}
+
 }  // namespace
 
 std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json& value,
@@ -122,19 +177,9 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
       return json(*v);
     }
     case ParamKind::Integer: {
-      // 3.0 is accepted as 3 (JSON writers differ), 3.5 is not.
-      const bool integral =
-          value.is_number_integer() ||
-          (value.is_number_float() && std::isfinite(value.get<double>()) &&
-           value.get<double>() == std::floor(value.get<double>()) && std::abs(value.get<double>()) < 9.0e15);
-      if (!integral) {
-        diagnostics.add(pointer, "expected an integer, found " + found(value));
-        return std::nullopt;
-      }
-      const auto v =
-          value.is_number_integer() ? value.get<std::int64_t>() : static_cast<std::int64_t>(value.get<double>());
-      if (!checkRange(spec, static_cast<double>(v), pointer, diagnostics)) return std::nullopt;
-      return json(v);
+      const auto v = resolveInteger(spec, value, pointer, diagnostics);
+      if (!v) return std::nullopt;
+      return json(*v);
     }
     case ParamKind::Boolean:
       if (!value.is_boolean()) {
@@ -194,6 +239,23 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
         out.push_back(spec.nested()->resolve(value[i], {}, units, pointer + "/" + std::to_string(i), diagnostics));
       }
       if (diagnostics.size() != before) return std::nullopt;
+      return out;
+    }
+    case ParamKind::IntegerList: {
+      if (!value.is_array() || (spec.listLength() > 0 && static_cast<int>(value.size()) != spec.listLength())) {
+        diagnostics.add(pointer, "expected a " + spec.typeDescription() + ", found " + found(value));
+        return std::nullopt;
+      }
+      json out = json::array();
+      bool ok = true;
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        // Stored as a double (see ParamSpec::integerList): exact up to 2^53, far beyond any id.
+        if (auto v = resolveInteger(spec, value[i], pointer + "/" + std::to_string(i), diagnostics))
+          out.push_back(static_cast<double>(*v));
+        else
+          ok = false;
+      }
+      if (!ok) return std::nullopt;
       return out;
     }
     case ParamKind::QuantityList: {

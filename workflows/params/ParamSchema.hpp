@@ -10,6 +10,7 @@
 
 #include "core/json/Diagnostics.hpp"
 #include "core/units/UnitSystem.hpp"
+#include "workflows/params/KeyRule.hpp"
 #include "workflows/params/ParamSpec.hpp"
 
 namespace grainbridge::workflows::params {
@@ -17,6 +18,14 @@ namespace grainbridge::workflows::params {
 class ParamSchema {
  public:
   ParamSchema& add(ParamSpec spec);
+  // Rules between keys of this object, declared after the keys they name (which must have no
+  // default: a defaulted key is always present). Checked by checkRules; listed by
+  // `grainbridge stages`. `why` says in a few words what the keys are for.
+  ParamSchema& exactlyOneOf(std::vector<std::string> keys, std::string why = "");
+  ParamSchema& atMostOneOf(std::vector<std::string> keys, std::string why = "");
+  ParamSchema& requiresKey(std::string key, std::string needed, std::string why = "");
+  ParamSchema& goTogether(std::vector<std::string> keys, std::string why = "");
+  [[nodiscard]] const std::vector<KeyRule>& rules() const { return rules_; }
   [[nodiscard]] const std::vector<ParamSpec>& specs() const { return specs_; }
   [[nodiscard]] const ParamSpec* find(const std::string& name) const;
   [[nodiscard]] std::vector<std::string> names() const;
@@ -36,11 +45,20 @@ class ParamSchema {
                          const core::units::UnitSystem& units, const std::string& pointer,
                          core::json::Diagnostics& diagnostics) const;
 
+  // Checks the key rules of this schema and of every nested object present in `resolved`
+  // (contact, each element of walls, ...), adding problems at `pointer` or below it. Run on
+  // resolved params with any sweep point applied: a swept key counts as given.
+  void checkRules(const nlohmann::json& resolved, const std::string& pointer,
+                  core::json::Diagnostics& diagnostics) const;
+
   // The resolved params that enter the stage key: those declared not to affect results dropped.
   [[nodiscard]] nlohmann::json keyParams(const nlohmann::json& resolved) const;
 
  private:
+  ParamSchema& addRule(KeyRule rule);
+
   std::vector<ParamSpec> specs_;
+  std::vector<KeyRule> rules_;
 };
 
 }  // namespace grainbridge::workflows::params

@@ -21,6 +21,12 @@ ParamSpec ParamSpec::quantityList(std::string name, core::units::Dimension dim, 
   return p;
 }
 
+ParamSpec ParamSpec::integerList(std::string name, int length) {
+  ParamSpec p(std::move(name), ParamKind::IntegerList, {});
+  p.listLength_ = length;
+  return p;
+}
+
 ParamSpec ParamSpec::object(std::string name, std::shared_ptr<const ParamSchema> schema) {
   ParamSpec p(std::move(name), ParamKind::Object, {});
   p.nested_ = std::move(schema);
@@ -87,6 +93,8 @@ std::string ParamSpec::typeDescription() const {
       return "file path";
     case ParamKind::ObjectList:
       return "list of objects";
+    case ParamKind::IntegerList:
+      return "list of " + (listLength_ > 0 ? std::to_string(listLength_) : std::string("any number of")) + " integers";
     case ParamKind::QuantityList:
       return "list of " + (listLength_ > 0 ? std::to_string(listLength_) : std::string("any number of")) +
              (dim_.isNone() ? " numbers" : " quantities [" + dim_.siUnit() + "]");

@@ -12,7 +12,7 @@
 
 namespace grainbridge::workflows::params {
 
-enum class ParamKind { Quantity, Integer, Boolean, String, QuantityList, Object, ObjectList, InputFile };
+enum class ParamKind { Quantity, Integer, Boolean, String, QuantityList, IntegerList, Object, ObjectList, InputFile };
 
 class ParamSchema;
 
@@ -32,6 +32,11 @@ class ParamSpec {
   // A fixed-length list of quantities, e.g. gravity [0, 0, "-9.81 m/s2"]; length 0 accepts any
   // length.
   static ParamSpec quantityList(std::string name, core::units::Dimension dim, int length);
+  // A list of integers (particle ids, cell counts); length 0 accepts any length, and min/max
+  // apply to each element. Elements resolve to JSON numbers with integral values (3.0, not 3):
+  // the resolved text enters the stage key, and these parameters were number lists before, so
+  // keeping their canonical text keeps the keys of existing configs.
+  static ParamSpec integerList(std::string name, int length);
   // A nested object, or a non-empty list of objects, each validated by `schema` (species,
   // walls, per-pair materials): errors name the element, e.g. /stages/bed/params/walls/2/mu.
   static ParamSpec object(std::string name, std::shared_ptr<const ParamSchema> schema);

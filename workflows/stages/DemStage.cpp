@@ -26,6 +26,11 @@ using params::ParamSpec;
 
 namespace {
 
+// Steps of the run proper: the duration in whole steps (a last partial step is a whole one).
+std::int64_t runSteps(const json& p) {
+  return static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / p.at("dt").get<double>() - 1e-9));
+}
+
 // The contact coefficients shared by particle pairs and walls (Eqs. 6.5-6.6, Table 6.1).
 void addContactParams(ParamSchema& s) {
   s.add(ParamSpec::quantity("kn", Dimension::stiffness())
@@ -46,7 +51,8 @@ void addContactParams(ParamSchema& s) {
                .defaultValue(0.0)
                .min(0.0)
                .doc("tangential damping gamma_t (Eq. 6.6)"))
-      .add(ParamSpec::number("mu").defaultValue(0.5).min(0.0).doc("Coulomb friction coefficient"));
+      .add(ParamSpec::number("mu").defaultValue(0.5).min(0.0).doc("Coulomb friction coefficient"))
+      .exactlyOneOf({"gamma_n", "restitution"}, "the normal damping");
 }
 
 std::shared_ptr<ParamSchema> speciesSchema() {
@@ -208,15 +214,18 @@ DemStage::DemStage() {
                .doc("insertion region lower corner (default: the box)"))
       .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
                .doc("insertion region upper corner (default: the box)"))
-      .add(ParamSpec::quantityList("track_ids", Dimension::none(), 0)
+      .add(ParamSpec::integerList("track_ids", 0)
                .defaultValue(json::array())
+               .min(0)
                .doc("particle ids whose height (z) series.csv records as z_id<N>"))
       .add(ParamSpec::quantity("checkpoint_interval", Dimension::timeDim())
                .defaultValue("600 s")
                .positive()
                .doesNotAffectResults()
                .doc("wall-clock time between checkpoints (one is also written on SIGTERM)"))
-      .add(ParamSpec::boolean("progress").defaultValue(true).doesNotAffectResults().doc("show progress"));
+      .add(ParamSpec::boolean("progress").defaultValue(true).doesNotAffectResults().doc("show progress"))
+      .atMostOneOf({"lammps_data", "initial_frame"}, "the initial state read from a file")
+      .goTogether({"lammps_data", "lammps_types"}, "the atoms and the species their types become");
 }
 
 void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
@@ -224,15 +233,6 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   for (char c : periodic) {
     if (c != 'x' && c != 'y' && c != 'z')
       d.add(ptr + "/periodic", "expected letters from \"xyz\", found \"" + periodic + "\"");
-  }
-  auto checkContact = [&](const json& c, const std::string& where) {
-    if (c.contains("gamma_n") == c.contains("restitution")) {
-      d.add(where, "give exactly one of gamma_n and restitution");
-    }
-  };
-  checkContact(p.at("contact"), ptr + "/contact");
-  if (p.contains("lammps_data") && p.contains("initial_frame")) {
-    d.add(ptr + "/initial_frame", "give one initial state: lammps_data or initial_frame");
   }
   if ((p.contains("lammps_data") || p.contains("initial_frame")) && p.at("initial_temperature").get<double>() > 0.0) {
     d.add(ptr + "/initial_temperature",
@@ -261,16 +261,11 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     for (std::size_t k = 0; k < p["pair_contacts"].size(); ++k) {
       const json& pc = p["pair_contacts"][k];
       const std::string where = ptr + "/pair_contacts/" + std::to_string(k);
-      checkContact(pc, where);
       for (const char* f : {"species", "with"}) {
         if (names.count(pc.at(f).get<std::string>()) == 0)
           d.add(where + "/" + f, "no species named \"" + pc.at(f).get<std::string>() + "\"");
       }
     }
-  }
-  if (p.contains("lammps_data") != p.contains("lammps_types")) {
-    d.add(ptr + (p.contains("lammps_data") ? "/lammps_types" : "/lammps_data"),
-          "lammps_data and lammps_types go together");
   }
   if (p.contains("lammps_types")) {
     for (std::size_t k = 0; k < p["lammps_types"].size(); ++k) {
@@ -283,14 +278,13 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   for (const auto& s : p.at("species")) particleCount += s.at("count").get<std::int64_t>();
   const bool fromFile = p.contains("lammps_data") || p.contains("initial_frame");
   for (std::size_t k = 0; k < p.at("track_ids").size(); ++k) {
-    const double id = p["track_ids"][k];
-    // Inserted particles get ids 0..count-1; a state from a file brings its own ids, checked at
-    // the start of the run.
-    if (id != std::floor(id) || id < 0 || (!fromFile && id >= static_cast<double>(particleCount))) {
-      std::ostringstream msg;
-      msg << "no particle with id " << id;
-      if (!fromFile) msg << " (ids run from 0 to " << particleCount - 1 << ")";
-      d.add(ptr + "/track_ids/" + std::to_string(k), msg.str());
+    // An integer >= 0 by declaration. Inserted particles get ids 0..count-1; a state from a file
+    // brings its own ids, checked at the start of the run.
+    const auto id = p["track_ids"][k].get<std::int64_t>();
+    if (!fromFile && id >= particleCount) {
+      d.add(ptr + "/track_ids/" + std::to_string(k), "no particle with id " + std::to_string(id) +
+                                                         " (ids run from 0 to " + std::to_string(particleCount - 1) +
+                                                         ")");
     }
   }
   if (p.at("insertion") == "fcc_lattice") {
@@ -310,7 +304,6 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     for (std::size_t w = 0; w < p["walls"].size(); ++w) {
       const json& wj = p["walls"][w];
       const std::string where = ptr + "/walls/" + std::to_string(w);
-      checkContact(wj, where);
       const auto& dir = wj.at("direction");
       if (std::hypot(dir[0].get<double>(), dir[1].get<double>(), dir[2].get<double>()) == 0.0)
         d.add(where + "/direction", "direction must not be zero");
@@ -409,7 +402,7 @@ void DemStage::run(StageContext& ctx) const {
   if (p.contains("preparation")) {
     for (auto& phase : preparationPhases(ctx, setup, *engine)) loop.addPhase(std::move(phase));
   }
-  const auto steps = static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / setup.engine.dt - 1e-9));
+  const auto steps = runSteps(p);
   driver::Phase run;
   run.name = "run";
   run.steps = steps;
@@ -431,6 +424,23 @@ void DemStage::run(StageContext& ctx) const {
                   {"final_coordination",
                    mobile > 0 ? 2.0 * static_cast<double>(last.contacts.size()) / static_cast<double>(mobile) : 0.0},
                   {"neighbour_rebuilds", sim.rebuilds()}});
+}
+
+// Frames at t = 0 (the initial state, after any preparation) and, with frames > 0, evenly up to
+// the last step; the step count is the one run() takes, ceil(duration / dt).
+std::optional<PlannedOutput> DemStage::plannedOutput(const json& p) const {
+  PlannedOutput out;
+  out.particleFrames = true;
+  // The run's clock starts at 0 after any preparation; its last frame is its last step.
+  out.lastFrameTime =
+      p.at("frames").get<std::int64_t>() > 0 ? static_cast<double>(runSteps(p)) * p.at("dt").get<double>() : 0.0;
+  out.leesEdwardsShearRate = p.at("shear_rate").get<double>();
+  if (!p.contains("lammps_data") && !p.contains("initial_frame")) {
+    std::int64_t count = 0;
+    for (const auto& s : p.at("species")) count += s.at("count").get<std::int64_t>();
+    out.particleCount = count;
+  }
+  return out;
 }
 
 }  // namespace grainbridge::workflows::stages

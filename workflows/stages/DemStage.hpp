@@ -23,6 +23,7 @@ class DemStage final : public StageType {
   void checkParams(const nlohmann::json& resolved, const std::string& pointer,
                    core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
+  [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override;
 
  private:
   params::ParamSchema schema_;

@@ -21,14 +21,11 @@
 #include "extract/structure/ForceNetworks.hpp"
 #include "extract/structure/MstTreeContacts.hpp"
 #include "extract/structure/MultiPassMst.hpp"
-#include "workflows/report/CsvField.hpp"
 #include "workflows/stages/DemSetup.hpp"
 #include "workflows/stages/ExtractForceStatistics.hpp"
 #include "workflows/stages/SurfaceTracker.hpp"
 
 namespace grainbridge::workflows::stages {
-
-using report::csvNumber;
 
 using core::units::Dimension;
 using nlohmann::json;
@@ -49,7 +46,8 @@ ExtractStage::ExtractStage() {
                .defaultValue(0.0)
                .min(0.0)
                .doc("under Lees-Edwards shear: frames before this strain (shear rate x time) are discarded"))
-      .add(ParamSpec::quantityList("grid_cells", Dimension::none(), 3)
+      .add(ParamSpec::integerList("grid_cells", 3)
+               .min(1)
                .doc("coarse-grained fields on a grid of nx x ny x nz cells over the domain, one field frame per "
                     "averaged frame (fields.xmf opens in ParaView) and their time average with block-averaging "
                     "errors (mean/fields.xmf, <field>_err); none when absent"))
@@ -82,8 +80,9 @@ ExtractStage::ExtractStage() {
                .defaultValue(true)
                .doc("record the time-averaged closure point; false for runs that have no steady state to "
                     "average (a vibrated Brazil-nut bed analysed for its surface or structure)"))
-      .add(ParamSpec::quantityList("surface_particles", Dimension::none(), 0)
+      .add(ParamSpec::integerList("surface_particles", 0)
                .defaultValue(json::array())
+               .min(0)
                .doc("particle ids whose top is measured against the local free surface of the bed in every "
                     "averaged frame (surface.csv; the Brazil-nut 'at the top' criterion)"))
       .add(ParamSpec::number("surface_tolerance")
@@ -96,6 +95,108 @@ ExtractStage::ExtractStage() {
                .min(0.0)
                .doc("frames whose mean coordination number is below this (a vibrated bed in flight) are "
                     "written to surface.csv but not judged"));
+}
+
+namespace {
+
+// A grid's cell arrays, per frame: the coarse-grained fields (a few tensors and scalars per
+// species), the field frame written from them and the running time average each hold about
+// 300-400 bytes a cell; 1 kB a cell is the round estimate the limit below is stated in.
+constexpr double kGridBytesPerCell = 1024.0;
+// The most memory a grid's per-frame arrays may take: far above any grid a DEM run's particles
+// can fill (a cell should hold a few particles), far below a request that cannot be allocated.
+constexpr double kGridBytesLimit = 8.0 * 1024.0 * 1024.0 * 1024.0;
+
+// Where the averaging window starts for one upstream run: start_time, or the time its shear
+// reaches start_strain, whichever is later.
+double windowStart(const json& p, double shearRate) {
+  double start = p.at("start_time");
+  if (p.at("start_strain").get<double>() > 0.0 && shearRate != 0.0) {
+    start = std::max(start, p.at("start_strain").get<double>() / std::abs(shearRate));
+  }
+  return start;
+}
+
+// Six significant digits: enough to recognise a value in a message.
+std::string shortNumber(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string seconds(double t) { return shortNumber(t) + " s"; }
+
+}  // namespace
+
+void ExtractStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
+  const std::string kernel = p.at("kernel");
+  if ((kernel == "gaussian" || kernel == "lucy") && !(p.at("kernel_width").get<double>() > 0.0)) {
+    d.add(ptr + "/kernel_width", "the " + kernel +
+                                     " kernel needs a positive kernel_width (its standard deviation per axis, a "
+                                     "length), found " +
+                                     shortNumber(p.at("kernel_width").get<double>()));
+  }
+  if (p.contains("grid_cells")) {
+    const json& cells = p["grid_cells"];
+    // In doubles: a product of three int64 counts can overflow.
+    const double total = cells[0].get<double>() * cells[1].get<double>() * cells[2].get<double>();
+    if (total * kGridBytesPerCell > kGridBytesLimit) {
+      std::ostringstream msg;
+      msg.precision(3);
+      msg << "a grid of " << cells[0].get<std::int64_t>() << " x " << cells[1].get<std::int64_t>() << " x "
+          << cells[2].get<std::int64_t>() << " = " << total << " cells needs about " << total * kGridBytesPerCell / 1e9
+          << " GB of cell arrays per frame (about 1 kB a cell), above the limit of "
+          << kGridBytesLimit / (1024.0 * 1024.0 * 1024.0) << " GiB ("
+          << static_cast<std::int64_t>(kGridBytesLimit / kGridBytesPerCell) << " cells); use fewer cells";
+      d.add(ptr + "/grid_cells", msg.str());
+    }
+  }
+  if (p.contains("end_time") && p.at("end_time").get<double>() < p.at("start_time").get<double>()) {
+    d.add(ptr + "/end_time", "the averaging window is empty: end_time " + seconds(p.at("end_time")) +
+                                 " is before start_time " + seconds(p.at("start_time")));
+  }
+}
+
+void ExtractStage::checkAgainstUpstream(const json& p, const std::string& ptr,
+                                        const std::vector<UpstreamPlan>& upstream, core::json::Diagnostics& d) const {
+  const double startStrain = p.at("start_strain");
+  for (const auto& up : upstream) {
+    const PlannedOutput& out = up.output;
+    if (!out.particleFrames) continue;
+    const std::string from = "upstream stage " + up.stage;
+    const std::optional<double> rate = out.leesEdwardsShearRate;
+    if (startStrain > 0.0 && rate && *rate == 0.0) {
+      d.add(ptr + "/start_strain", from + " has no Lees-Edwards shear rate (its strain stays 0), so start_strain " +
+                                       shortNumber(startStrain) + " is never reached; use start_time");
+    } else {
+      // With the shear rate unknown, start_time is a lower bound of the start.
+      const double start = windowStart(p, rate.value_or(0.0));
+      const bool fromStrain = start > p.at("start_time").get<double>();
+      const std::string startText = fromStrain ? "start_strain " + shortNumber(startStrain) + " at the shear rate " +
+                                                     shortNumber(std::abs(*rate)) + " 1/s of " + up.stage +
+                                                     " is reached at " + seconds(start)
+                                               : "start_time is " + seconds(start);
+      if (out.lastFrameTime && start > *out.lastFrameTime * (1.0 + 1e-9)) {
+        d.add(ptr + (fromStrain ? "/start_strain" : "/start_time"),
+              "the averaging window starts after the last frame of " + from + ": " + startText +
+                  ", its last frame is at " + seconds(*out.lastFrameTime) + "; no frame to average");
+      } else if (fromStrain && p.contains("end_time") && p.at("end_time").get<double>() < start) {
+        d.add(ptr + "/end_time", "the averaging window is empty: end_time " + seconds(p.at("end_time")) +
+                                     " is before its start (" + startText + ")");
+      }
+    }
+    if (out.particleCount) {
+      const std::int64_t n = *out.particleCount;
+      for (std::size_t k = 0; k < p.at("surface_particles").size(); ++k) {
+        const auto id = p["surface_particles"][k].get<std::int64_t>();
+        if (id >= n) {
+          d.add(ptr + "/surface_particles/" + std::to_string(k),
+                "no particle with id " + std::to_string(id) + " in " + from + " (it inserts " + std::to_string(n) +
+                    " particles, ids 0 to " + std::to_string(n - 1) + ")");
+        }
+      }
+    }
+  }
 }
 
 namespace {
@@ -142,14 +243,8 @@ std::optional<SurfaceTracker> surfaceTracker(const StageContext& ctx, const Upst
   const json& p = ctx.params();
   if (p.at("surface_particles").empty()) return std::nullopt;
   SurfaceTrackerOptions options;
-  for (std::size_t k = 0; k < p["surface_particles"].size(); ++k) {
-    const double id = p["surface_particles"][k];
-    if (id != std::floor(id) || id < 0) {
-      throw Error("/stages/" + ctx.stage() + "/params/surface_particles/" + std::to_string(k) +
-                  ": a particle id is a non-negative integer, got " + csvNumber(id));
-    }
-    options.ids.push_back(static_cast<std::int64_t>(id));
-  }
+  // Integers >= 0 by declaration; whether the frames hold them is checked frame by frame.
+  for (const auto& id : p["surface_particles"]) options.ids.push_back(id.get<std::int64_t>());
   options.up = upstreamUp(up);
   options.tolerance = p.at("surface_tolerance");
   options.minCoordination = p.at("surface_min_coordination");

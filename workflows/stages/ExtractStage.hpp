@@ -24,6 +24,13 @@ class ExtractStage final : public StageType {
   }
   [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
   [[nodiscard]] InputMode inputMode() const override { return InputMode::PerInstance; }
+  // A gaussian/lucy kernel's width, the grid's size, an empty window: before any upstream work.
+  void checkParams(const nlohmann::json& resolved, const std::string& pointer,
+                   core::json::Diagnostics& diagnostics) const override;
+  // The averaging window and surface_particles against what each upstream run will produce.
+  void checkAgainstUpstream(const nlohmann::json& resolved, const std::string& pointer,
+                            const std::vector<UpstreamPlan>& upstream,
+                            core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
 
  private:

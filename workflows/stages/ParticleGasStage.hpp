@@ -20,6 +20,15 @@ class ParticleGasStage final : public StageType {
   [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
   [[nodiscard]] InputMode inputMode() const override { return InputMode::None; }
   void run(StageContext& ctx) const override;
+  // One frame at t = 0 of n_particles unsheared particles with ids 0..n-1.
+  [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override {
+    PlannedOutput out;
+    out.particleFrames = true;
+    out.lastFrameTime = 0.0;
+    out.leesEdwardsShearRate = 0.0;
+    out.particleCount = resolved.at("n_particles").get<std::int64_t>();
+    return out;
+  }
 
  private:
   params::ParamSchema schema_;

@@ -2,9 +2,12 @@
 // A stage type (dem, extract, tabulate, report, ...): its name, impl_version, declared
 // parameters and how it consumes upstream stages. Virtual dispatch happens once per stage
 // instance, never in a hot loop.
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "workflows/params/ParamSchema.hpp"
+#include "workflows/stages/PlannedOutput.hpp"
 #include "workflows/stages/StageContext.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -31,6 +34,17 @@ class StageType {
   // `pointer` (the stage's /params) or below it.
   virtual void checkParams(const nlohmann::json& /*resolved*/, const std::string& /*pointer*/,
                            core::json::Diagnostics& /*diagnostics*/) const {}
+  // What an instance with these resolved params will produce, for the checks of downstream
+  // stages; nullopt when the type promises nothing (the default).
+  [[nodiscard]] virtual std::optional<PlannedOutput> plannedOutput(const nlohmann::json& /*resolved*/) const {
+    return std::nullopt;
+  }
+  // Checks across stages: called at config load, after every stage's own checks passed, with
+  // the planned outputs of every upstream instance (one per sweep point of each stage in
+  // `from` whose type declares one). Stages never read another stage's params themselves.
+  virtual void checkAgainstUpstream(const nlohmann::json& /*resolved*/, const std::string& /*pointer*/,
+                                    const std::vector<UpstreamPlan>& /*upstream*/,
+                                    core::json::Diagnostics& /*diagnostics*/) const {}
   // Runs one instance. Throws grainbridge::Error on failure (the instance is then recorded
   // failed and never cached) or StageInterrupted after a clean stop.
   virtual void run(StageContext& ctx) const = 0;
