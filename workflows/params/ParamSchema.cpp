@@ -165,6 +165,27 @@ std::optional<std::int64_t> resolveInteger(const ParamSpec& spec, const json& va
   return v;
 }
 
+// A list of the declared length (any length when 0) whose elements `element` resolves, each at
+// its own pointer; nullopt once any element or the length is wrong.
+template <class ResolveElement>
+std::optional<json> resolveList(const ParamSpec& spec, const json& value, const std::string& pointer,
+                                cj::Diagnostics& diagnostics, ResolveElement&& element) {
+  if (!value.is_array() || (spec.listLength() > 0 && static_cast<int>(value.size()) != spec.listLength())) {
+    diagnostics.add(pointer, "expected a " + spec.typeDescription() + ", found " + found(value));
+    return std::nullopt;
+  }
+  json out = json::array();
+  bool ok = true;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (const std::optional<double> v = element(value[i], pointer + "/" + std::to_string(i)))
+      out.push_back(*v);
+    else
+      ok = false;
+  }
+  if (!ok) return std::nullopt;
+  return out;
+}
+
 }  // namespace
 
 std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json& value,
@@ -241,40 +262,16 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
       if (diagnostics.size() != before) return std::nullopt;
       return out;
     }
-    case ParamKind::IntegerList: {
-      if (!value.is_array() || (spec.listLength() > 0 && static_cast<int>(value.size()) != spec.listLength())) {
-        diagnostics.add(pointer, "expected a " + spec.typeDescription() + ", found " + found(value));
-        return std::nullopt;
-      }
-      json out = json::array();
-      bool ok = true;
-      for (std::size_t i = 0; i < value.size(); ++i) {
-        // Stored as a double (see ParamSpec::integerList): exact up to 2^53, far beyond any id.
-        if (auto v = resolveInteger(spec, value[i], pointer + "/" + std::to_string(i), diagnostics))
-          out.push_back(static_cast<double>(*v));
-        else
-          ok = false;
-      }
-      if (!ok) return std::nullopt;
-      return out;
-    }
-    case ParamKind::QuantityList: {
-      if (!value.is_array() || (spec.listLength() > 0 && static_cast<int>(value.size()) != spec.listLength())) {
-        diagnostics.add(pointer, "expected a " + spec.typeDescription() + ", found " + found(value));
-        return std::nullopt;
-      }
-      json out = json::array();
-      bool ok = true;
-      for (std::size_t i = 0; i < value.size(); ++i) {
-        auto v = resolveQuantity(spec, value[i], units, pointer + "/" + std::to_string(i), diagnostics);
-        if (v)
-          out.push_back(*v);
-        else
-          ok = false;
-      }
-      if (!ok) return std::nullopt;
-      return out;
-    }
+    case ParamKind::IntegerList:
+      // Stored as doubles (see ParamSpec::integerList): exact up to 2^53, far beyond any id.
+      return resolveList(spec, value, pointer, diagnostics, [&](const json& element, const std::string& where) {
+        const auto v = resolveInteger(spec, element, where, diagnostics);
+        return v ? std::optional<double>(static_cast<double>(*v)) : std::nullopt;
+      });
+    case ParamKind::QuantityList:
+      return resolveList(spec, value, pointer, diagnostics, [&](const json& element, const std::string& where) {
+        return resolveQuantity(spec, element, units, where, diagnostics);
+      });
   }
   return std::nullopt;
 }
