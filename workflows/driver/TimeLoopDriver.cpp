@@ -88,7 +88,9 @@ void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t i
     }
     if (seriesStep) sampleSeries(engine);
     if (frameStep) engine.writeFrames();
-    if ((s & kPollMask) == 0) {
+    // Not on a phase's last step: what is left there is bookkeeping, and a run resumed after its
+    // last step would hold no observed state for the stage's summary.
+    if ((s & kPollMask) == 0 && s < phase.steps) {
       if (ctx_.stopRequested()) {
         checkpoint(engine, index, s);  // a batch system's SIGTERM: save, then stop cleanly
         spdlog::warn("{}: stopped at step {} of {}{}; checkpoint written, the next run resumes here", ctx_.stage(), s,
