@@ -1,6 +1,8 @@
 #include "engines/closures/RadialDistribution.hpp"
 
+#include <cmath>
 #include <sstream>
+#include <string>
 
 #include "core/Error.hpp"
 
@@ -16,6 +18,51 @@ double carnahanStarlingG0(double solidFraction) {
   }
   const double voidFraction = 1.0 - solidFraction;
   return (1.0 - 0.5 * solidFraction) / (voidFraction * voidFraction * voidFraction);
+}
+
+double lebowitzG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters, std::size_t l,
+                  std::size_t m) {
+  if (solidFractions.size() != diameters.size() || l >= solidFractions.size() || m >= solidFractions.size()) {
+    throw Error("radial distribution g0 (Lebowitz): " + std::to_string(solidFractions.size()) + " solid fractions, " +
+                std::to_string(diameters.size()) + " diameters, phases " + std::to_string(l) + " and " +
+                std::to_string(m) + " asked");
+  }
+  double solids = 0.0;
+  double sumOverDiameter = 0.0;
+  for (std::size_t k = 0; k < solidFractions.size(); ++k) {
+    if (!(solidFractions[k] >= 0.0) || !(diameters[k] > 0.0)) {
+      std::ostringstream msg;
+      msg.precision(10);
+      msg << "radial distribution g0 (Lebowitz): phase " << k << " has solid fraction " << solidFractions[k]
+          << " and diameter " << diameters[k] << "; need >= 0 and > 0";
+      throw Error(msg.str());
+    }
+    solids += solidFractions[k];
+    sumOverDiameter += solidFractions[k] / diameters[k];
+  }
+  const double voidFraction = 1.0 - solids;
+  if (!(voidFraction > 0.0)) {
+    std::ostringstream msg;
+    msg.precision(10);
+    msg << "radial distribution g0 (Lebowitz): the solid fractions add up to " << solids << ", need < 1";
+    throw Error(msg.str());
+  }
+  const double dl = diameters[l];
+  const double dm = diameters[m];
+  return 1.0 / voidFraction + 3.0 * dl * dm / (voidFraction * voidFraction * (dl + dm)) * sumOverDiameter;
+}
+
+double maAhmadiG0(double solidFraction) {
+  if (!(solidFraction >= 0.0 && solidFraction < kMaAhmadiPackingLimit)) {
+    std::ostringstream msg;
+    msg.precision(10);
+    msg << "radial distribution g0 (Ma-Ahmadi): solid fraction must be in [0, " << kMaAhmadiPackingLimit
+        << "), its packing limit, where g0 diverges; got " << solidFraction;
+    throw Error(msg.str());
+  }
+  const double e = solidFraction;
+  const double r = e / kMaAhmadiPackingLimit;
+  return (1.0 + 2.5 * e + 4.5904 * e * e + 4.515439 * e * e * e) / std::pow(1.0 - r * r * r, 0.67802);
 }
 
 }  // namespace grainbridge::closures

@@ -5,9 +5,11 @@
 // Carnahan and Starling 1969) but prints no formula (VALIDATION.md, multi-fluid engine). MFIX
 // uses the same function for a single solids phase: rdf_type CARNAHAN_STARLING in
 // model/rdf_mod.f (G_0) and, in mid-2000s MFIX, G_0CS whenever MMAX = 1.
-// MFIX's default for several solids phases is Lebowitz (1964), g0 = 1/eps_g + 3 eps/(2 eps_g^2)
-// for one phase, which is lower (1.296 against 1.303 at eps = 0.1, 3.33 against 3.70 at
-// eps = 0.4); it is not implemented here.
+// For several solids phases MFIX of the reference's time switched to Lebowitz (1964)
+// automatically (VALIDATION.md): lebowitzG0 below, the mixture default. Ma and Ahmadi's g0 is a
+// named variant with a packing limit.
+#include <vector>
+
 namespace grainbridge::closures {
 
 // Carnahan, N.F. and Starling, K.E. (1969), J. Chem. Phys. 51(2):635-636:
@@ -17,5 +19,25 @@ namespace grainbridge::closures {
 // gives 14.6), so a caller near random close packing must decide what it wants there.
 // Throws grainbridge::Error unless 0 <= solidFraction < 1.
 [[nodiscard]] double carnahanStarlingG0(double solidFraction);
+
+// Lebowitz, J.L. (1964), Phys. Rev. 133(4A):A895-A899, for hard-sphere mixtures, as MFIX writes
+// it (model/rdf_mod.f, G_0 with rdf LEBOWITZ):
+//   g0_lm = 1/eps_g + 3 d_l d_m / (eps_g^2 (d_l + d_m)) sum_k eps_k / d_k
+// For one phase: 1/eps_g + 3 eps/(2 eps_g^2), below Carnahan-Starling (1.296 against 1.303 at
+// eps = 0.1, 3.33 against 3.70 at 0.4). It has no packing limit below eps_g = 0: it stays finite
+// up to close packing (10.19 at one phase's eps 0.64). Throws grainbridge::Error unless
+// sum eps_k < 1 (eps_g > 0), every eps_k >= 0, every d_k > 0, and l, m index the phases.
+[[nodiscard]] double lebowitzG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters,
+                                std::size_t l, std::size_t m);
+
+// Ma, D. and Ahmadi, G. (1986), J. Chem. Phys. 84(6):3449-3450, `ma_ahmadi_g0` (not lun1984's
+// Ma-Ahmadi gas modification of the viscosity):
+//   g0 = (1 + 2.5 eps + 4.5904 eps^2 + 4.515439 eps^3) / (1 - (eps / eps_max)^3)^0.67802,
+//   eps_max = 0.64356 (random close packing).
+// It diverges at eps_max and is undefined beyond; at or above it this throws grainbridge::Error
+// naming the value and the limit (a solver keeps eps_s below it with the plastic regime,
+// Eqs. 3.26-3.27, switched at eps_s* = 1 - eps_g* < eps_max). Throws for eps < 0 too.
+inline constexpr double kMaAhmadiPackingLimit = 0.64356;
+[[nodiscard]] double maAhmadiG0(double solidFraction);
 
 }  // namespace grainbridge::closures

@@ -7,5 +7,7 @@ grainbridge_add_test(test_closures
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/SyamlalAlgebraicTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/KineticModelTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/TabulatedClosureTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/GasSolidsDragTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/RadialDistributionVariantsTest.cpp
   LIBS engines_closures
   LABELS "unit;closures")
