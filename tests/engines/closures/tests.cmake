@@ -9,5 +9,6 @@ grainbridge_add_test(test_closures
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/TabulatedClosureTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/GasSolidsDragTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/RadialDistributionVariantsTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/EffectiveRestitutionTest.cpp
   LIBS engines_closures
   LABELS "unit;closures")
