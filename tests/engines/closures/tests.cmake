@@ -11,5 +11,6 @@ grainbridge_add_test(test_closures
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/RadialDistributionVariantsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/EffectiveRestitutionTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/SolidsSolidsDragTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/PlasticRegimeTest.cpp
   LIBS engines_closures
   LABELS "unit;closures")

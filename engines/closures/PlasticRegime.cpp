@@ -1,0 +1,51 @@
+#include "engines/closures/PlasticRegime.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Error.hpp"
+
+namespace grainbridge::closures {
+
+std::string PlasticRegime::Params::problem() const {
+  std::ostringstream msg;
+  msg.precision(10);
+  if (!(criticalVoidFraction > 0.0 && criticalVoidFraction < 1.0)) {
+    msg << "the critical void fraction eps_g* must be in (0, 1), got " << criticalVoidFraction;
+  } else if (!(coefficient > 0.0) || !(exponent > 0.0)) {
+    msg << "P* = A (eps_g* - eps_g)^n needs A > 0 and n > 0, got A = " << coefficient << " Pa, n = " << exponent;
+  } else if (!(internalFrictionAngle > 0.0 && internalFrictionAngle < 0.5 * M_PI)) {
+    msg << "the angle of internal friction must be in (0, 90) degrees, got " << internalFrictionAngle
+        << " rad = " << internalFrictionAngle * 180.0 / M_PI << " degree";
+    if (internalFrictionAngle >= 0.5 * M_PI && internalFrictionAngle < 90.0)
+      msg << " (a bare number is in radians: write \"" << internalFrictionAngle << " degree\" for degrees)";
+  } else if (!(maxViscosity > 0.0)) {
+    msg << "the largest frictional viscosity must be positive, got " << maxViscosity << " Pa s";
+  }
+  return msg.str();
+}
+
+PlasticRegime::Result PlasticRegime::evaluate(double voidFraction, double solidFraction, double strainInvariant) const {
+  if (const auto p = params.problem(); !p.empty()) throw Error("plastic regime (Schaeffer): " + p);
+  if (!(voidFraction > 0.0 && voidFraction <= 1.0) || !(solidFraction >= 0.0 && solidFraction < 1.0) ||
+      !(strainInvariant >= 0.0 && std::isfinite(strainInvariant))) {
+    std::ostringstream msg;
+    msg << "plastic regime (Schaeffer): need eps_g in (0, 1], eps_s in [0, 1) and I2D >= 0, got " << voidFraction
+        << ", " << solidFraction << ", " << strainInvariant;
+    throw Error(msg.str());
+  }
+  Result r;
+  if (voidFraction >= params.criticalVoidFraction) return r;  // the viscous regime
+  r.plastic = true;
+  r.pStar = params.coefficient * std::pow(params.criticalVoidFraction - voidFraction, params.exponent);
+  r.pressure = solidFraction * r.pStar;  // Eq. 3.26
+  // Schaeffer with MFIX's cap; at I2D = 0 the cap is the value (the limit of min(x, cap)).
+  const double uncapped = strainInvariant > 0.0
+                              ? r.pStar * std::sin(params.internalFrictionAngle) / (2.0 * std::sqrt(strainInvariant))
+                              : params.maxViscosity;
+  r.viscosity = std::min(uncapped, params.maxViscosity);
+  return r;
+}
+
+}  // namespace grainbridge::closures
