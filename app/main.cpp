@@ -89,6 +89,15 @@ int main(int argc, char** argv) {
   dbExport->add_option("--output,-o", opt.output, "FILE.json, or a folder")->required();
   dbExport->add_option("--workflow", opt.workflowFilter, "only this workflow");
 
+  auto* closuresCmd =
+      app.add_subcommand("closures", "list the continuum closures (drag, g0, kinetic theory, walls, ...)");
+  closuresCmd->add_flag("--markdown", opt.markdown, "print the catalog as Markdown (docs/closures.md)");
+  auto* closuresEval =
+      closuresCmd->add_subcommand("eval", "evaluate one closure at a state: closures eval NAME key=value ...");
+  closuresEval->add_option("name", opt.closureName, "closure name (from `grainbridge closures`)")->required();
+  closuresEval->add_option("values", opt.closureArgs, "parameters and inputs as key=value (units allowed)");
+  closuresEval->add_option("--format", opt.format, "table or json")->check(CLI::IsMember({"table", "json"}));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -127,6 +136,10 @@ int main(int argc, char** argv) {
       code = gb::workflows::commands::commandDbQuery(opt);
     else if (*dbExport)
       code = gb::workflows::commands::commandDbExport(opt);
+    else if (*closuresEval)
+      code = gb::workflows::commands::commandClosuresEval(opt);
+    else if (*closuresCmd)
+      code = gb::workflows::commands::commandClosures(opt);
   } catch (const gb::core::json::InputError& e) {
     if (rank == 0) std::fprintf(stderr, "%s\n", e.what());
     code = 2;

@@ -28,6 +28,9 @@ struct CommandOptions {
   // report validation
   std::string records = "build/validation";
   std::vector<std::string> databases;
+  // closures eval
+  std::string closureName;
+  std::vector<std::string> closureArgs;  // key=value
 };
 
 // A usage problem the parser could not catch (e.g. neither --db nor --config): exit code 2.
@@ -47,5 +50,7 @@ int commandDbShow(const CommandOptions& opt);
 int commandDbIntegrity(const CommandOptions& opt);
 int commandDbQuery(const CommandOptions& opt);
 int commandDbExport(const CommandOptions& opt);
+int commandClosures(const CommandOptions& opt);
+int commandClosuresEval(const CommandOptions& opt);
 
 }  // namespace grainbridge::workflows::commands

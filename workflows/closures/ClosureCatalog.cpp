@@ -1,0 +1,326 @@
+#include "workflows/closures/ClosureCatalog.hpp"
+
+#include <cmath>
+
+#include "core/Error.hpp"
+#include "engines/closures/EffectiveRestitution.hpp"
+#include "engines/closures/GasSolidsDrag.hpp"
+#include "engines/closures/GranularEnergyGasTerms.hpp"
+#include "engines/closures/JohnsonJackson.hpp"
+#include "engines/closures/KineticModel.hpp"
+#include "engines/closures/PlasticRegime.hpp"
+#include "engines/closures/RadialDistribution.hpp"
+#include "engines/closures/SolidsSolidsDrag.hpp"
+
+namespace grainbridge::workflows::closures {
+
+namespace gc = grainbridge::closures;
+using core::units::Dimension;
+using nlohmann::json;
+using params::ParamSchema;
+using params::ParamSpec;
+
+namespace {
+
+constexpr Dimension kDragCoefficient{-3, 1, -1};  // kg/(m^3 s)
+constexpr Dimension kStrainInvariant{0, 0, -2};   // 1/s^2
+
+std::shared_ptr<ParamSchema> schema() { return std::make_shared<ParamSchema>(); }
+
+ParamSpec fraction(const std::string& name, const std::string& doc) {
+  return std::move(ParamSpec::number(name).required().min(0.0).max(1.0).doc(doc));
+}
+
+// The gas-solids drag state, shared by the three drag laws.
+std::shared_ptr<ParamSchema> dragInputs() {
+  auto s = schema();
+  s->add(fraction("void_fraction", "eps_g"))
+      .add(fraction("solid_fraction", "eps_s of this solids phase"))
+      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("particle diameter d_p"))
+      .add(ParamSpec::quantity("gas_density", Dimension::density()).defaultValue("1.2 kg/m3").positive().doc("rho_g"))
+      .add(ParamSpec::quantity("gas_viscosity", Dimension::viscosity())
+               .defaultValue("1.8e-5 Pa s")
+               .positive()
+               .doc("mu_g"))
+      .add(ParamSpec::quantity("slip", Dimension::velocity()).required().min(0.0).doc("|v_g - v_s|"));
+  return s;
+}
+
+gc::DragState dragState(const json& in) {
+  return {in.at("void_fraction"), in.at("solid_fraction"), in.at("diameter"),
+          in.at("gas_density"),   in.at("gas_viscosity"),  in.at("slip")};
+}
+
+std::vector<ClosureOutput> dragOutputs(const gc::DragCoefficients& c) {
+  return {{"beta", "kg/(m3 s)", c.beta}, {"particle_drag_coefficient", "kg/s", c.particle}};
+}
+
+std::shared_ptr<ParamSchema> kineticInputs(bool withGasDrag) {
+  auto s = schema();
+  s->add(fraction("solid_fraction", "eps_s"))
+      .add(ParamSpec::quantity("granular_temperature", Dimension::granularTemperature())
+               .required()
+               .min(0.0)
+               .doc("theta = <C^2>/3"))
+      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("particle diameter"))
+      .add(ParamSpec::quantity("density", Dimension::density()).required().positive().doc("material density rho_s"))
+      .add(ParamSpec::number("restitution").required().min(0.0, false).max(1.0).doc("normal restitution e"));
+  if (withGasDrag) {
+    s->add(ParamSpec::quantity("gas_drag_coefficient", kDragCoefficient)
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("beta of the Ma-Ahmadi gas modification (0: no gas)"));
+  }
+  return s;
+}
+
+ClosureEntry kinetic(gc::KineticModelName model, std::string summary, std::string equations, std::string source) {
+  const bool lun = model == gc::KineticModelName::Lun1984;
+  return {std::string(gc::toString(model)),
+          std::move(summary),
+          std::move(equations),
+          std::move(source),
+          schema(),
+          kineticInputs(lun),
+          [model, lun](const json&, const json& in) {
+            gc::KineticState s;
+            s.solidFraction = in.at("solid_fraction");
+            s.granularTemperature = in.at("granular_temperature");
+            s.diameter = in.at("diameter");
+            s.density = in.at("density");
+            s.restitution = in.at("restitution");
+            if (lun) s.gasDragCoefficient = in.at("gas_drag_coefficient");
+            const auto t = gc::evaluate(model, s);
+            return std::vector<ClosureOutput>{{"pressure", "Pa", t.pressure},
+                                              {"shear_viscosity", "Pa s", t.shearViscosity},
+                                              {"bulk_viscosity", "Pa s", t.bulkViscosity},
+                                              {"conductivity", "kg/(m s)", t.conductivity},
+                                              {"dissipation_rate", "W/m3", t.dissipationRate}};
+          }};
+}
+
+std::vector<ClosureEntry> makeCatalog() {
+  std::vector<ClosureEntry> out;
+
+  {
+    auto p = schema();
+    p->add(ParamSpec::number("c").defaultValue(0.8).positive().doc("C of Eq. 3.13 (eps_g <= 0.85)"))
+        .add(ParamSpec::number("d").defaultValue(2.65).positive().doc("D of Eq. 3.13 (eps_g > 0.85); C and D must "
+                                                                      "satisfy Eq. 3.14 within 1 %"));
+    out.push_back({"syamlal_obrien", "gas-solids drag of Syamlal and O'Brien, the multi-fluid default",
+                   "Eqs. 3.10-3.16", "Syamlal and O'Brien 1987; MFIX DRAG_TYPE SYAM_OBRIEN", p, dragInputs(),
+                   [](const json& params, const json& in) {
+                     gc::SyamlalOBrien law{{params.at("c"), params.at("d")}};
+                     if (const auto problem = law.params.continuityProblem(); !problem.empty()) throw Error(problem);
+                     return dragOutputs(law.evaluate(dragState(in)));
+                   }});
+  }
+  for (const auto& [name, law, summary] : {std::tuple{"ergun_wen_yu", gc::ErgunWenYu::asPrinted(),
+                                                      "Ergun / Wen-Yu drag as printed (-2.7, C_D 0.43), "
+                                                      "the TF-DEM default"},
+                                           std::tuple{"gidaspow", gc::ErgunWenYu::gidaspow(),
+                                                      "Ergun / Wen-Yu drag in Gidaspow's published form "
+                                                      "(-2.65, C_D 0.44)"}}) {
+    auto p = schema();
+    p->add(ParamSpec::number("voidage_exponent")
+               .defaultValue(law.params.voidageExponent)
+               .doc("n of eps_g^n in the Wen-Yu branch of Eq. 7.30"))
+        .add(ParamSpec::number("newton_drag_coefficient")
+                 .defaultValue(law.params.newtonDragCoefficient)
+                 .positive()
+                 .doc("C_D above Re 1000 (Eq. 7.31)"));
+    out.push_back({name, summary, "Eqs. 7.29-7.31, 7.33-7.34",
+                   "Ergun 1952, Wen and Yu 1966, Tsuji et al. 1993; Gidaspow 1994 (MFIX DRAG_TYPE GIDASPOW)", p,
+                   dragInputs(), [](const json& params, const json& in) {
+                     const gc::ErgunWenYu l{{params.at("voidage_exponent"), params.at("newton_drag_coefficient")}};
+                     return dragOutputs(l.evaluate(dragState(in)));
+                   }});
+  }
+  {
+    auto p = schema();
+    p->add(ParamSpec::number("friction_coefficient")
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("C_f between the phases' "
+                    "particles"))
+        .add(ParamSpec::number("restitution").defaultValue(1.0).min(0.0, false).max(1.0).doc("e_lm"));
+    auto in = schema();
+    for (const char* phase : {"l", "m"}) {
+      const std::string sfx = std::string("_") + phase;
+      in->add(fraction("solid_fraction" + sfx, "eps_s of phase " + std::string(phase)))
+          .add(ParamSpec::quantity("density" + sfx, Dimension::density()).required().positive().doc("rho_s"))
+          .add(ParamSpec::quantity("diameter" + sfx, Dimension::lengthDim()).required().positive().doc("d_p"));
+    }
+    in->add(ParamSpec::number("g0").required().positive().doc("g0_lm (lebowitz for a mixture)"))
+        .add(ParamSpec::quantity("relative_speed", Dimension::velocity()).required().min(0.0).doc("|v_sl - v_sm|"));
+    out.push_back({"solids_drag", "solids-solids drag between two solids phases", "Eq. 3.18",
+                   "Syamlal 1987; MFIX model/drag_ss.f", p, in, [](const json& params, const json& i) {
+                     const gc::SolidsSolidsDrag law{{params.at("friction_coefficient"), params.at("restitution")}};
+                     const double f = law.evaluate({i.at("solid_fraction_l"), i.at("density_l"), i.at("diameter_l")},
+                                                   {i.at("solid_fraction_m"), i.at("density_m"), i.at("diameter_m")},
+                                                   i.at("g0"), i.at("relative_speed"));
+                     return std::vector<ClosureOutput>{{"f_sml", "kg/(m3 s)", f}};
+                   }});
+  }
+  {
+    auto in = schema();
+    in->add(fraction("solid_fraction", "eps_s"));
+    out.push_back({"carnahan_starling", "radial distribution at contact, one solids phase (the default)", "-",
+                   "Carnahan and Starling 1969; MFIX G_0CS", schema(), in, [](const json&, const json& i) {
+                     return std::vector<ClosureOutput>{{"g0", "", gc::carnahanStarlingG0(i.at("solid_fraction"))}};
+                   }});
+    auto ma = schema();
+    ma->add(fraction("solid_fraction", "eps_s, below the packing limit 0.64356"));
+    out.push_back({"ma_ahmadi_g0", "radial distribution of Ma and Ahmadi, diverging at 0.64356", "-",
+                   "Ma and Ahmadi 1986", schema(), ma, [](const json&, const json& i) {
+                     return std::vector<ClosureOutput>{{"g0", "", gc::maAhmadiG0(i.at("solid_fraction"))}};
+                   }});
+    auto leb = schema();
+    leb->add(ParamSpec::quantityList("solid_fractions", Dimension::none(), 0).required().doc("eps_k of every phase"))
+        .add(ParamSpec::quantityList("diameters", Dimension::lengthDim(), 0).required().doc("d_k of every phase"))
+        .add(ParamSpec::integer("l").defaultValue(0).min(0).doc("first phase of the pair"))
+        .add(ParamSpec::integer("m").defaultValue(0).min(0).doc("second phase of the pair"));
+    out.push_back({"lebowitz", "radial distribution of a mixture (the default for several solids phases)", "-",
+                   "Lebowitz 1964; MFIX rdf LEBOWITZ", schema(), leb, [](const json&, const json& i) {
+                     const double g = gc::lebowitzG0(i.at("solid_fractions").get<std::vector<double>>(),
+                                                     i.at("diameters").get<std::vector<double>>(),
+                                                     i.at("l").get<std::size_t>(), i.at("m").get<std::size_t>());
+                     return std::vector<ClosureOutput>{{"g0", "", g}};
+                   }});
+  }
+  out.push_back(kinetic(gc::KineticModelName::Lun1984,
+                        "kinetic theory of Lun et al. with the Ma-Ahmadi gas modification (the default)",
+                        "Eqs. 3.34, 5.5-5.7", "Lun et al. 1984, Ma and Ahmadi 1988; MFIX calc_mu_s.f LUN_1984"));
+  out.push_back(kinetic(gc::KineticModelName::SyamlalAlgebraicPrinted,
+                        "Syamlal's algebraic closure as printed (leading term 1 in K3)", "Eqs. 3.21-3.25, 5.7",
+                        "Syamlal 1987; MFIX theory guide (conductivity)"));
+  out.push_back(kinetic(gc::KineticModelName::SyamlalAlgebraicMfix,
+                        "Syamlal's algebraic closure with MFIX's (3e + 1)/2 in K3", "Eqs. 3.21-3.25, 5.7",
+                        "MFIX gt_algebraic (2005-21.3)"));
+  {
+    auto p = schema();
+    p->add(fraction("critical_void_fraction", "eps_g*, where the plastic regime starts (usually eps_mf)"))
+        .add(ParamSpec::quantity("coefficient", Dimension::pressure())
+                 .defaultValue("1e24 Pa")
+                 .positive()
+                 .doc("A of P* = A (eps_g* - eps_g)^n (1e25 dyn/cm2)"))
+        .add(ParamSpec::number("exponent").defaultValue(10.0).positive().doc("n"))
+        .add(ParamSpec::number("internal_friction_angle")
+                 .defaultValue("30 degree")
+                 .positive()
+                 .doc("phi, a quantity with its unit (\"30 degree\"); a bare number is radians"))
+        .add(ParamSpec::quantity("max_viscosity", Dimension::viscosity())
+                 .defaultValue("100 Pa s")
+                 .positive()
+                 .doc("cap of the frictional viscosity (MFIX: 1000 poise)"));
+    auto in = schema();
+    in->add(fraction("void_fraction", "eps_g"))
+        .add(fraction("solid_fraction", "eps_s of this phase"))
+        .add(ParamSpec::quantity("strain_invariant", kStrainInvariant)
+                 .required()
+                 .min(0.0)
+                 .doc("I2D, second invariant of the deviator of D_s"));
+    out.push_back({"schaeffer", "plastic regime: P* and Schaeffer's frictional viscosity", "Eqs. 3.26-3.27",
+                   "Schaeffer 1987; MFIX calc_mu_s.f", p, in, [](const json& params, const json& i) {
+                     gc::PlasticRegime law;
+                     law.params = {params.at("critical_void_fraction"), params.at("coefficient"), params.at("exponent"),
+                                   params.at("internal_friction_angle"), params.at("max_viscosity")};
+                     const auto r =
+                         law.evaluate(i.at("void_fraction"), i.at("solid_fraction"), i.at("strain_invariant"));
+                     return std::vector<ClosureOutput>{
+                         {"p_star", "Pa", r.pStar}, {"pressure", "Pa", r.pressure}, {"viscosity", "Pa s", r.viscosity}};
+                   }});
+  }
+  {
+    auto p = schema();
+    p->add(ParamSpec::number("specularity").defaultValue(0.6).min(0.0).max(1.0).doc("phi'"))
+        .add(ParamSpec::number("max_solid_fraction")
+                 .required()
+                 .min(0.0, false)
+                 .max(1.0, false)
+                 .doc("eps_s,max, the solids fraction at packing (1 - eps_g*)"))
+        .add(ParamSpec::number("wall_restitution").required().min(0.0, false).max(1.0).doc("e_w"))
+        .add(ParamSpec::number("wall_effective_restitution")
+                 .max(1.0)
+                 .doc("e_w,eff of the rotation model (Eq. 5.21); none without it"));
+    auto in = schema();
+    in->add(fraction("solid_fraction", "eps_s at the wall"))
+        .add(ParamSpec::quantity("density", Dimension::density()).required().positive().doc("rho_s"))
+        .add(ParamSpec::number("g0").required().positive().doc("g0 at the wall"))
+        .add(ParamSpec::quantity("granular_temperature", Dimension::granularTemperature())
+                 .required()
+                 .min(0.0)
+                 .doc("theta"))
+        .add(ParamSpec::quantity("slip_speed", Dimension::velocity()).required().min(0.0).doc("|v_s - v_w|"));
+    out.push_back({"johnson_jackson", "partial-slip wall and wall granular-energy flux", "Eqs. 5.8-5.10, 5.21",
+                   "Johnson and Jackson 1987", p, in, [](const json& params, const json& i) {
+                     gc::JohnsonJackson law;
+                     law.params.specularity = params.at("specularity");
+                     law.params.maxSolidFraction = params.at("max_solid_fraction");
+                     law.params.wallRestitution = params.at("wall_restitution");
+                     if (params.contains("wall_effective_restitution"))
+                       law.params.wallEffectiveRestitution = params.at("wall_effective_restitution").get<double>();
+                     const auto r = law.evaluate({i.at("solid_fraction"), i.at("density"), i.at("g0"),
+                                                  i.at("granular_temperature"), i.at("slip_speed")});
+                     return std::vector<ClosureOutput>{{"slip_coefficient", "kg/(m2 s)", r.slipCoefficient},
+                                                       {"shear_stress", "Pa", r.shearStress},
+                                                       {"slip_production", "W/m2", r.slipProduction},
+                                                       {"wall_dissipation", "W/m2", r.wallDissipation},
+                                                       {"energy_flux_into_flow", "W/m2", r.energyFluxIntoFlow()}};
+                   }});
+  }
+  {
+    auto p = schema();
+    p->add(ParamSpec::number("mu").required().min(0.0).doc("Coulomb friction coefficient of the surfaces"))
+        .add(ParamSpec::number("beta0").defaultValue(0.33).min(-1.0).max(1.0).doc(
+            "tangential restitution (Table 5.1: 0.33)"));
+    auto in = schema();
+    in->add(ParamSpec::number("e").required().min(0.0, false).max(1.0).doc("normal restitution"));
+    out.push_back({"effective_restitution", "particle-rotation model: e_eff for Eqs. 5.20-5.21 only", "Eqs. 5.11-5.21",
+                   "Jenkins and Zhang 2002", p, in, [](const json& params, const json& i) {
+                     const auto r = gc::EffectiveRestitution{{params.at("mu"), params.at("beta0")}}.evaluate(i.at("e"));
+                     return std::vector<ClosureOutput>{{"e_eff", "", r.effectiveRestitution},
+                                                       {"theta_r_over_theta_t", "", r.rotationalToTranslational},
+                                                       {"dissipation_factor", "", r.dissipationFactor}};
+                   }});
+  }
+  {
+    auto in = schema();
+    in->add(fraction("solid_fraction", "eps_s"))
+        .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("d_p"))
+        .add(ParamSpec::quantity("density", Dimension::density()).required().positive().doc("rho_s"))
+        .add(ParamSpec::number("g0").required().positive().doc("g0"))
+        .add(ParamSpec::quantity("gas_viscosity", Dimension::viscosity())
+                 .defaultValue("1.8e-5 Pa s")
+                 .positive()
+                 .doc("mu_g"))
+        .add(ParamSpec::quantity("slip", Dimension::velocity()).required().min(0.0).doc("|v_g - v_s|"))
+        .add(ParamSpec::quantity("beta", kDragCoefficient).required().min(0.0).doc("gas-solids drag coefficient"));
+    out.push_back(
+        {"granular_energy_gas_terms", "gamma_slip and J_vis of the granular-energy equation", "Eq. 5.5",
+         "MFIX's Lun path (Koch 1990, Gidaspow 1994)", schema(), in, [](const json&, const json& i) {
+           const auto r =
+               gc::GranularEnergyGasTerms{}.evaluate({i.at("solid_fraction"), i.at("diameter"), i.at("density"),
+                                                      i.at("g0"), i.at("gas_viscosity"), i.at("slip"), i.at("beta")});
+           return std::vector<ClosureOutput>{{"gamma_slip_coefficient", "W m/(m3 s)", r.slipProductionCoefficient},
+                                             {"j_vis_coefficient", "kg/(m3 s)", r.viscousDissipationCoefficient}};
+         }});
+  }
+  return out;
+}
+
+}  // namespace
+
+const std::vector<ClosureEntry>& closureCatalog() {
+  static const std::vector<ClosureEntry> catalog = makeCatalog();
+  return catalog;
+}
+
+const ClosureEntry* findClosure(std::string_view name) {
+  for (const auto& e : closureCatalog()) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+}  // namespace grainbridge::workflows::closures
