@@ -52,6 +52,14 @@ double lebowitzG0(const std::vector<double>& solidFractions, const std::vector<d
   return 1.0 / voidFraction + 3.0 * dl * dm / (voidFraction * voidFraction * (dl + dm)) * sumOverDiameter;
 }
 
+double defaultG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters, std::size_t l,
+                 std::size_t m) {
+  if (solidFractions.size() == 1 && diameters.size() == 1 && l == 0 && m == 0) {
+    return carnahanStarlingG0(solidFractions[0]);
+  }
+  return lebowitzG0(solidFractions, diameters, l, m);
+}
+
 double maAhmadiG0(double solidFraction) {
   if (!(solidFraction >= 0.0 && solidFraction < kMaAhmadiPackingLimit)) {
     std::ostringstream msg;

@@ -38,6 +38,11 @@ namespace grainbridge::closures {
 // naming the value and the limit (a solver keeps eps_s below it with the plastic regime,
 // Eqs. 3.26-3.27, switched at eps_s* = 1 - eps_g* < eps_max). Throws for eps < 0 too.
 inline constexpr double kMaAhmadiPackingLimit = 0.64356;
+
+// The default g0 of a multi-fluid run, as MFIX of the reference's time chose it: Carnahan-
+// Starling for one solids phase, Lebowitz as soon as there are several (VALIDATION.md).
+[[nodiscard]] double defaultG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters,
+                               std::size_t l, std::size_t m);
 [[nodiscard]] double maAhmadiG0(double solidFraction);
 
 }  // namespace grainbridge::closures

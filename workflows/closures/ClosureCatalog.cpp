@@ -99,6 +99,11 @@ ClosureEntry kinetic(gc::KineticModelName model, std::string summary, std::strin
           }};
 }
 
+gc::PlasticRegime::Params plasticParams(const json& p) {
+  return {p.at("critical_void_fraction"), p.at("coefficient"), p.at("exponent"), p.at("internal_friction_angle"),
+          p.at("max_viscosity")};
+}
+
 std::vector<ClosureEntry> makeCatalog() {
   std::vector<ClosureEntry> out;
 
@@ -110,9 +115,11 @@ std::vector<ClosureEntry> makeCatalog() {
     out.push_back({"syamlal_obrien", "gas-solids drag of Syamlal and O'Brien, the multi-fluid default",
                    "Eqs. 3.10-3.16", "Syamlal and O'Brien 1987; MFIX DRAG_TYPE SYAM_OBRIEN", p, dragInputs(),
                    [](const json& params, const json& in) {
-                     gc::SyamlalOBrien law{{params.at("c"), params.at("d")}};
-                     if (const auto problem = law.params.continuityProblem(); !problem.empty()) throw Error(problem);
+                     const gc::SyamlalOBrien law{{params.at("c"), params.at("d")}};
                      return dragOutputs(law.evaluate(dragState(in)));
+                   },
+                   [](const json& params) {
+                     return gc::SyamlalOBrien::Params{params.at("c"), params.at("d")}.continuityProblem();
                    }});
   }
   for (const auto& [name, law, summary] : {std::tuple{"ergun_wen_yu", gc::ErgunWenYu::asPrinted(),
@@ -221,7 +228,8 @@ std::vector<ClosureEntry> makeCatalog() {
                  .min(0.0)
                  .doc("I2D, second invariant of the deviator of D_s"));
     out.push_back({"schaeffer", "plastic regime: P* and Schaeffer's frictional viscosity", "Eqs. 3.26-3.27",
-                   "Schaeffer 1987; MFIX calc_mu_s.f", p, in, [](const json& params, const json& i) {
+                   "Schaeffer 1987; MFIX calc_mu_s.f", p, in,
+                   [](const json& params, const json& i) {
                      gc::PlasticRegime law;
                      law.params = {params.at("critical_void_fraction"), params.at("coefficient"), params.at("exponent"),
                                    params.at("internal_friction_angle"), params.at("max_viscosity")};
@@ -229,7 +237,8 @@ std::vector<ClosureEntry> makeCatalog() {
                          law.evaluate(i.at("void_fraction"), i.at("solid_fraction"), i.at("strain_invariant"));
                      return std::vector<ClosureOutput>{
                          {"p_star", "Pa", r.pStar}, {"pressure", "Pa", r.pressure}, {"viscosity", "Pa s", r.viscosity}};
-                   }});
+                   },
+                   [](const json& params) { return plasticParams(params).problem(); }});
   }
   {
     auto p = schema();

@@ -31,6 +31,12 @@ struct ClosureEntry {
   // Resolved (SI) params and inputs -> outputs. Throws grainbridge::Error for values the law
   // refuses (out of range, a parameter set it cannot use).
   std::function<std::vector<ClosureOutput>(const nlohmann::json& params, const nlohmann::json& inputs)> evaluate;
+  // Rules on the parameters that a schema cannot declare (Eq. 3.14 for C and D, an angle that
+  // cannot be in radians): why the resolved params cannot be used, or "". A stage that includes
+  // the fragment calls it from its checkParams, so the problem is reported at load.
+  std::function<std::string(const nlohmann::json& params)> checkParams = [](const nlohmann::json&) {
+    return std::string();
+  };
 };
 
 // Every law, in the order the docs list them.

@@ -121,6 +121,7 @@ int commandClosuresEval(const CommandOptions& opt) {
   const json p = entry.params->resolve(params, {}, units, "params", d);
   const json in = entry.inputs->resolve(inputs, {}, units, "inputs", d);
   if (!d.empty()) throw core::json::InputError("closures eval " + entry.name, d);
+  if (const auto problem = entry.checkParams(p); !problem.empty()) throw UsageError(entry.name + ": " + problem);
   std::vector<closures::ClosureOutput> outputs;
   try {
     outputs = entry.evaluate(p, in);

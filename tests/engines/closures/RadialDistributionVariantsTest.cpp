@@ -43,6 +43,13 @@ TEST(LebowitzG0, RefusesWhatHasNoVoid) {
   EXPECT_THROW((void)lebowitzG0({std::numeric_limits<double>::quiet_NaN()}, {1e-3}, 0, 0), Error);
 }
 
+TEST(DefaultG0, CarnahanStarlingForOnePhaseLebowitzForSeveral) {
+  EXPECT_EQ(defaultG0({0.3}, {2e-3}, 0, 0), carnahanStarlingG0(0.3));
+  // Two phases, even of one size, switch to Lebowitz (lower than Carnahan-Starling).
+  EXPECT_EQ(defaultG0({0.2, 0.1}, {2e-3, 2e-3}, 0, 1), lebowitzG0({0.2, 0.1}, {2e-3, 2e-3}, 0, 1));
+  EXPECT_LT(defaultG0({0.2, 0.1}, {2e-3, 2e-3}, 0, 1), carnahanStarlingG0(0.3));
+}
+
 TEST(MaAhmadiG0, HandValuesAndTheDiluteLimit) {
   EXPECT_DOUBLE_EQ(maAhmadiG0(0.0), 1.0);
   EXPECT_NEAR(maAhmadiG0(0.1), 1.3037378357622247, 1e-13);
