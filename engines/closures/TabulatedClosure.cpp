@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/ClosureForms.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 
@@ -88,12 +89,10 @@ ClosureValue TabulatedClosure::evaluate(const KineticState& state) const {
       }
     }
   }
-  const double rho = state.density;
-  const double theta = state.granularTemperature;
-  const double scale = quantity_ == Quantity::Pressure    ? rho * theta
-                       : quantity_ == Quantity::Viscosity ? rho * state.diameter * std::sqrt(theta)
-                                                          : rho * theta * std::sqrt(theta) / state.diameter;
-  out.value = lookup.value * scale;
+  const core::ClosureForm form = quantity_ == Quantity::Pressure    ? core::ClosureForm::PTheta
+                                 : quantity_ == Quantity::Viscosity ? core::ClosureForm::EtaTheta
+                                                                    : core::ClosureForm::JTheta;
+  out.value = core::fromClosureForm(form, lookup.value, {state.density, state.diameter, state.granularTemperature});
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/ClosureForms.hpp"
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/Log.hpp"
@@ -60,16 +61,20 @@ Prediction predict(kt::KineticModelName model, double solidFraction, double rest
   s.density = density;
   s.granularTemperature = 1.0;  // theta = 1 m^2/s^2: each coefficient at unit temperature
   const auto unit = kt::evaluate(model, s);
+  // At unit temperature each theta form is its coefficient; steady shear's temperature is where
+  // the shear work mu gammadot^2 balances the dissipation J (both proportional to theta^(3/2)).
+  using core::ClosureForm;
+  const core::ClosureFormState atUnitTemperature{density, diameter, 1.0, shearRate};
   Prediction out;
-  out.pTheta = unit.pressure / density;
-  out.etaTheta = unit.shearViscosity / (density * diameter);
-  out.jTheta = unit.dissipationRate * diameter / density;
+  out.pTheta = core::toClosureForm(ClosureForm::PTheta, unit.pressure, atUnitTemperature);
+  out.etaTheta = core::toClosureForm(ClosureForm::EtaTheta, unit.shearViscosity, atUnitTemperature);
+  out.jTheta = core::toClosureForm(ClosureForm::JTheta, unit.dissipationRate, atUnitTemperature);
   if (shearRate > 0.0 && unit.dissipationRate > 0.0) {
     const double T = unit.shearViscosity / unit.dissipationRate * shearRate * shearRate;
-    const double scale = density * diameter * diameter * shearRate * shearRate;
-    out.tShear = T / (diameter * diameter * shearRate * shearRate);
-    out.pShear = unit.pressure * T / scale;
-    out.tauShear = unit.shearViscosity * std::sqrt(T) * shearRate / scale;
+    out.tShear = core::toClosureForm(ClosureForm::TShear, T, atUnitTemperature);
+    out.pShear = core::toClosureForm(ClosureForm::PShear, unit.pressure * T, atUnitTemperature);
+    out.tauShear =
+        core::toClosureForm(ClosureForm::TauShear, unit.shearViscosity * std::sqrt(T) * shearRate, atUnitTemperature);
   }
   return out;
 }
@@ -84,10 +89,11 @@ double predicted(const Prediction& p, const std::string& q) {
 }
 
 const std::map<std::string, std::string>& quantityLabels() {
-  static const std::map<std::string, std::string> labels = {
-      {"p_shear", "p* = p / (rho d^2 gammadot^2)"}, {"tau_shear", "tau* = -sigma_xy / (rho d^2 gammadot^2)"},
-      {"t_shear", "T* = T / (d gammadot)^2"},       {"p_theta", "p / (rho T)"},
-      {"eta_theta", "mu / (rho d sqrt(T))"},        {"j_theta", "J d / (rho T^(3/2))"}};
+  static const std::map<std::string, std::string> labels = [] {
+    std::map<std::string, std::string> out;
+    for (const auto& f : core::closureForms()) out[std::string(f.name)] = std::string(f.label);
+    return out;
+  }();
   return labels;
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/ClosureForms.hpp"
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/Log.hpp"
@@ -210,15 +211,6 @@ struct Averaged {
 Averaged averaged(const std::vector<double>& samples) {
   const auto b = extract::coarse::blockAverage(samples);
   return {b.mean, b.standardError};
-}
-
-// Relative errors add in quadrature for a product of powers (covariances neglected).
-double relativeError(std::initializer_list<std::pair<Averaged, double>> factors) {
-  double sum = 0.0;
-  for (const auto& [a, power] : factors) {
-    if (a.mean != 0.0) sum += std::pow(power * a.error / a.mean, 2);
-  }
-  return std::sqrt(sum);
 }
 
 // Restitution and friction of the particle pairs of a dem upstream (its first species pair):
@@ -526,15 +518,17 @@ void ExtractStage::run(StageContext& ctx) const {
           ctx.stage(), J.mean, dashpots.mean, 100.0 * gap / J.mean);
     }
   }
-  const double rho = density, d = diameter;
+  // The closure forms (core/ClosureForms), each with its block-averaging error.
+  const core::ClosureFormState state{density, diameter, T.mean, std::abs(shearRate)};
+  auto addForm = [&](core::ClosureForm form, const Averaged& value) {
+    const std::string name(core::closureFormInfo(form).name);
+    row[name] = core::toClosureForm(form, value.mean, state);
+    row[name + "_err"] = core::closureFormError(form, {value.mean, value.error}, {T.mean, T.error}, state);
+  };
   if (T.mean > 0.0) {
     // The theta-scaled forms a continuum engine uses with its own temperature (DESIGN.md).
-    const double pTheta = P.mean / (rho * T.mean);
-    row["p_theta"] = pTheta;
-    row["p_theta_err"] = std::abs(pTheta) * relativeError({{P, 1.0}, {T, 1.0}});
-    const double jTheta = J.mean * d / (rho * std::pow(T.mean, 1.5));
-    row["j_theta"] = jTheta;
-    row["j_theta_err"] = std::abs(jTheta) * relativeError({{J, 1.0}, {T, 1.5}});
+    addForm(core::ClosureForm::PTheta, P);
+    addForm(core::ClosureForm::JTheta, J);
   }
   if (shearRate != 0.0) {
     const double g = std::abs(shearRate);
@@ -544,18 +538,10 @@ void ExtractStage::run(StageContext& ctx) const {
     const Averaged mu{tau.mean / g, tau.error / g};
     row["viscosity"] = mu.mean;
     row["viscosity_err"] = mu.error;
-    const double scale = rho * d * d * g * g;
-    row["p_shear"] = P.mean / scale;
-    row["p_shear_err"] = P.error / scale;
-    row["tau_shear"] = tau.mean / scale;
-    row["tau_shear_err"] = tau.error / scale;
-    row["t_shear"] = T.mean / (d * d * g * g);
-    row["t_shear_err"] = T.error / (d * d * g * g);
-    if (T.mean > 0.0) {
-      const double etaTheta = mu.mean / (rho * d * std::sqrt(T.mean));
-      row["eta_theta"] = etaTheta;
-      row["eta_theta_err"] = std::abs(etaTheta) * relativeError({{mu, 1.0}, {T, 0.5}});
-    }
+    addForm(core::ClosureForm::PShear, P);
+    addForm(core::ClosureForm::TauShear, tau);
+    addForm(core::ClosureForm::TShear, T);
+    if (T.mean > 0.0) addForm(core::ClosureForm::EtaTheta, mu);
   }
   if (forceStatistics) {
     addForceStatistics(ctx, kept, diameter, row);
