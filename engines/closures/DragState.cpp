@@ -1,20 +1,17 @@
 #include "engines/closures/DragState.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "core/Error.hpp"
+#include "engines/closures/OutOfRange.hpp"
 
 namespace grainbridge::closures {
 
 namespace {
 
-void refuse(const char* what, const char* expected, double value) {
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << "drag law: " << what << " must be " << expected << ", got " << value;
-  throw Error(msg.str());
+void refuse(std::string_view what, std::string_view expected, double value) {
+  refuseValue("drag law", what, expected, value);
 }
 
 }  // namespace

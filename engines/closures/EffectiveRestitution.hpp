@@ -24,8 +24,8 @@ namespace grainbridge::closures {
 
 struct EffectiveRestitution {
   struct Params {
-    double friction = 0.0;               // mu, Coulomb friction coefficient of the surfaces [-], >= 0
-    double tangentialRestitution = 0.0;  // beta0 of Eq. 5.17, in [-1, 1] (0.33 in Table 5.1)
+    double friction = 0.0;                // mu, Coulomb friction coefficient of the surfaces [-], >= 0
+    double tangentialRestitution = 0.33;  // beta0 of Eq. 5.17, in [-1, 1]: Table 5.1's value
   };
   struct Result {
     double effectiveRestitution = 1.0;                         // e_eff, Eq. 5.19

@@ -1,19 +1,16 @@
 #include "engines/closures/GranularEnergyGasTerms.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "core/Error.hpp"
+#include "engines/closures/OutOfRange.hpp"
 
 namespace grainbridge::closures {
 
 namespace {
 
-void refuse(const char* what, const char* expected, double value) {
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << "granular energy gas terms: " << what << " must be " << expected << ", got " << value;
-  throw Error(msg.str());
+void refuse(std::string_view what, std::string_view expected, double value) {
+  refuseValue("granular energy gas terms", what, expected, value);
 }
 
 }  // namespace

@@ -1,19 +1,16 @@
 #include "engines/closures/KineticState.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "core/Error.hpp"
+#include "engines/closures/OutOfRange.hpp"
 
 namespace grainbridge::closures {
 
 namespace {
 
-[[noreturn]] void refuse(const char* quantity, const char* range, double value) {
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << "kinetic theory: " << quantity << " must be " << range << ", got " << value;
-  throw Error(msg.str());
+void refuse(std::string_view what, std::string_view expected, double value) {
+  refuseValue("kinetic theory", what, expected, value);
 }
 
 }  // namespace

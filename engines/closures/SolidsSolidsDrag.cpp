@@ -1,19 +1,16 @@
 #include "engines/closures/SolidsSolidsDrag.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "core/Error.hpp"
+#include "engines/closures/OutOfRange.hpp"
 
 namespace grainbridge::closures {
 
 namespace {
 
-void refuse(const std::string& what, const char* expected, double value) {
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << "solids-solids drag (Eq. 3.18): " << what << " must be " << expected << ", got " << value;
-  throw Error(msg.str());
+void refuse(std::string_view what, std::string_view expected, double value) {
+  refuseValue("solids-solids drag (Eq. 3.18)", what, expected, value);
 }
 
 void check(const SolidsSolidsDrag::Phase& p, const char* which) {

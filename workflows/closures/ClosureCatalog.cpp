@@ -109,9 +109,15 @@ std::vector<ClosureEntry> makeCatalog() {
 
   {
     auto p = schema();
-    p->add(ParamSpec::number("c").defaultValue(0.8).positive().doc("C of Eq. 3.13 (eps_g <= 0.85)"))
-        .add(ParamSpec::number("d").defaultValue(2.65).positive().doc("D of Eq. 3.13 (eps_g > 0.85); C and D must "
-                                                                      "satisfy Eq. 3.14 within 1 %"));
+    p->add(ParamSpec::number("c")
+               .defaultValue(gc::SyamlalOBrien::Params{}.c)
+               .positive()
+               .doc("C of Eq. 3.13 (eps_g <= 0.85)"))
+        .add(ParamSpec::number("d")
+                 .defaultValue(gc::SyamlalOBrien::Params{}.d)
+                 .positive()
+                 .doc("D of Eq. 3.13 (eps_g > 0.85); C and D must "
+                      "satisfy Eq. 3.14 within 1 %"));
     out.push_back({"syamlal_obrien", "gas-solids drag of Syamlal and O'Brien, the multi-fluid default",
                    "Eqs. 3.10-3.16", "Syamlal and O'Brien 1987; MFIX DRAG_TYPE SYAM_OBRIEN", p, dragInputs(),
                    [](const json& params, const json& in) {
@@ -146,11 +152,15 @@ std::vector<ClosureEntry> makeCatalog() {
   {
     auto p = schema();
     p->add(ParamSpec::number("friction_coefficient")
-               .defaultValue(0.0)
+               .defaultValue(gc::SolidsSolidsDrag::Params{}.frictionCoefficient)
                .min(0.0)
                .doc("C_f between the phases' "
                     "particles"))
-        .add(ParamSpec::number("restitution").defaultValue(1.0).min(0.0, false).max(1.0).doc("e_lm"));
+        .add(ParamSpec::number("restitution")
+                 .defaultValue(gc::SolidsSolidsDrag::Params{}.restitution)
+                 .min(0.0, false)
+                 .max(1.0)
+                 .doc("e_lm"));
     auto in = schema();
     for (const char* phase : {"l", "m"}) {
       const std::string sfx = std::string("_") + phase;
@@ -208,16 +218,17 @@ std::vector<ClosureEntry> makeCatalog() {
     auto p = schema();
     p->add(fraction("critical_void_fraction", "eps_g*, where the plastic regime starts (usually eps_mf)"))
         .add(ParamSpec::quantity("coefficient", Dimension::pressure())
-                 .defaultValue("1e24 Pa")
+                 .defaultValue(gc::PlasticRegime::Params{}.coefficient)
                  .positive()
                  .doc("A of P* = A (eps_g* - eps_g)^n (1e25 dyn/cm2)"))
-        .add(ParamSpec::number("exponent").defaultValue(10.0).positive().doc("n"))
+        .add(ParamSpec::number("exponent").defaultValue(gc::PlasticRegime::Params{}.exponent).positive().doc("n"))
+        // With its unit for the docs; PlasticRegimeTest pins "30 degree" to Params{}'s default.
         .add(ParamSpec::number("internal_friction_angle")
                  .defaultValue("30 degree")
                  .positive()
                  .doc("phi, a quantity with its unit (\"30 degree\"); a bare number is radians"))
         .add(ParamSpec::quantity("max_viscosity", Dimension::viscosity())
-                 .defaultValue("100 Pa s")
+                 .defaultValue(gc::PlasticRegime::Params{}.maxViscosity)
                  .positive()
                  .doc("cap of the frictional viscosity (MFIX: 1000 poise)"));
     auto in = schema();
@@ -242,7 +253,11 @@ std::vector<ClosureEntry> makeCatalog() {
   }
   {
     auto p = schema();
-    p->add(ParamSpec::number("specularity").defaultValue(0.6).min(0.0).max(1.0).doc("phi'"))
+    p->add(ParamSpec::number("specularity")
+               .defaultValue(gc::JohnsonJackson::Params{}.specularity)
+               .min(0.0)
+               .max(1.0)
+               .doc("phi'"))
         .add(ParamSpec::number("max_solid_fraction")
                  .required()
                  .min(0.0, false)
@@ -281,8 +296,11 @@ std::vector<ClosureEntry> makeCatalog() {
   {
     auto p = schema();
     p->add(ParamSpec::number("mu").required().min(0.0).doc("Coulomb friction coefficient of the surfaces"))
-        .add(ParamSpec::number("beta0").defaultValue(0.33).min(-1.0).max(1.0).doc(
-            "tangential restitution (Table 5.1: 0.33)"));
+        .add(ParamSpec::number("beta0")
+                 .defaultValue(gc::EffectiveRestitution::Params{}.tangentialRestitution)
+                 .min(-1.0)
+                 .max(1.0)
+                 .doc("tangential restitution (Table 5.1: 0.33)"));
     auto in = schema();
     in->add(ParamSpec::number("e").required().min(0.0, false).max(1.0).doc("normal restitution"));
     out.push_back({"effective_restitution", "particle-rotation model: e_eff for Eqs. 5.20-5.21 only", "Eqs. 5.11-5.21",

@@ -132,15 +132,11 @@ class TrackedHeightColumns final : public SeriesColumns {
 }  // namespace
 
 std::vector<std::unique_ptr<SeriesColumns>> demSeriesColumns(dem::DemEngine& engine, const DemSetup& setup) {
-  std::int64_t mobile = 0;
   std::vector<std::string> species;
-  for (const auto& s : setup.species) {
-    mobile += s.frozen ? 0 : s.count;
-    species.push_back(s.name);
-  }
+  for (const auto& s : setup.species) species.push_back(s.name);
   std::vector<std::unique_ptr<SeriesColumns>> out;
   out.push_back(std::make_unique<EnergyColumns>(engine));
-  out.push_back(std::make_unique<ContactColumns>(engine, mobile));
+  out.push_back(std::make_unique<ContactColumns>(engine, setup.mobileCount()));
   out.push_back(std::make_unique<StressColumns>(engine, (setup.engine.hi - setup.engine.lo).prod()));
   out.push_back(std::make_unique<WallForceColumns>(engine));
   out.push_back(std::make_unique<SpeciesHeightColumns>(engine, std::move(species)));

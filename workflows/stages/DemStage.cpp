@@ -414,8 +414,7 @@ void DemStage::run(StageContext& ctx) const {
   const auto& sim = engine->simulation();
   const auto e = sim.energies();
   const auto& last = engine->frame();
-  std::int64_t mobile = 0;
-  for (const auto& s : setup.species) mobile += s.frozen ? 0 : s.count;
+  const std::int64_t mobile = setup.mobileCount();
   ctx.setSummary({{"particles", static_cast<std::int64_t>(sim.particles().nOwned)},
                   {"steps", steps},
                   {"final_ke_translational", e.translational},
