@@ -6,11 +6,13 @@
 #include <string>
 
 #include "core/Error.hpp"
-#include "engines/dem/contact/SpringDashpot.hpp"
 
 namespace grainbridge::dem {
 
 namespace {
+// The set-up evaluation still advances the history (the start-up artefact the next commit removes).
+constexpr contact::History kSetupHistory = contact::History::Advance;
+
 std::string vecText(const Vec3& v) {
   return "(" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")";
 }
@@ -29,7 +31,7 @@ Simulation::Simulation(SimulationSetup setup, Particles particles)
   }
   wallHistory_.assign(p_.nOwned * setup_.walls.size(), Vec3::Zero());
   rebuild(false);
-  computeForces(true);  // the initial frame gets its contacts too
+  computeForces(Evaluation::Setup);  // the initial frame gets its contacts too
 }
 
 Simulation::Simulation(SimulationSetup setup, EngineState state)
@@ -78,6 +80,7 @@ void Simulation::validateSetup() {
     for (const auto& p : problems) message += (&p == &problems.front() ? ": " : "; ") + p.pointer + ": " + p.message;
     throw Error(message);
   }
+  law_ = *contact::findContactLaw(setup_.contact);  // registered: problems() says so
   cutoff_ = interactionRange(2.0 * maxRadius, setup_.skin);
   wallForce_.assign(setup_.walls.size(), Vec3::Zero());
 }
@@ -186,7 +189,7 @@ void Simulation::step(bool recordContacts) {
     rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
   else
     p_.refreshGhosts(shearDrift());
-  computeForces(recordContacts, /*ownedCleared=*/true);
+  computeForces(recordContacts ? Evaluation::StepRecorded : Evaluation::Step, /*ownedCleared=*/true);
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     p_.v[i] += (half * p_.invMass[i]) * p_.force[i];
     p_.omega[i] += (half * p_.invInertia[i]) * p_.torque[i];
@@ -326,7 +329,8 @@ void Simulation::rebuild(bool sort) {
   list_.build(p_, setup_.lo, setup_.hi, cutoff_, setup_.skin);
 }
 
-void Simulation::computeForces(bool record, bool ownedCleared) {
+void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
+  const bool record = evaluation != Evaluation::Step;
   const std::size_t n = p_.size();
   for (std::size_t i = ownedCleared ? p_.nOwned : 0; i < n; ++i) {
     p_.force[i].setZero();
@@ -338,13 +342,8 @@ void Simulation::computeForces(bool record, bool ownedCleared) {
     dissipation_ = 0.0;
   }
   contactCount_ = 0;
-  if (setup_.model == NormalModel::Hertz) {
-    record ? pairForces<contact::Hertz, true>() : pairForces<contact::Hertz, false>();
-    record ? wallForces<contact::Hertz, true>() : wallForces<contact::Hertz, false>();
-  } else {
-    record ? pairForces<contact::Linear, true>() : pairForces<contact::Linear, false>();
-    record ? wallForces<contact::Linear, true>() : wallForces<contact::Linear, false>();
-  }
+  // The run's composition is chosen here, once per evaluation; the loops are compiled for it.
+  std::visit([&](auto law) { contactForces<decltype(law)>(evaluation); }, law_);
   // Forces on ghosts belong to their owners (the reverse communication of a parallel run).
   for (std::size_t k = 0; k < p_.ghostOwner.size(); ++k) {
     const std::size_t o = p_.ghostOwner[k];
@@ -365,6 +364,25 @@ void Simulation::computeForces(bool record, bool ownedCleared) {
   if (setup_.planarAxis >= 0) constrainToPlane();
 }
 
+template <class Law>
+void Simulation::contactForces(Evaluation evaluation) {
+  using contact::History;
+  switch (evaluation) {
+    case Evaluation::Step:
+      pairForces<Law, false, History::Advance>();
+      wallForces<Law, false, History::Advance>();
+      break;
+    case Evaluation::StepRecorded:
+      pairForces<Law, true, History::Advance>();
+      wallForces<Law, true, History::Advance>();
+      break;
+    case Evaluation::Setup:
+      pairForces<Law, true, kSetupHistory>();
+      wallForces<Law, true, kSetupHistory>();
+      break;
+  }
+}
+
 void Simulation::constrainToPlane() {
   // 2-D beds: the layer stays in its plane and spins only about the plane's normal.
   const int a = setup_.planarAxis;
@@ -376,9 +394,8 @@ void Simulation::constrainToPlane() {
   }
 }
 
-template <class Law, bool Record>
+template <class Law, bool Record, contact::History H>
 void Simulation::pairForces() {
-  using Contact = contact::SpringDashpot<Law>;
   const double dt = setup_.dt;
   const int ns = setup_.species;
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
@@ -411,7 +428,7 @@ void Simulation::pairForces() {
       c.vt = vij - c.vn - (ai * wi + aj * p_.omega[j]).cross(c.n);  // Eq. 6.3
       c.meff = 1.0 / (invMi + p_.invMass[j]);
       const auto f =
-          Contact::evaluate(c, setup_.pairMaterial[static_cast<std::size_t>(si * ns + p_.species[j])], dt, ut);
+          Law::evaluate(c, setup_.pairMaterial[static_cast<std::size_t>(si * ns + p_.species[j])], dt, ut, H);
       const Vec3 fn = f.normal();
       const Vec3 ft = f.tangential();
       const Vec3 total = fn + ft;
@@ -443,9 +460,8 @@ void Simulation::pairForces() {
   }
 }
 
-template <class Law, bool Record>
+template <class Law, bool Record, contact::History H>
 void Simulation::wallForces() {
-  using Contact = contact::SpringDashpot<Law>;
   const std::size_t nw = setup_.walls.size();
   for (auto& wf : wallForce_) wf.setZero();
   if (nw == 0) return;
@@ -484,7 +500,7 @@ void Simulation::wallForces() {
       c.vn = vij.dot(n) * n;
       c.vt = vij - c.vn - (ai * p_.omega[i]).cross(n);  // the wall does not rotate
       c.meff = p_.mass[i];                              // infinite wall mass
-      const auto f = Contact::evaluate(c, wall.material[static_cast<std::size_t>(p_.species[i])], dt, ut);
+      const auto f = Law::evaluate(c, wall.material[static_cast<std::size_t>(p_.species[i])], dt, ut, H);
       const Vec3 fn = f.normal();
       const Vec3 ft = f.tangential();
       p_.force[i] += fn + ft;

@@ -102,16 +102,22 @@ class Simulation {
   void wrapAndCheck();
   void buildGhosts(double shearOffsetNow);
   [[nodiscard]] double shearDrift() const;  // offset growth since the last build
+  // A step's force evaluation, the same with its contacts recorded for frame(), or the set-up
+  // evaluation of a run (recorded, contact history kept as it is).
+  enum class Evaluation { Step, StepRecorded, Setup };
   // ownedCleared: the owned particles' forces and torques are zero already (step clears them)
-  void computeForces(bool record, bool ownedCleared = false);
+  void computeForces(Evaluation evaluation, bool ownedCleared = false);
+  template <class Law>
+  void contactForces(Evaluation evaluation);
   void constrainToPlane();
-  template <class Law, bool Record>
+  template <class Law, bool Record, contact::History H>
   void pairForces();
-  template <class Law, bool Record>
+  template <class Law, bool Record, contact::History H>
   void wallForces();
   void sortByCell();
 
   SimulationSetup setup_;
+  contact::AnyContactLaw law_;  // the composition setup_.contact names
   Particles p_;
   NeighborList list_;
   double cutoff_ = 0.0;

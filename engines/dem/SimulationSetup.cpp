@@ -1,5 +1,6 @@
 #include "engines/dem/SimulationSetup.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -25,11 +26,25 @@ json vec(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
 Vec3 vec(const json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()); }
 
 json materialJson(const PairMaterial& m) {
-  return {{"kn", m.kn}, {"kt", m.kt}, {"gamma_n", m.gammaN}, {"gamma_t", m.gammaT}, {"mu", m.mu}};
+  return {{"kn", m.kn},     {"kt", m.kt},       {"gamma_n", m.gammaN}, {"gamma_t", m.gammaT},
+          {"eta_n", m.etaN}, {"eta_t", m.etaT}, {"mu", m.mu}};
 }
 PairMaterial material(const json& j) {
-  return {j.at("kn").get<double>(), j.at("kt").get<double>(), j.at("gamma_n").get<double>(),
-          j.at("gamma_t").get<double>(), j.at("mu").get<double>()};
+  PairMaterial m;
+  m.kn = j.at("kn");
+  m.kt = j.at("kt");
+  m.gammaN = j.at("gamma_n");
+  m.gammaT = j.at("gamma_t");
+  m.etaN = j.value("eta_n", 0.0);
+  m.etaT = j.value("eta_t", 0.0);
+  m.mu = j.at("mu");
+  return m;
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
 }
 
 }  // namespace
@@ -74,6 +89,18 @@ std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter) cons
   if (planarAxis < -1 || planarAxis > 2) {
     add("/planar", text("the planar axis must be x, y, z or none, found index ", planarAxis));
   }
+  if (!contact::findContactLaw(contact)) {
+    const std::pair<const std::string*, std::vector<std::string>> kinds[] = {
+        {&contact.normal, contact::normalModelNames()},
+        {&contact.damping, contact::dampingModelNames()},
+        {&contact.tangential, contact::tangentialModelNames()}};
+    const char* keys[] = {"/normal_model", "/damping_model", "/tangential_model"};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto& [name, known] = kinds[k];
+      if (std::find(known.begin(), known.end(), *name) == known.end())
+        add(keys[k], text("no contact sub-model named \"", *name, "\" (registered: ", listed(known), ")"));
+    }
+  }
   if (species < 1 || pairMaterial.size() != static_cast<std::size_t>(species * species)) {
     add("/pair_materials",
         text("need one material per species pair: ", species, " species, ", pairMaterial.size(), " materials"));
@@ -117,7 +144,9 @@ void to_json(json& j, const SimulationSetup& s) {
        {"planar", planar},
        {"dt", s.dt},
        {"skin", s.skin},
-       {"normal_model", s.model == NormalModel::Hertz ? "hertz" : "linear"},
+       {"normal_model", s.contact.normal},
+       {"damping_model", s.contact.damping},
+       {"tangential_model", s.contact.tangential},
        {"species", s.species},
        {"pair_materials", pairs},
        {"walls", walls},
@@ -136,7 +165,9 @@ void from_json(const json& j, SimulationSetup& s) {
   s.planarAxis = planar.empty() ? -1 : planar[0] - 'x';
   s.dt = j.at("dt");
   s.skin = j.at("skin");
-  s.model = j.at("normal_model") == "hertz" ? NormalModel::Hertz : NormalModel::Linear;
+  s.contact.normal = j.at("normal_model");
+  s.contact.damping = j.at("damping_model");
+  s.contact.tangential = j.at("tangential_model");
   s.species = j.at("species");
   s.pairMaterial.clear();
   for (const auto& m : j.at("pair_materials")) s.pairMaterial.push_back(material(m));

@@ -12,6 +12,7 @@
 #include "core/Types.hpp"
 #include "engines/dem/Material.hpp"
 #include "engines/dem/Walls.hpp"
+#include "engines/dem/contact/ContactModels.hpp"
 
 namespace grainbridge::dem {
 
@@ -36,7 +37,7 @@ struct SimulationSetup {
   int planarAxis = -1;
   double dt = 0.0;
   double skin = 0.0;  // Verlet skin [m]
-  NormalModel model = NormalModel::Linear;
+  contact::ContactChoice contact;  // the contact law's sub-models (contact/ContactModels.hpp)
   int species = 1;
   std::vector<PairMaterial> pairMaterial;  // species x species, row-major, symmetric
   std::vector<Wall> walls;

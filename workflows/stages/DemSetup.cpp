@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "engines/dem/contact/Conversions.hpp"
+
 namespace grainbridge::workflows::stages {
 
 using nlohmann::json;
@@ -11,17 +13,31 @@ namespace {
 
 Vec3 vec(const json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()); }
 
-// Material of a surface pair from a contact object; restitution, when given, is inverted for
-// this pair's effective mass (Eqs. 6.9-6.10).
-dem::PairMaterial material(const json& c, double meff) {
+// Material of a surface pair from a contact object, for the run's contact law. A restitution,
+// when given, sets the normal damping for this pair's effective mass and contact length
+// (Eqs. 6.9-6.10 inverted for a linear spring; a collision at impact_velocity otherwise).
+dem::PairMaterial material(const json& c, const dem::contact::AnyContactLaw& law, double meff, double d) {
   dem::PairMaterial m;
   m.kn = c.at("kn");
   m.kt = c.contains("kt") ? c.at("kt").get<double>() : 2.0 / 7.0 * m.kn;  // Table 6.1: k_t = 2/7 k_n
-  m.gammaN =
-      c.contains("restitution") ? dem::gammaForRestitution(c.at("restitution"), m.kn, meff) : c.value("gamma_n", 0.0);
-  m.gammaT = c.at("gamma_t");
+  m.gammaN = c.value("gamma_n", 0.0);
+  m.gammaT = c.value("gamma_t", 0.0);
+  m.etaN = c.value("eta_n", 0.0);
+  m.etaT = c.value("eta_t", 0.0);
   m.mu = c.at("mu");
+  if (c.contains("restitution"))
+    m = dem::contact::withRestitution(law, m, c.at("restitution"), meff, d, c.value("impact_velocity", 0.0));
   return m;
+}
+
+// e_n and t_c of a pair as the log and the dt check see them: exact where the law has a closed
+// form or an impact speed is stated, else the linear spring's (a lower bound on a Hertzian t_c).
+PairTiming timing(std::string pair, std::string pointer, const json& c, const dem::contact::AnyContactLaw& law,
+                  const dem::PairMaterial& m, double meff, double d) {
+  const bool exact = dem::contact::hasClosedFormCollision(law) || c.contains("impact_velocity");
+  const auto r = exact ? dem::contact::headOnCollision(law, m, meff, d, c.value("impact_velocity", 0.0))
+                       : dem::contact::linearEstimate(law, m, meff);
+  return {std::move(pair), std::move(pointer), r.restitution, r.contactTime, exact};
 }
 
 // m_eff of two bodies; a frozen particle or a wall has infinite mass.
@@ -48,7 +64,9 @@ DemSetup makeDemSetup(const json& p) {
   const std::string planar = p.at("planar");
   e.planarAxis = planar.empty() ? -1 : planar[0] - 'x';
   e.dt = p.at("dt");
-  e.model = p.at("normal_model") == "hertz" ? dem::NormalModel::Hertz : dem::NormalModel::Linear;
+  e.contact = {p.at("normal_model"), p.at("damping_model"), p.at("tangential_model")};
+  const auto law = dem::contact::findContactLaw(e.contact);
+  if (!law) return out;  // unregistered names: SimulationSetup::problems() reports them
 
   double maxDiameter = 0.0;
   for (const auto& s : p.at("species")) {
@@ -76,12 +94,11 @@ DemSetup makeDemSetup(const json& p) {
             c = &pc;
         }
       }
-      e.pairMaterial[static_cast<std::size_t>(a * ns + b)] = material(*c, std::isfinite(meff) ? meff : 1.0);
+      const double d = sa.radius + sb.radius;
+      e.pairMaterial[static_cast<std::size_t>(a * ns + b)] = material(*c, *law, std::isfinite(meff) ? meff : 1.0, d);
       if (b >= a && std::isfinite(meff)) {
-        const auto& m = e.pairMaterial[static_cast<std::size_t>(a * ns + b)];
-        out.timings.push_back({sa.name + "-" + sb.name, c == &contact ? "/contact" : "/pair_contacts",
-                               dem::linearRestitution(m.kn, m.gammaN, meff),
-                               dem::linearContactTime(m.kn, m.gammaN, meff)});
+        out.timings.push_back(timing(sa.name + "-" + sb.name, c == &contact ? "/contact" : "/pair_contacts", *c, *law,
+                                     e.pairMaterial[static_cast<std::size_t>(a * ns + b)], meff, d));
       }
     }
   }
@@ -98,11 +115,9 @@ DemSetup makeDemSetup(const json& p) {
       wall.vibration.frequency = wj.at("vibration_frequency");
       wall.vibration.direction = vec(wj.at("vibration_direction")).normalized();
       for (const auto& s : out.species) {
-        wall.material.push_back(material(wj, s.mass));
-        const auto& m = wall.material.back();
-        out.timings.push_back({s.name + "-wall " + std::to_string(w), "/walls/" + std::to_string(w),
-                               dem::linearRestitution(m.kn, m.gammaN, s.mass),
-                               dem::linearContactTime(m.kn, m.gammaN, s.mass)});
+        wall.material.push_back(material(wj, *law, s.mass, 2.0 * s.radius));
+        out.timings.push_back(timing(s.name + "-wall " + std::to_string(w), "/walls/" + std::to_string(w), wj, *law,
+                                     wall.material.back(), s.mass, 2.0 * s.radius));
       }
       e.walls.push_back(std::move(wall));
     }

@@ -1,6 +1,7 @@
 #pragma once
 // Turns the `dem` stage's resolved parameters (SI) into the engine's setup: per species-pair and
-// per wall-species materials (restitution inverted with each pair's m_eff, Eqs. 6.9-6.10), walls,
+// per wall-species materials (restitution converted with each pair's m_eff, contact/Conversions.hpp),
+// walls,
 // and the list of problems that must stop a run before its first step (overdamped pairs, a time
 // step above t_c/10). Shared by the stage's config check and its run, so both see the same
 // numbers.
@@ -23,8 +24,9 @@ struct DemSpecies {
 struct PairTiming {
   std::string pair;     // "small-large", "small-wall 0"
   std::string pointer;  // JSON pointer of the material that sets it, relative to /params
-  double restitution;   // Eq. 6.9 (linear model)
-  double contactTime;   // Eq. 6.10; +inf when overdamped
+  double restitution;   // of a head-on collision (Eq. 6.9 for a linear spring)
+  double contactTime;   // Eq. 6.10 for a linear spring; +inf when overdamped
+  bool exact;           // false: a Hertzian pair without impact_velocity, given the linear spring's
 };
 
 struct DemSetup {

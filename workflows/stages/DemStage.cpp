@@ -1,6 +1,7 @@
 #include "workflows/stages/DemStage.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DemSeriesColumns.hpp"
+#include "engines/dem/contact/Conversions.hpp"
 #include "workflows/stages/DemSetup.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -31,7 +33,8 @@ std::int64_t runSteps(const json& p) {
   return static_cast<std::int64_t>(std::ceil(p.at("duration").get<double>() / p.at("dt").get<double>() - 1e-9));
 }
 
-// The contact coefficients shared by particle pairs and walls (Eqs. 6.5-6.6, Table 6.1).
+// The contact coefficients shared by particle pairs and walls (Eqs. 6.5-6.6, Table 6.1). Which
+// damping keys apply depends on the stage's damping_model (checked in checkParams).
 void addContactParams(ParamSchema& s) {
   s.add(ParamSpec::quantity("kn", Dimension::stiffness())
             .required()
@@ -42,17 +45,52 @@ void addContactParams(ParamSchema& s) {
                .doc("tangential spring constant k_t (default 2/7 k_n)"))
       .add(ParamSpec::quantity("gamma_n", Dimension::frequency())
                .min(0.0)
-               .doc("normal damping gamma_n, times m_eff in Eq. 6.5 (or give restitution)"))
+               .doc("normal damping rate gamma_n, times m_eff in Eq. 6.5 (damping_model mass_scaled)"))
+      .add(ParamSpec::quantity("eta_n", Dimension{0, 1, -1})
+               .min(0.0)
+               .doc("normal dashpot coefficient eta_n: F = -eta_n v_n (damping_model dimensional)"))
       .add(ParamSpec::number("restitution")
                .min(0.0, false)
                .max(1.0)
-               .doc("normal restitution e_n: gamma_n from Eqs. 6.9-6.10 with each pair's m_eff"))
+               .doc("normal restitution e_n: the normal damping from Eqs. 6.9-6.10 with each pair's m_eff (linear "
+                    "spring), or from a head-on collision at impact_velocity (hertz)"))
+      .add(ParamSpec::quantity("impact_velocity", Dimension::velocity())
+               .positive()
+               .doc("the impact speed at which restitution holds (needed with normal_model hertz, whose "
+                    "restitution depends on it)"))
       .add(ParamSpec::quantity("gamma_t", Dimension::frequency())
-               .defaultValue(0.0)
                .min(0.0)
-               .doc("tangential damping gamma_t (Eq. 6.6)"))
+               .doc("tangential damping rate gamma_t (Eq. 6.6; default 0)"))
+      .add(ParamSpec::quantity("eta_t", Dimension{0, 1, -1})
+               .min(0.0)
+               .doc("tangential dashpot coefficient eta_t (damping_model dimensional; default 0)"))
       .add(ParamSpec::number("mu").defaultValue(0.5).min(0.0).doc("Coulomb friction coefficient"))
-      .exactlyOneOf({"gamma_n", "restitution"}, "the normal damping");
+      .exactlyOneOf({"gamma_n", "eta_n", "restitution"}, "the normal damping")
+      .atMostOneOf({"gamma_t", "eta_t"}, "the tangential damping")
+      .requiresKey("impact_velocity", "restitution");
+}
+
+// The damping keys a contact object may carry under the stage's damping_model, and that a
+// Hertzian restitution states its impact speed.
+void checkContactKeys(const json& c, const json& p, const std::string& where, core::json::Diagnostics& d) {
+  const bool dimensional = p.at("damping_model") == dem::contact::DimensionalDamping::name;
+  const std::array<const char*, 2> foreign = dimensional ? std::array<const char*, 2>{"gamma_n", "gamma_t"}
+                                                         : std::array<const char*, 2>{"eta_n", "eta_t"};
+  for (const char* key : foreign) {
+    if (c.contains(key)) {
+      d.add(where + "/" + key, std::string(key) + " does not apply with damping_model \"" +
+                                   p.at("damping_model").get<std::string>() + "\" (use " +
+                                   (dimensional ? "eta_n, eta_t" : "gamma_n, gamma_t") + ")");
+    }
+  }
+  const auto law = dem::contact::findContactLaw({p.at("normal_model"), p.at("damping_model"), p.at("tangential_model")});
+  if (law && c.contains("restitution") && !c.contains("impact_velocity") &&
+      !dem::contact::hasClosedFormCollision(*law)) {
+    d.add(where + "/restitution",
+          "with normal_model \"" + p.at("normal_model").get<std::string>() +
+              "\" the restitution depends on the impact speed: give impact_velocity (the speed at which it holds), "
+              "or the damping itself");
+  }
 }
 
 std::shared_ptr<ParamSchema> speciesSchema() {
@@ -166,9 +204,18 @@ DemStage::DemStage() {
       .add(ParamSpec::integer("series_points").defaultValue(200).min(1).doc("rows of series.csv, evenly spaced"))
       .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"))
       .add(ParamSpec::string("normal_model")
-               .defaultValue("linear")
-               .options({"linear", "hertz"})
-               .doc("f(delta/d) of Eq. 6.5: 1 or sqrt(delta/d)"))
+               .defaultValue(dem::contact::LinearSpring::name)
+               .options(dem::contact::normalModelNames())
+               .doc("normal spring: linear (f = 1) or hertz (f = sqrt(delta/d)) in Eqs. 6.5-6.6"))
+      .add(ParamSpec::string("damping_model")
+               .defaultValue(dem::contact::MassScaledDamping::name)
+               .options(dem::contact::dampingModelNames())
+               .doc("dashpots: mass_scaled (-f gamma m_eff v, Eqs. 6.5-6.6) or dimensional (-eta v, Table 7.1)"))
+      .add(ParamSpec::string("tangential_model")
+               .defaultValue(dem::contact::ProjectedHistory::name)
+               .options(dem::contact::tangentialModelNames())
+               .doc("tangential history: history (Eq. 6.4, projected and rescaled) or lammps_history (LAMMPS "
+                    "gran/hooke/history's order, to reproduce a LAMMPS run)"))
       .add(ParamSpec::quantity("shear_rate", Dimension::frequency())
                .defaultValue(0.0)
                .doc("Lees-Edwards simple shear rate: u_x = shear_rate (y - y_mid), needs periodic \"xy\""))
@@ -257,10 +304,12 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
               "more particles of species \"" + s.at("name").get<std::string>() + "\" placed than its count");
     }
   }
+  checkContactKeys(p.at("contact"), p, ptr + "/contact", d);
   if (p.contains("pair_contacts")) {
     for (std::size_t k = 0; k < p["pair_contacts"].size(); ++k) {
       const json& pc = p["pair_contacts"][k];
       const std::string where = ptr + "/pair_contacts/" + std::to_string(k);
+      checkContactKeys(pc, p, where, d);
       for (const char* f : {"species", "with"}) {
         if (names.count(pc.at(f).get<std::string>()) == 0)
           d.add(where + "/" + f, "no species named \"" + pc.at(f).get<std::string>() + "\"");
@@ -304,6 +353,7 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     for (std::size_t w = 0; w < p["walls"].size(); ++w) {
       const json& wj = p["walls"][w];
       const std::string where = ptr + "/walls/" + std::to_string(w);
+      checkContactKeys(wj, p, where, d);
       const auto& dir = wj.at("direction");
       if (std::hypot(dir[0].get<double>(), dir[1].get<double>(), dir[2].get<double>()) == 0.0)
         d.add(where + "/direction", "direction must not be zero");
@@ -338,8 +388,9 @@ namespace {
 
 void logContactTimes(const StageContext& ctx, const DemSetup& setup) {
   for (const auto& t : setup.timings) {
-    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {:.4g} s, largest safe dt (t_c/10) = {:.4g} s", ctx.stage(), t.pair,
-                 t.restitution, t.contactTime, t.contactTime / 10.0);
+    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {:.4g} s, largest safe dt (t_c/10) = {:.4g} s{}", ctx.stage(),
+                 t.pair, t.restitution, t.contactTime, t.contactTime / 10.0,
+                 t.exact ? "" : " (linear-spring estimate: a Hertzian e_n depends on the impact speed)");
     if (setup.engine.dt > t.contactTime / 20.0) {
       spdlog::warn("{}: dt = {:.4g} s is above t_c/20 for pair {} (the reference recommends about t_c/50)", ctx.stage(),
                    setup.engine.dt, t.pair);

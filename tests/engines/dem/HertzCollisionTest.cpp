@@ -73,7 +73,7 @@ CollisionResult measure(Simulation& sim, Gap gap, Speed normalSpeed, double appr
 
 CollisionResult enginePair(double v, double dt) {
   SimulationSetup setup = openBox(table61Particle(), 1, dt);
-  setup.model = NormalModel::Hertz;
+  setup.contact.normal = "hertz";
   Particles p;
   const double m = sphereMass(1.0, 1.91);
   const double gap0 = 0.01;
@@ -92,7 +92,7 @@ constexpr double kLargeRho = 13.54;
 
 CollisionResult engineWall(double v, double dt) {
   SimulationSetup setup = openBox(table61Particle(), 1, dt);
-  setup.model = NormalModel::Hertz;
+  setup.contact.normal = "hertz";
   setup.walls.push_back(floorWall(table61Wall()));
   Particles p;
   const double a = kLargeD / 2;

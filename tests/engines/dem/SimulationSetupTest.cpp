@@ -21,7 +21,7 @@ SimulationSetup twoSpeciesWithWalls() {
   s.gravity = Vec3(0.1, 0, -9.81);
   s.backgroundDamping = 0.02;
   s.skin = 0.3;
-  s.model = NormalModel::Hertz;
+  s.contact = {"hertz", "dimensional", "lammps_history"};
   s.pairMaterial[1].mu = 0.1;  // one pair differs
   s.pairMaterial[2].mu = 0.1;
   Wall cylinder = dem::testing::floorWall(dem::testing::table61Wall(0.3), 0.0, 2);
@@ -46,7 +46,7 @@ TEST(SimulationSetup, JsonRoundTripIsExact) {
   EXPECT_EQ(back.lo, s.lo);
   EXPECT_EQ(back.walls[1].vibration.direction, s.walls[1].vibration.direction);
   EXPECT_EQ(back.material(0, 1).mu, 0.1);
-  EXPECT_EQ(back.model, NormalModel::Hertz);
+  EXPECT_EQ(back.contact, s.contact);
   // The keys the dem stage's params share keep the stage's names, so pointers map one to one.
   for (const char* key : {"box_lo", "box_hi", "periodic", "gravity", "shear_rate", "dt", "planar", "normal_model"}) {
     EXPECT_TRUE(j.contains(key)) << key;
@@ -68,6 +68,12 @@ TEST(SimulationSetup, EachRuleNamesItsKey) {
   s = twoSpeciesWithWalls();
   s.walls[0].material.pop_back();
   EXPECT_EQ(pointersOf(s.problems(1.0)), (std::vector<std::string>{"/walls/0"}));
+  s = twoSpeciesWithWalls();
+  s.contact.tangential = "rolling";
+  const auto problems = s.problems(1.0);
+  EXPECT_EQ(pointersOf(problems), (std::vector<std::string>{"/tangential_model"}));
+  EXPECT_NE(problems.at(0).message.find("registered: history, lammps_history"), std::string::npos)
+      << problems.at(0).message;
 }
 
 TEST(SimulationSetup, ANeighbourGridTooLargeToAllocateIsRefusedNamingTheBox) {

@@ -1,0 +1,33 @@
+#pragma once
+// What every contact sub-model works from and returns: the relative motion at one contact
+// (Eqs. 6.1-6.3) and the force on particle i split into elastic and dissipative parts.
+#include "core/Types.hpp"
+
+namespace grainbridge::dem::contact {
+
+// Relative motion at one contact, all as seen by particle i (n points from j to i).
+struct ContactKinematics {
+  Vec3 n;        // unit normal, from j towards i
+  double delta;  // overlap d - r_ij (Eq. 6.1), > 0
+  double d;      // a_i + a_j (2 a_i for a wall): the length in f(delta/d)
+  Vec3 vn;       // normal relative velocity (Eq. 6.2)
+  Vec3 vt;       // tangential relative velocity of the contact surfaces (Eq. 6.3)
+  double meff;   // m_i m_j / (m_i + m_j); the mobile partner's mass against a frozen one or a wall
+};
+
+// Force on particle i, split into its elastic (spring) and dissipative (dashpot) parts.
+struct ContactForce {
+  Vec3 normalElastic;
+  Vec3 normalDissipative;
+  Vec3 tangentialElastic;
+  Vec3 tangentialDissipative;
+  [[nodiscard]] Vec3 normal() const { return normalElastic + normalDissipative; }
+  [[nodiscard]] Vec3 tangential() const { return tangentialElastic + tangentialDissipative; }
+};
+
+// Whether an evaluation moves the contact's history on. A step does; the set-up evaluation of a
+// new run (forces for the first half kick, contacts for the first frame) does not, as in LAMMPS
+// (`update->setupflag`): otherwise every initial contact would start with its slip counted twice.
+enum class History { Advance, Keep };
+
+}  // namespace grainbridge::dem::contact
