@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages grainbridge needs (Debian 12). Usage:
 #   scripts/install-deps.sh            build + run dependencies
-#   scripts/install-deps.sh --tests    also what the test suite needs (ParaView's pvpython)
+#   scripts/install-deps.sh --tests    also what the test suite needs (ParaView's pvpython, LAMMPS)
 # As root it installs what is missing; otherwise it prints the apt-get line to run.
 set -euo pipefail
 
@@ -13,7 +13,7 @@ packages=(
   libgtest-dev libgmock-dev
 )
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(python3-paraview)
+  packages+=(python3-paraview lammps)
 fi
 
 missing=()

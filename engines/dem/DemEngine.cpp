@@ -33,7 +33,10 @@ void DemEngine::saveState(const std::filesystem::path& file, const std::string& 
 }
 
 const core::data::ParticleFrame& DemEngine::frame() {
-  if (!frame_) frame_ = sim_.frame();
+  if (!frame_) {
+    sim_.refreshContacts();  // the run's first frame after a preparation, or after a restart
+    frame_ = sim_.frame();
+  }
   return *frame_;
 }
 

@@ -10,9 +10,6 @@
 namespace grainbridge::dem {
 
 namespace {
-// The set-up evaluation still advances the history (the start-up artefact the next commit removes).
-constexpr contact::History kSetupHistory = contact::History::Advance;
-
 std::string vecText(const Vec3& v) {
   return "(" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")";
 }
@@ -110,11 +107,13 @@ void Simulation::setFrozen(std::int64_t id, bool frozen) {
   }
   // Ghost copies and the frozen-pair exclusion of the list follow at the rebuild.
   rebuild(false);
+  contactsCurrent_ = false;
 }
 
 void Simulation::setWallVibration(std::size_t wall, const Vibration& vibration) {
   GB_ASSERT(wall < setup_.walls.size(), "no such wall");
   setup_.walls[wall].vibration = vibration;
+  contactsCurrent_ = false;
 }
 
 void Simulation::restartClock() {
@@ -194,6 +193,17 @@ void Simulation::step(bool recordContacts) {
     p_.v[i] += (half * p_.invMass[i]) * p_.force[i];
     p_.omega[i] += (half * p_.invInertia[i]) * p_.torque[i];
   }
+}
+
+void Simulation::refreshContacts() {
+  if (contactsCurrent_) return;
+  const std::vector<Vec3> force = p_.force;
+  const std::vector<Vec3> torque = p_.torque;
+  const std::vector<Vec3> wallForce = wallForce_;
+  computeForces(Evaluation::Setup);
+  p_.force = force;
+  p_.torque = torque;
+  wallForce_ = wallForce;
 }
 
 void Simulation::forceRebuild(bool sort) {
@@ -336,6 +346,7 @@ void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
     p_.force[i].setZero();
     p_.torque[i].setZero();
   }
+  contactsCurrent_ = record;
   if (record) {
     recordedContacts_ = {};
     recordedWallContacts_ = {};
@@ -377,8 +388,8 @@ void Simulation::contactForces(Evaluation evaluation) {
       wallForces<Law, true, History::Advance>();
       break;
     case Evaluation::Setup:
-      pairForces<Law, true, kSetupHistory>();
-      wallForces<Law, true, kSetupHistory>();
+      pairForces<Law, true, contact::History::Keep>();
+      wallForces<Law, true, contact::History::Keep>();
       break;
   }
 }

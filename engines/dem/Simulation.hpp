@@ -72,8 +72,13 @@ class Simulation {
   // history is carried over by particle ids, so trajectories do not depend on when this happens.
   void forceRebuild(bool sort);
 
-  // The current state as a frame of the data model; contacts as recorded by the last step.
+  // The current state as a frame of the data model; contacts as recorded by the last step
+  // (call refreshContacts() first when that step did not record them).
   [[nodiscard]] core::data::ParticleFrame frame() const;
+  // Records the contacts of the current state when the last force evaluation did not (after
+  // unrecorded steps, a preparation or a restart): a set-up evaluation, history kept and the
+  // forces the next half kick uses put back, so the trajectory does not depend on it.
+  void refreshContacts();
 
   // Preparation protocols (Section 6.2's two-step preparation): hold particles in place with
   // infinite mass, change a wall's vibration between phases, start the clock of a new phase.
@@ -130,6 +135,7 @@ class Simulation {
   // Wall contact history u_t per (owned particle, wall), carried with the particle on re-sort.
   std::vector<Vec3> wallHistory_;
   std::vector<Vec3> wallForce_;
+  bool contactsCurrent_ = false;  // recordedContacts_ belong to the current state
   core::data::ContactList recordedContacts_;
   core::data::WallContactList recordedWallContacts_;
 };

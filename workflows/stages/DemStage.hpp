@@ -14,7 +14,10 @@ class DemStage final : public StageType {
   // 2: series.csv gains top_z_<species> (free surface)
   // 3: the kinetic stress in series.csv takes C about the mean peculiar velocity under Lees-Edwards
   // 4: the Lees-Edwards rebuild counts the offset drift with both displacements
-  [[nodiscard]] int implVersion() const override { return 4; }
+  // 5: the set-up force evaluation keeps the contact history (initial contacts no longer start
+  //    with their slip counted twice; LAMMPS does the same); the first frame after a preparation
+  //    carries the contacts of its own state
+  [[nodiscard]] int implVersion() const override { return 5; }
   [[nodiscard]] std::string summary() const override {
     return "soft-sphere DEM: random insertion, gravity, frictional contacts with history, walls; frames and series";
   }
