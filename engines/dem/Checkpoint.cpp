@@ -9,6 +9,21 @@ namespace grainbridge::dem {
 
 namespace fs = std::filesystem;
 
+namespace {
+void readArray(const core::io::H5InputFile& f, const char* name, std::size_t n, std::vector<std::int64_t>& a) {
+  a = f.readInt64s(name, {n});
+}
+void readArray(const core::io::H5InputFile& f, const char* name, std::size_t n, std::vector<std::int32_t>& a) {
+  a = f.readInt32s(name, {n});
+}
+void readArray(const core::io::H5InputFile& f, const char* name, std::size_t n, std::vector<double>& a) {
+  a = f.readDoubles(name, {n});
+}
+void readArray(const core::io::H5InputFile& f, const char* name, std::size_t n, std::vector<Vec3>& a) {
+  a = f.readVec3s(name, {n});
+}
+}  // namespace
+
 void writeCheckpoint(const fs::path& path, const EngineState& s, const std::string& fingerprint) {
   const fs::path tmp = path.string() + ".tmp";
   {
@@ -18,22 +33,10 @@ void writeCheckpoint(const fs::path& path, const EngineState& s, const std::stri
     f.writeAttribute("/", "time", s.time);
     f.writeAttribute("/", "step", static_cast<std::int64_t>(s.step));
     f.writeAttribute("/", "rebuilds_since_sort", static_cast<std::int64_t>(s.rebuildsSinceSort));
-    const auto& p = s.particles;
-    f.writeDataset("id", p.id);
-    f.writeDataset("species", p.species);
-    f.writeDataset("radius", p.radius);
-    f.writeDataset("mass", p.mass);
-    std::vector<std::int32_t> frozen(p.nOwned);
-    for (std::size_t i = 0; i < p.nOwned; ++i) frozen[i] = p.isFrozen(i) ? 1 : 0;
-    f.writeDataset("frozen", frozen);
-    f.writeDataset("position", p.x);
-    f.writeDataset("velocity", p.v);
-    f.writeDataset("angular_velocity", p.omega);
-    f.writeDataset("force", p.force);
-    f.writeDataset("torque", p.torque);
-    f.writeDataset("coupling_a", p.couplingA);
-    f.writeDataset("coupling_b", p.couplingB);
-    f.writeDataset("coupling_u", p.couplingU);
+    // Every per-particle array by its name (Particles::forEach*Array), exactly as held.
+    auto write = [&f](const char* name, const auto& a) { f.writeDataset(name, a); };
+    Particles::forEachParticleArray(s.particles, write);
+    Particles::forEachOwnedArray(s.particles, write);
     f.writeDataset("build_position", s.buildPositions);
     std::vector<std::int64_t> low;
     std::vector<std::int64_t> high;
@@ -67,22 +70,11 @@ EngineState readCheckpoint(const fs::path& path, const std::string& fingerprint)
   s.time = f.readDoubleAttribute("/", "time");
   s.step = f.readIntAttribute("/", "step");
   s.rebuildsSinceSort = f.readIntAttribute("/", "rebuilds_since_sort");
-  const auto id = f.readInt64s("id", {std::nullopt});
-  const std::size_t n = id.size();
-  const auto species = f.readInt32s("species", {n});
-  const auto radius = f.readDoubles("radius", {n});
-  const auto mass = f.readDoubles("mass", {n});
-  const auto frozen = f.readInt32s("frozen", {n});
-  const auto x = f.readVec3s("position", {n});
-  const auto v = f.readVec3s("velocity", {n});
-  const auto w = f.readVec3s("angular_velocity", {n});
-  for (std::size_t i = 0; i < n; ++i)
-    s.particles.addOwned(id[i], species[i], radius[i], mass[i], x[i], v[i], w[i], frozen[i] != 0);
-  s.particles.force = f.readVec3s("force", {n});
-  s.particles.torque = f.readVec3s("torque", {n});
-  s.particles.couplingA = f.readVec3s("coupling_a", {n});
-  s.particles.couplingB = f.readDoubles("coupling_b", {n});
-  s.particles.couplingU = f.readVec3s("coupling_u", {n});
+  const std::size_t n = f.readInt64s("id", {std::nullopt}).size();
+  auto read = [&f, n](const char* name, auto& a) { readArray(f, name, n, a); };
+  Particles::forEachParticleArray(s.particles, read);
+  Particles::forEachOwnedArray(s.particles, read);
+  s.particles.nOwned = n;
   s.buildPositions = f.readVec3s("build_position", {n});
   const auto low = f.readInt64s("pair_low", {std::nullopt});
   const auto high = f.readInt64s("pair_high", {low.size()});

@@ -9,7 +9,8 @@
 
 namespace grainbridge::dem {
 
-inline constexpr int kCheckpointFormatVersion = 1;
+// 2: every per-particle array by name (inverse mass and inertia instead of a frozen flag)
+inline constexpr int kCheckpointFormatVersion = 2;
 
 // `fingerprint` identifies the run configuration (the stage key): a checkpoint of another
 // configuration is never resumed.

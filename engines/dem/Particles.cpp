@@ -1,34 +1,44 @@
 #include "engines/dem/Particles.hpp"
 
+#include <type_traits>
+
 #include "core/Error.hpp"
 
 namespace grainbridge::dem {
 
+namespace {
+template <class T>
+T zeroOf() {
+  if constexpr (std::is_arithmetic_v<T>)
+    return T{0};
+  else
+    return T::Zero();
+}
+}  // namespace
+
 void Particles::addOwned(std::int64_t globalId, std::int32_t speciesIndex, double a, double m, const Vec3& position,
                          const Vec3& velocity, const Vec3& angularVelocity, bool frozen) {
   GB_ASSERT(size() == nOwned, "owned particles are added before ghosts");
-  id.push_back(globalId);
-  species.push_back(speciesIndex);
-  radius.push_back(a);
-  mass.push_back(m);
-  invMass.push_back(frozen ? 0.0 : 1.0 / m);
-  invInertia.push_back(frozen ? 0.0 : 1.0 / (0.4 * m * a * a));  // solid sphere: I = 2/5 m a^2
-  x.push_back(position);
-  v.push_back(frozen ? Vec3::Zero() : velocity);
-  omega.push_back(frozen ? Vec3::Zero() : angularVelocity);
-  force.push_back(Vec3::Zero());
-  torque.push_back(Vec3::Zero());
-  couplingA.push_back(Vec3::Zero());
-  couplingB.push_back(0.0);
-  couplingU.push_back(Vec3::Zero());
-  ++nOwned;
+  // Every array grows by a zero (a new field starts at zero), then the given ones are set.
+  auto grow = [](const char* /*name*/, auto& array) {
+    array.push_back(zeroOf<typename std::decay_t<decltype(array)>::value_type>());
+  };
+  forEachParticleArray(*this, grow);
+  forEachOwnedArray(*this, grow);
+  const std::size_t i = nOwned++;
+  id[i] = globalId;
+  species[i] = speciesIndex;
+  radius[i] = a;
+  mass[i] = m;
+  invMass[i] = frozen ? 0.0 : 1.0 / m;
+  invInertia[i] = frozen ? 0.0 : 1.0 / (0.4 * m * a * a);  // solid sphere: I = 2/5 m a^2
+  x[i] = position;
+  v[i] = frozen ? Vec3::Zero() : velocity;
+  omega[i] = frozen ? Vec3::Zero() : angularVelocity;
 }
 
 void Particles::clearGhosts() {
-  for (auto* a : {&radius, &mass, &invMass, &invInertia}) a->resize(nOwned);
-  for (auto* a : {&x, &v, &omega, &force, &torque}) a->resize(nOwned);
-  id.resize(nOwned);
-  species.resize(nOwned);
+  forEachParticleArray(*this, [this](const char* /*name*/, auto& a) { a.resize(nOwned); });
   ghostOwner.clear();
   ghostShift.clear();
   ghostVelocityShift.clear();
@@ -36,17 +46,14 @@ void Particles::clearGhosts() {
 }
 
 void Particles::addGhost(std::size_t owner, const Vec3& shift, const Vec3& velocityShift, std::int8_t shearCrossings) {
-  id.push_back(id[owner]);
-  species.push_back(species[owner]);
-  radius.push_back(radius[owner]);
-  mass.push_back(mass[owner]);
-  invMass.push_back(invMass[owner]);
-  invInertia.push_back(invInertia[owner]);
-  x.push_back(x[owner] + shift);
-  v.push_back(v[owner] + velocityShift);
-  omega.push_back(omega[owner]);
-  force.push_back(Vec3::Zero());
-  torque.push_back(Vec3::Zero());
+  forEachParticleArray(*this, [owner](const char* /*name*/, auto& a) {
+    auto value = a[owner];  // a copy: push_back may reallocate
+    a.push_back(value);
+  });
+  x.back() += shift;
+  v.back() += velocityShift;
+  force.back().setZero();
+  torque.back().setZero();
   ghostOwner.push_back(owner);
   ghostShift.push_back(shift);
   ghostVelocityShift.push_back(velocityShift);
@@ -64,31 +71,15 @@ void Particles::refreshGhosts(double shearDrift) {
   }
 }
 
-namespace {
-template <class T>
-void permute(std::vector<T>& a, const std::vector<std::size_t>& order) {
-  std::vector<T> out(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) out[k] = a[order[k]];
-  a.swap(out);
-}
-}  // namespace
-
 void Particles::permuteOwned(const std::vector<std::size_t>& order) {
   GB_ASSERT(size() == nOwned && order.size() == nOwned, "permuteOwned needs no ghosts and a full order");
-  permute(id, order);
-  permute(species, order);
-  permute(radius, order);
-  permute(mass, order);
-  permute(invMass, order);
-  permute(invInertia, order);
-  permute(x, order);
-  permute(v, order);
-  permute(omega, order);
-  permute(force, order);
-  permute(torque, order);
-  permute(couplingA, order);
-  permute(couplingB, order);
-  permute(couplingU, order);
+  auto permute = [&order](const char* /*name*/, auto& a) {
+    std::remove_reference_t<decltype(a)> out(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out[k] = a[order[k]];
+    a.swap(out);
+  };
+  forEachParticleArray(*this, permute);
+  forEachOwnedArray(*this, permute);
 }
 
 }  // namespace grainbridge::dem

@@ -42,6 +42,33 @@ struct Particles {
   // x shift follows the growing offset: + crossings * (offset drift since the list was built).
   std::vector<std::int8_t> ghostShearCrossings;
 
+  // Every per-particle array, declared here once: the ghost, re-sort and checkpoint code visit
+  // these lists, so a new field (drag, void fraction) is one member plus one line below.
+  // f(name, array): `name` is its dataset in checkpoints.
+  // Arrays of owned and ghost particles; a ghost copies its owner's values (then the position and
+  // velocity get the image's shift, force and torque start at zero).
+  template <class Self, class F>
+  static void forEachParticleArray(Self& p, F&& f) {
+    f("id", p.id);
+    f("species", p.species);
+    f("radius", p.radius);
+    f("mass", p.mass);
+    f("inv_mass", p.invMass);
+    f("inv_inertia", p.invInertia);
+    f("position", p.x);
+    f("velocity", p.v);
+    f("angular_velocity", p.omega);
+    f("force", p.force);
+    f("torque", p.torque);
+  }
+  // Arrays of owned particles only (ghosts never read them).
+  template <class Self, class F>
+  static void forEachOwnedArray(Self& p, F&& f) {
+    f("coupling_a", p.couplingA);
+    f("coupling_b", p.couplingB);
+    f("coupling_u", p.couplingU);
+  }
+
   [[nodiscard]] std::size_t size() const { return id.size(); }
   [[nodiscard]] bool isFrozen(std::size_t i) const { return invMass[i] == 0.0; }
 

@@ -361,17 +361,13 @@ void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
     p_.force[o] += p_.force[p_.nOwned + k];
     p_.torque[o] += p_.torque[p_.nOwned + k];
   }
-  // Body forces: gravity, background damping -b v (Eq. 6.7), TF-DEM coupling a + B (u - v).
-  const double b = setup_.backgroundDamping;
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     if (p_.isFrozen(i)) {
       p_.force[i].setZero();
       p_.torque[i].setZero();
-      continue;
     }
-    p_.force[i] +=
-        p_.mass[i] * setup_.gravity - b * p_.v[i] + p_.couplingA[i] + p_.couplingB[i] * (p_.couplingU[i] - p_.v[i]);
   }
+  bodyForces_.apply(p_, setup_);  // gravity, background damping (Eq. 6.7), TF-DEM coupling
   if (setup_.planarAxis >= 0) constrainToPlane();
 }
 

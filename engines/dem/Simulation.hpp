@@ -1,8 +1,9 @@
 #pragma once
 // The soft-sphere DEM engine (Chapter 6 of the reference, Eqs. 6.1-6.10): velocity Verlet for
-// translation and rotation, contact forces from a spring-dashpot law with tangential history,
-// gravity and background damping (Eq. 6.7), torques with the lever arm to the contact point
-// (Eq. 6.8 generalised to unequal radii), periodic images as ghosts, rigid and vibrating walls.
+// translation and rotation, contact forces from a composed contact law (contact/), body forces
+// from a list (BodyForces.hpp: gravity, background damping of Eq. 6.7, TF-DEM coupling), torques
+// with the lever arm to the contact point (Eq. 6.8 generalised to unequal radii), periodic images
+// as ghosts, rigid and vibrating walls.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "core/Types.hpp"
 #include "core/data/ParticleFrame.hpp"
+#include "engines/dem/BodyForces.hpp"
 #include "engines/dem/NeighborList.hpp"
 #include "engines/dem/Particles.hpp"
 #include "engines/dem/SimulationSetup.hpp"
@@ -67,6 +69,9 @@ class Simulation {
   [[nodiscard]] double dashpotDissipation() const { return dissipation_; }
   // Total force each wall received from the particles at the last force evaluation.
   [[nodiscard]] const std::vector<Vec3>& wallForces() const { return wallForce_; }
+  // The body forces the step applies; each can record what it applied (BodyForces.hpp).
+  BodyForces& bodyForces() { return bodyForces_; }
+  [[nodiscard]] const BodyForces& bodyForces() const { return bodyForces_; }
 
   // Rebuilds the neighbour list now (optionally re-sorting particles by cell first); contact
   // history is carried over by particle ids, so trajectories do not depend on when this happens.
@@ -123,6 +128,7 @@ class Simulation {
 
   SimulationSetup setup_;
   contact::AnyContactLaw law_;  // the composition setup_.contact names
+  BodyForces bodyForces_;
   Particles p_;
   NeighborList list_;
   double cutoff_ = 0.0;

@@ -53,6 +53,55 @@ TEST(Coupling, LinearDragRelaxesToTerminalVelocity) {
   EXPECT_LT(fineFinal, 1e-4);
 }
 
+// Body forces record what they applied (BodyForces.hpp): TF-DEM hands the gas exactly the
+// coupling force the particles received, so the recorded parts must add up to the force the
+// step integrated, bit for bit, and a frozen particle receives nothing.
+TEST(BodyForces, RecordExactlyWhatTheParticlesReceived) {
+  SimulationSetup s = openBox(table61Particle());
+  s.gravity = Vec3(0.1, 0, -9.81);
+  s.backgroundDamping = 1e-3;
+  s.dt = 1e-4;
+  Particles p;
+  p.addOwned(0, 0, 0.5, 2e-3, Vec3(1, 1, 1), Vec3(0.2, 0, 0), Vec3::Zero(), false);  // free: no contacts
+  p.addOwned(1, 0, 0.5, 2e-3, Vec3(3, 3, 3), Vec3::Zero(), Vec3::Zero(), true);      // frozen
+  for (std::size_t i = 0; i < 2; ++i) {
+    p.couplingB[i] = 0.05;
+    p.couplingU[i] = Vec3(0.3, 0.0, 0.1);
+    p.couplingA[i] = Vec3(0.0, 1e-3, 0.0);
+  }
+  Simulation sim(s, std::move(p));
+  sim.bodyForces().setRecording<Gravity>(true);
+  sim.bodyForces().setRecording<BackgroundDamping>(true);
+  sim.bodyForces().setRecording<FluidCoupling>(true);
+  EXPECT_TRUE(sim.bodyForces().applied<Gravity>().empty());  // nothing recorded before a step
+  for (int k = 0; k < 3; ++k) sim.step();
+  const auto i = *sim.indexOf(0);
+  const auto& q = sim.particles();
+  const Vec3 g = sim.bodyForces().applied<Gravity>()[i];
+  const Vec3 b = sim.bodyForces().applied<BackgroundDamping>()[i];
+  const Vec3 c = sim.bodyForces().applied<FluidCoupling>()[i];
+  // The force of the last evaluation (the next half kick uses it) is the recorded sum, exactly.
+  EXPECT_EQ(q.force[i], Vec3(Vec3::Zero() + g + b + c));
+  // Each part is its law at the velocity of the evaluation (the half-step velocity).
+  const Vec3 vHalf = q.v[i] - 0.5 * s.dt * q.invMass[i] * q.force[i];
+  EXPECT_LE((g - q.mass[i] * s.gravity).norm(), 1e-15 * g.norm());
+  EXPECT_LE((b + s.backgroundDamping * vHalf).norm(), 1e-12 * b.norm());
+  EXPECT_LE((c - (q.couplingA[i] + q.couplingB[i] * (q.couplingU[i] - vHalf))).norm(), 1e-12 * c.norm());
+  const auto frozen = *sim.indexOf(1);
+  EXPECT_EQ(sim.bodyForces().applied<FluidCoupling>()[frozen], Vec3::Zero());
+  EXPECT_EQ(q.force[frozen], Vec3::Zero());
+  // Recording changes nothing in the trajectory.
+  SimulationSetup s2 = s;
+  Particles p2;
+  p2.addOwned(0, 0, 0.5, 2e-3, Vec3(1, 1, 1), Vec3(0.2, 0, 0), Vec3::Zero(), false);
+  p2.couplingB[0] = 0.05;
+  p2.couplingU[0] = Vec3(0.3, 0.0, 0.1);
+  p2.couplingA[0] = Vec3(0.0, 1e-3, 0.0);
+  Simulation plain(s2, std::move(p2));
+  for (int k = 0; k < 3; ++k) plain.step();
+  EXPECT_EQ(plain.particles().v[0], q.v[i]);
+}
+
 TEST(Planar, BedStaysInItsPlaneAndSpinsAboutItsNormal) {
   SimulationSetup s = openBox(table61Particle());
   s.gravity = Vec3(0, 0, -1);

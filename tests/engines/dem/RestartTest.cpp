@@ -4,7 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
+#include <type_traits>
 
+#include <filesystem>
+
+#include "engines/dem/Checkpoint.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
 #include "tests/support/ValidationRecord.hpp"
@@ -96,4 +101,42 @@ TEST(Restart, CapturedStateIsIndependentOfOutputRecording) {
     recorded.step(true);
   }
   expectBitwiseEqual(quiet, recorded);
+}
+
+// The checkpoint file holds every per-particle array Particles declares, by name, exactly: a
+// field added to that list (drag, void fraction) survives a restart without touching this code.
+TEST(Restart, CheckpointFileHoldsEveryParticleArray) {
+  Simulation sim(packingSetup(), packingParticles());
+  for (std::size_t i = 0; i < sim.particles().nOwned; ++i) {
+    auto& p = sim.mutableParticles();
+    p.couplingA[i] = Vec3(1e-3 * static_cast<double>(i), 2.0, -0.5);
+    p.couplingB[i] = 0.01 * static_cast<double>(i) + 1.0 / 3.0;
+    p.couplingU[i] = Vec3(0.1, 0.2, 1.0 / 7.0);
+  }
+  sim.run(200);
+  const EngineState state = sim.captureState();
+  const auto file = std::filesystem::temp_directory_path() / "grainbridge-restart-arrays.ckpt";
+  writeCheckpoint(file, state, "fingerprint");
+  const EngineState back = readCheckpoint(file, "fingerprint");
+  std::filesystem::remove(file);
+  ASSERT_EQ(back.particles.nOwned, state.particles.nOwned);
+  int arrays = 0;
+  auto compare = [&](const char* name, const auto& a) {
+    ++arrays;
+    bool found = false;
+    auto match = [&](const char* otherName, const auto& b) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(a)>, std::decay_t<decltype(b)>>) {
+        if (std::string(otherName) == name) {
+          found = true;
+          EXPECT_TRUE(a == b) << name;
+        }
+      }
+    };
+    Particles::forEachParticleArray(back.particles, match);
+    Particles::forEachOwnedArray(back.particles, match);
+    EXPECT_TRUE(found) << name;
+  };
+  Particles::forEachParticleArray(state.particles, compare);
+  Particles::forEachOwnedArray(state.particles, compare);
+  EXPECT_EQ(arrays, 14);
 }

@@ -1,0 +1,100 @@
+#pragma once
+// Body forces: what acts on a particle besides its contacts, as a list the step applies in order
+// (gravity, the background damping of Eq. 6.7, the TF-DEM coupling force a_p + B_p (u_p - v_p)
+// the fluid step sets). Each is a small struct; adding one is the struct plus one line in
+// `BodyForceList` below. Any of them can record what it applied to each owned particle at the
+// last force evaluation: TF-DEM hands the gas exactly the force the particles received.
+// Frozen particles receive none (their force is held at zero).
+#include <tuple>
+#include <vector>
+
+#include "core/Types.hpp"
+#include "engines/dem/Particles.hpp"
+#include "engines/dem/SimulationSetup.hpp"
+
+namespace grainbridge::dem {
+
+struct Gravity {
+  static constexpr const char* name = "gravity";
+  static bool active(const SimulationSetup& s) { return !s.gravity.isZero(0.0); }
+  static Vec3 on(const Particles& p, const SimulationSetup& s, std::size_t i) { return p.mass[i] * s.gravity; }
+};
+
+// Eq. 6.7: -b v, with the half-step velocity (as the coupling force).
+struct BackgroundDamping {
+  static constexpr const char* name = "background_damping";
+  static bool active(const SimulationSetup& s) { return s.backgroundDamping != 0.0; }
+  static Vec3 on(const Particles& p, const SimulationSetup& s, std::size_t i) { return -s.backgroundDamping * p.v[i]; }
+};
+
+// TF-DEM's coupling force on a particle (Chapter 7: drag and pressure gradient),
+// a_p + B_p (u_p - v_p), from the owned arrays couplingA, couplingB, couplingU the fluid step
+// fills once per fluid step; evaluated every DEM step with the particle's current velocity, so
+// the drag follows the particle between fluid steps.
+struct FluidCoupling {
+  static constexpr const char* name = "fluid_coupling";
+  static bool active(const SimulationSetup& /*s*/) { return true; }
+  static Vec3 on(const Particles& p, const SimulationSetup& /*s*/, std::size_t i) {
+    return p.couplingA[i] + p.couplingB[i] * (p.couplingU[i] - p.v[i]);
+  }
+};
+
+// One body force with its optional record (per owned particle, in the current particle order;
+// Particles::id names them).
+template <class Force>
+struct RecordedBodyForce {
+  bool record = false;
+  std::vector<Vec3> applied;
+};
+
+template <class... Forces>
+class BodyForceSet {
+ public:
+  // Adds every active force to the owned particles' force, in the list's order, summed first so
+  // the total is the same to the last bit whichever are recorded.
+  void apply(Particles& p, const SimulationSetup& s) {
+    const bool active[] = {Forces::active(s)...};
+    std::apply([&](auto&... r) { (prepare(r, p.nOwned), ...); }, records_);
+    for (std::size_t i = 0; i < p.nOwned; ++i) {
+      if (p.isFrozen(i)) continue;
+      Vec3 total = Vec3::Zero();
+      std::size_t k = 0;
+      std::apply([&](auto&... r) { (add<Forces>(r, active[k++], p, s, i, total), ...); }, records_);
+      p.force[i] += total;
+    }
+  }
+
+  // Keep (or stop keeping) what Force applied, from the next force evaluation on.
+  template <class Force>
+  void setRecording(bool on) {
+    std::get<RecordedBodyForce<Force>>(records_).record = on;
+  }
+  // What Force applied to each owned particle at the last evaluation (empty unless recording).
+  template <class Force>
+  [[nodiscard]] const std::vector<Vec3>& applied() const {
+    return std::get<RecordedBodyForce<Force>>(records_).applied;
+  }
+
+ private:
+  template <class Force>
+  static void prepare(RecordedBodyForce<Force>& r, std::size_t n) {
+    if (r.record) r.applied.assign(n, Vec3::Zero());
+  }
+  template <class Force>
+  static void add(RecordedBodyForce<Force>& r, bool active, const Particles& p, const SimulationSetup& s, std::size_t i,
+                  Vec3& total) {
+    if (!active) return;
+    const Vec3 f = Force::on(p, s, i);
+    total += f;
+    if (r.record) r.applied[i] = f;
+  }
+
+  std::tuple<RecordedBodyForce<Forces>...> records_;
+};
+
+// ---- the list: one line per body force, applied in this order -------------------------------
+using BodyForces = BodyForceSet<Gravity,            //
+                                BackgroundDamping,  //
+                                FluidCoupling>;
+
+}  // namespace grainbridge::dem
