@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 
+#include "engines/dem/contact/Conversions.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
 #include "tests/support/ValidationNote.hpp"
 #include "tests/support/ValidationRecord.hpp"
@@ -71,8 +72,8 @@ CollisionResult measure(Simulation& sim, Gap gap, Speed normalSpeed, double appr
   return {normalSpeed() / approachSpeed, end - start};
 }
 
-CollisionResult enginePair(double v, double dt) {
-  SimulationSetup setup = openBox(table61Particle(), 1, dt);
+CollisionResult enginePair(double v, double dt, const PairMaterial& material = table61Particle()) {
+  SimulationSetup setup = openBox(material, 1, dt);
   setup.contact.normal = "hertz";
   Particles p;
   const double m = sphereMass(1.0, 1.91);
@@ -170,4 +171,26 @@ TEST(HertzCollision, WallUsesTwiceTheRadius) {
   for (double v : {0.1, 1.0, 5.0}) {
     expectWithin(engineWall(v, 2e-4), hertzOde(v, 2e5, 40.0, m, kLargeD, 1e-7), "wall", v);
   }
+}
+
+// A Hertzian restitution holds at one impact speed (issue 13): the damping the dem stage sets
+// for `restitution` + `impact_velocity` (contact/Conversions.hpp) gives that restitution when the
+// engine collides the pair at that speed, and a different one at another speed.
+TEST(HertzCollision, RestitutionHoldsAtTheStatedImpactSpeed) {
+  const contact::AnyContactLaw hertz =
+      contact::ContactLaw<contact::HertzSpring, contact::MassScaledDamping, contact::ProjectedHistory>{};
+  const double m = sphereMass(1.0, 1.91);
+  const PairMaterial asked = contact::withRestitution(hertz, table61Particle(), 0.8, 0.5 * m, 1.0, 1.0);
+  EXPECT_NEAR(contact::headOnCollision(hertz, asked, 0.5 * m, 1.0, 1.0).restitution, 0.8, 1e-9);
+  const auto atStated = enginePair(1.0, 2e-5, asked);
+  const auto faster = enginePair(3.0, 2e-5, asked);
+  std::printf("Hertz, e asked 0.8 at v = 1: engine e %.5f at v = 1, %.5f at v = 3 (gamma_n %.4f)\n",
+              atStated.restitution, faster.restitution, asked.gammaN);
+  EXPECT_NEAR(atStated.restitution, 0.8, 0.002);
+  EXPECT_LT(faster.restitution, atStated.restitution - 0.01);  // viscoelastic Hertz: e falls with speed
+  // A linear spring's restitution has its closed form and no speed dependence.
+  const contact::AnyContactLaw linear =
+      contact::ContactLaw<contact::LinearSpring, contact::MassScaledDamping, contact::ProjectedHistory>{};
+  const PairMaterial lin = contact::withRestitution(linear, table61Particle(), 0.8, 0.5 * m, 1.0, 0.0);
+  EXPECT_DOUBLE_EQ(lin.gammaN, gammaForRestitution(0.8, lin.kn, 0.5 * m));
 }

@@ -9,6 +9,7 @@
 
 #include "core/units/Quantity.hpp"
 #include "engines/dem/Material.hpp"
+#include "tests/engines/dem/DemTestSupport.hpp"
 
 using namespace grainbridge;
 using core::units::Dimension;
@@ -42,6 +43,38 @@ TEST(Table71Damping, RestitutionsAndContactTimesImpliedByTheDashpots) {
   // Contact times of the particle pairs: 7.48e-4 s (jet) and 3.57e-4 s (uniform).
   EXPECT_NEAR(dem::linearContactTime(k, si("18 dyne s/cm", dashpot) / (jet / 2), jet / 2), 7.48e-4, 0.01e-4);
   EXPECT_NEAR(dem::linearContactTime(k, si("1.77 dyne s/cm", dashpot) / (uniform / 2), uniform / 2), 3.57e-4, 0.01e-4);
+}
+
+// damping_model "dimensional" takes these coefficients as they are printed: with a linear spring,
+// eta = gamma m_eff gives the same collision as mass_scaled damping (an oblique, spinning one, so
+// both dashpots and the Coulomb cap act), to round-off.
+TEST(Table71Damping, DimensionalDashpotsEqualMassScaledOnesWithALinearSpring) {
+  const double m = dem::testing::sphereMass(1.0, 1.91);
+  const double meff = 0.5 * m;
+  auto collide = [&](const std::string& damping) {
+    dem::PairMaterial mat = dem::testing::table61Particle();
+    mat.gammaT = 20.0;
+    if (damping == "dimensional") {
+      mat.etaN = mat.gammaN * meff;
+      mat.etaT = mat.gammaT * meff;
+      mat.gammaN = mat.gammaT = 0.0;
+    }
+    dem::SimulationSetup setup = dem::testing::openBox(mat, 1, 1e-5);
+    setup.contact.damping = damping;
+    dem::Particles p;
+    p.addOwned(0, 0, 0.5, m, Vec3(-0.51, 0.3, 0), Vec3(1, 0, 0), Vec3(0, 0, 5), false);
+    p.addOwned(1, 0, 0.5, m, Vec3(0.51, 0, 0), Vec3(-1, 0, 0), Vec3::Zero(), false);
+    dem::Simulation sim(setup, p);
+    sim.run(4000);
+    return sim.particles();
+  };
+  const auto a = collide("mass_scaled");
+  const auto b = collide("dimensional");
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR((a.v[i] - b.v[i]).norm(), 0.0, 1e-12) << i;
+    EXPECT_NEAR((a.omega[i] - b.omega[i]).norm(), 0.0, 1e-10) << i;
+  }
+  EXPECT_GT((a.v[0] - Vec3(1, 0, 0)).norm(), 0.1);  // they did collide
 }
 
 }  // namespace
