@@ -126,6 +126,35 @@ TEST(DemStage, PairContactsOverrideOnePair) {
   EXPECT_NE(r.output.find("pair small-small: e_n = 0.9054"), std::string::npos) << r.output;
 }
 
+// Physical inputs instead of coefficients: a contact time and a restitution set k_n and gamma_n
+// per pair (Eqs. 6.9-6.10 inverted with each pair's m_eff), as the log shows; a Hertzian
+// restitution at a stated impact speed is met at that speed.
+TEST(DemStage, ContactTimeAndRestitutionSetTheCoefficients) {
+  TempDir work;
+  json cfg = bed();
+  // 0.01 t0 in the reduced units of bed(); the log speaks SI: t0 = sqrt(1 mm / g) = 0.0101 s.
+  cfg["stages"]["bed"]["params"]["contact"] = json::parse(R"({"contact_time": 0.01, "restitution": 0.7})");
+  writeText(work.path() / "wf.json", cfg.dump());
+  auto r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* pair :
+       {"pair small-small: e_n = 0.7000, t_c = 0.000101 s", "pair small-large: e_n = 0.7000, t_c = 0.000101 s",
+        "pair large-large: e_n = 0.7000, t_c = 0.000101 s"})
+    EXPECT_NE(r.output.find(pair), std::string::npos) << pair << "\n" << r.output;
+  cfg = bed();
+  cfg["stages"]["bed"]["params"]["normal_model"] = "hertz";
+  cfg["stages"]["bed"]["params"]["contact"] = json::parse(R"({"kn": 2e5, "restitution": 0.7, "impact_velocity": 0.5})");
+  writeText(work.path() / "wf.json", cfg.dump());
+  r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("pair small-small: e_n = 0.7000"), std::string::npos) << r.output;
+  // The wall keeps its gamma_n: with no impact speed, its Hertzian e_n is the linear estimate, and the log says so.
+  EXPECT_NE(r.output.find("pair small-wall 0: e_n = 0.8688, t_c = 7.1e-05 s, largest safe dt (t_c/10) = 7.1e-06 s "
+                          "(linear-spring estimate"),
+            std::string::npos)
+      << r.output;
+}
+
 TEST(DemStage, AParticleLeavingTheDomainStopsTheRunNamingStepAndParticle) {
   // No floor: the bed falls out of the bottom of the (non-periodic in z) box.
   TempDir work;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "engines/dem/contact/Conversions.hpp"
 
@@ -18,15 +19,20 @@ Vec3 vec(const json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>
 // (Eqs. 6.9-6.10 inverted for a linear spring; a collision at impact_velocity otherwise).
 dem::PairMaterial material(const json& c, const dem::contact::AnyContactLaw& law, double meff, double d) {
   dem::PairMaterial m;
-  m.kn = c.at("kn");
-  m.kt = c.contains("kt") ? c.at("kt").get<double>() : 2.0 / 7.0 * m.kn;  // Table 6.1: k_t = 2/7 k_n
+  m.kn = c.value("kn", 0.0);
   m.gammaN = c.value("gamma_n", 0.0);
   m.gammaT = c.value("gamma_t", 0.0);
   m.etaN = c.value("eta_n", 0.0);
   m.etaT = c.value("eta_t", 0.0);
   m.mu = c.at("mu");
-  if (c.contains("restitution"))
-    m = dem::contact::withRestitution(law, m, c.at("restitution"), meff, d, c.value("impact_velocity", 0.0));
+  const std::optional<double> e =
+      c.contains("restitution") ? std::optional<double>(c.at("restitution").get<double>()) : std::nullopt;
+  if (c.contains("contact_time")) {
+    m = dem::contact::withContactTime(law, m, c.at("contact_time"), e, meff);  // sets k_n (and the damping)
+  } else if (e) {
+    m = dem::contact::withRestitution(law, m, *e, meff, d, c.value("impact_velocity", 0.0));
+  }
+  m.kt = c.contains("kt") ? c.at("kt").get<double>() : 2.0 / 7.0 * m.kn;  // Table 6.1: k_t = 2/7 k_n
   return m;
 }
 

@@ -13,10 +13,10 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "engines/dem/DemEngine.hpp"
+#include "engines/dem/contact/Conversions.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DemSeriesColumns.hpp"
-#include "engines/dem/contact/Conversions.hpp"
 #include "workflows/stages/DemSetup.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -36,10 +36,10 @@ std::int64_t runSteps(const json& p) {
 // The contact coefficients shared by particle pairs and walls (Eqs. 6.5-6.6, Table 6.1). Which
 // damping keys apply depends on the stage's damping_model (checked in checkParams).
 void addContactParams(ParamSchema& s) {
-  s.add(ParamSpec::quantity("kn", Dimension::stiffness())
-            .required()
-            .positive()
-            .doc("normal spring constant k_n (Eq. 6.5)"))
+  s.add(ParamSpec::quantity("kn", Dimension::stiffness()).positive().doc("normal spring constant k_n (Eq. 6.5)"))
+      .add(ParamSpec::quantity("contact_time", Dimension::timeDim())
+               .positive()
+               .doc("contact time t_c instead of kn: k_n from Eq. 6.10 with each pair's m_eff (linear spring)"))
       .add(ParamSpec::quantity("kt", Dimension::stiffness())
                .min(0.0)
                .doc("tangential spring constant k_t (default 2/7 k_n)"))
@@ -65,6 +65,7 @@ void addContactParams(ParamSchema& s) {
                .min(0.0)
                .doc("tangential dashpot coefficient eta_t (damping_model dimensional; default 0)"))
       .add(ParamSpec::number("mu").defaultValue(0.5).min(0.0).doc("Coulomb friction coefficient"))
+      .exactlyOneOf({"kn", "contact_time"}, "the normal stiffness")
       .exactlyOneOf({"gamma_n", "eta_n", "restitution"}, "the normal damping")
       .atMostOneOf({"gamma_t", "eta_t"}, "the tangential damping")
       .requiresKey("impact_velocity", "restitution");
@@ -74,8 +75,8 @@ void addContactParams(ParamSchema& s) {
 // Hertzian restitution states its impact speed.
 void checkContactKeys(const json& c, const json& p, const std::string& where, core::json::Diagnostics& d) {
   const bool dimensional = p.at("damping_model") == dem::contact::DimensionalDamping::name;
-  const std::array<const char*, 2> foreign = dimensional ? std::array<const char*, 2>{"gamma_n", "gamma_t"}
-                                                         : std::array<const char*, 2>{"eta_n", "eta_t"};
+  const std::array<const char*, 2> foreign =
+      dimensional ? std::array<const char*, 2>{"gamma_n", "gamma_t"} : std::array<const char*, 2>{"eta_n", "eta_t"};
   for (const char* key : foreign) {
     if (c.contains(key)) {
       d.add(where + "/" + key, std::string(key) + " does not apply with damping_model \"" +
@@ -83,7 +84,12 @@ void checkContactKeys(const json& c, const json& p, const std::string& where, co
                                    (dimensional ? "eta_n, eta_t" : "gamma_n, gamma_t") + ")");
     }
   }
-  const auto law = dem::contact::findContactLaw({p.at("normal_model"), p.at("damping_model"), p.at("tangential_model")});
+  const auto law =
+      dem::contact::findContactLaw({p.at("normal_model"), p.at("damping_model"), p.at("tangential_model")});
+  if (law && c.contains("contact_time") && !dem::contact::hasClosedFormCollision(*law)) {
+    d.add(where + "/contact_time", "with normal_model \"" + p.at("normal_model").get<std::string>() +
+                                       "\" the contact time depends on the impact speed: give kn");
+  }
   if (law && c.contains("restitution") && !c.contains("impact_velocity") &&
       !dem::contact::hasClosedFormCollision(*law)) {
     d.add(where + "/restitution",

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/Error.hpp"
+
 namespace grainbridge::dem::contact {
 
 namespace {
@@ -110,6 +112,20 @@ PairMaterial withRestitution(const AnyContactLaw& law, PairMaterial m, double e,
           Damping::setNormalRate(m, 0.5 * (lo + hi), meff);
           return m;
         }
+      },
+      law);
+}
+
+PairMaterial withContactTime(const AnyContactLaw& law, PairMaterial m, double contactTime,
+                             std::optional<double> restitution, double meff) {
+  return std::visit(
+      [&](auto l) {
+        using Law = decltype(l);
+        GB_ASSERT(Law::Normal::closedFormCollision, "contact_time needs a closed-form collision");
+        if (restitution) Law::Damping::setNormalRate(m, -2.0 * std::log(*restitution) / contactTime, meff);
+        const double rate = Law::Damping::normalRate(m, meff);
+        m.kn = meff * (M_PI * M_PI / (contactTime * contactTime) + 0.25 * rate * rate);
+        return m;
       },
       law);
 }

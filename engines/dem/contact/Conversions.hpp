@@ -4,6 +4,8 @@
 // restitution. A linear spring has the closed forms of Eqs. 6.9-6.10; any other normal model is
 // integrated (a Hertzian contact's restitution depends on the impact speed, so it is asked for at
 // a stated one).
+#include <optional>
+
 #include "engines/dem/Material.hpp"
 #include "engines/dem/contact/ContactModels.hpp"
 
@@ -32,5 +34,13 @@ struct CollisionResponse {
 // Closed form (Eqs. 6.9-6.10 inverted) for a linear spring; bisection otherwise, to 1e-10 in e.
 [[nodiscard]] PairMaterial withRestitution(const AnyContactLaw& law, PairMaterial m, double e, double meff, double d,
                                            double impactSpeed);
+
+// The material with k_n set so that a head-on collision lasts contactTime (Eq. 6.10 inverted:
+// k_n = m_eff (pi^2 / t_c^2 + gamma_n^2 / 4)); with a restitution e (0 < e <= 1) the normal
+// damping is set too (Eq. 6.9: gamma_n = -2 ln(e) / t_c), else the material's own is kept. Only
+// for laws with a closed-form collision (a linear spring): a Hertzian contact time depends on the
+// impact speed, and the dem stage refuses contact_time there.
+[[nodiscard]] PairMaterial withContactTime(const AnyContactLaw& law, PairMaterial m, double contactTime,
+                                           std::optional<double> restitution, double meff);
 
 }  // namespace grainbridge::dem::contact
