@@ -4,7 +4,7 @@
 // the fluid step sets). Each is a small struct; adding one is the struct plus one line in
 // `BodyForceList` below. Any of them can record what it applied to each owned particle at the
 // last force evaluation: TF-DEM hands the gas exactly the force the particles received.
-// Frozen particles receive none (their force is held at zero).
+// Frozen particles receive none (their force and torque are held at zero).
 #include <tuple>
 #include <vector>
 
@@ -51,12 +51,17 @@ template <class... Forces>
 class BodyForceSet {
  public:
   // Adds every active force to the owned particles' force, in the list's order, summed first so
-  // the total is the same to the last bit whichever are recorded.
+  // the total is the same to the last bit whichever are recorded. A frozen particle's force and
+  // torque are set to zero instead.
   void apply(Particles& p, const SimulationSetup& s) {
     const bool active[] = {Forces::active(s)...};
     std::apply([&](auto&... r) { (prepare(r, p.nOwned), ...); }, records_);
     for (std::size_t i = 0; i < p.nOwned; ++i) {
-      if (p.isFrozen(i)) continue;
+      if (p.isFrozen(i)) {
+        p.force[i].setZero();
+        p.torque[i].setZero();
+        continue;
+      }
       Vec3 total = Vec3::Zero();
       std::size_t k = 0;
       std::apply([&](auto&... r) { (add<Forces>(r, active[k++], p, s, i, total), ...); }, records_);

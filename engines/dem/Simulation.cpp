@@ -361,13 +361,7 @@ void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
     p_.force[o] += p_.force[p_.nOwned + k];
     p_.torque[o] += p_.torque[p_.nOwned + k];
   }
-  for (std::size_t i = 0; i < p_.nOwned; ++i) {
-    if (p_.isFrozen(i)) {
-      p_.force[i].setZero();
-      p_.torque[i].setZero();
-    }
-  }
-  bodyForces_.apply(p_, setup_);  // gravity, background damping (Eq. 6.7), TF-DEM coupling
+  bodyForces_.apply(p_, setup_);  // gravity, background damping (Eq. 6.7), TF-DEM coupling; frozen: zero
   if (setup_.planarAxis >= 0) constrainToPlane();
 }
 

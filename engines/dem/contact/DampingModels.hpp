@@ -13,14 +13,15 @@ namespace grainbridge::dem::contact {
 struct MassScaledDamping {
   static constexpr const char* name = "mass_scaled";
   static constexpr const char* doc = "-f gamma m_eff v (Eqs. 6.5-6.6): gamma_n, gamma_t in 1/s";
-  static Vec3 normal(const ContactKinematics& c, const PairMaterial& m, double f) {
+  [[gnu::always_inline]] static Vec3 normal(const ContactKinematics& c, const PairMaterial& m, double f) {
     return (-f * m.gammaN * c.meff) * c.vn;
   }
-  static Vec3 tangential(const ContactKinematics& c, const PairMaterial& m, double f) {
+  [[gnu::always_inline]] static Vec3 tangential(const ContactKinematics& c, const PairMaterial& m, double f) {
     return (-f * m.gammaT * c.meff) * c.vt;
   }
   // -tangential(c, m, f) / f: what a capped contact's spring displacement is offset by.
-  static Vec3 tangentialPerScale(const ContactKinematics& c, const PairMaterial& m, double /*f*/) {
+  [[gnu::always_inline]] static Vec3 tangentialPerScale(const ContactKinematics& c, const PairMaterial& m,
+                                                        double /*f*/) {
     return m.gammaT * c.meff * c.vt;
   }
   static void setNormalRate(PairMaterial& m, double gammaN, double /*meff*/) { m.gammaN = gammaN; }
@@ -30,9 +31,13 @@ struct MassScaledDamping {
 struct DimensionalDamping {
   static constexpr const char* name = "dimensional";
   static constexpr const char* doc = "-eta v: eta_n, eta_t in kg/s (Table 7.1's dashpot coefficients)";
-  static Vec3 normal(const ContactKinematics& c, const PairMaterial& m, double /*f*/) { return -m.etaN * c.vn; }
-  static Vec3 tangential(const ContactKinematics& c, const PairMaterial& m, double /*f*/) { return -m.etaT * c.vt; }
-  static Vec3 tangentialPerScale(const ContactKinematics& c, const PairMaterial& m, double f) {
+  [[gnu::always_inline]] static Vec3 normal(const ContactKinematics& c, const PairMaterial& m, double /*f*/) {
+    return -m.etaN * c.vn;
+  }
+  [[gnu::always_inline]] static Vec3 tangential(const ContactKinematics& c, const PairMaterial& m, double /*f*/) {
+    return -m.etaT * c.vt;
+  }
+  [[gnu::always_inline]] static Vec3 tangentialPerScale(const ContactKinematics& c, const PairMaterial& m, double f) {
     return (m.etaT / f) * c.vt;
   }
   static void setNormalRate(PairMaterial& m, double gammaN, double meff) { m.etaN = gammaN * meff; }

@@ -12,7 +12,7 @@ struct LinearSpring {
   static constexpr const char* name = "linear";
   static constexpr const char* doc = "f = 1: linear spring (Eq. 6.5)";
   static constexpr bool closedFormCollision = true;  // Eqs. 6.9-6.10
-  static double scale(double /*delta*/, double /*d*/) { return 1.0; }
+  [[gnu::always_inline]] static double scale(double /*delta*/, double /*d*/) { return 1.0; }
 };
 
 struct HertzSpring {
@@ -20,7 +20,7 @@ struct HertzSpring {
   static constexpr const char* doc = "f = sqrt(delta/d): Hertzian spring (Eq. 6.5, Silbert et al. 2001)";
   // The restitution of a Hertzian contact depends on the impact speed: no closed form.
   static constexpr bool closedFormCollision = false;
-  static double scale(double delta, double d) { return std::sqrt(delta / d); }
+  [[gnu::always_inline]] static double scale(double delta, double d) { return std::sqrt(delta / d); }
 };
 
 }  // namespace grainbridge::dem::contact

@@ -25,8 +25,8 @@ struct ProjectedHistory {
   static constexpr int historySize = 3;  // u_t
 
   template <class Damping>
-  static void apply(const ContactKinematics& c, const PairMaterial& m, double f, double dt, Vec3& ut, History h,
-                    ContactForce& out) {
+  [[gnu::always_inline]] static void apply(const ContactKinematics& c, const PairMaterial& m, double f, double dt,
+                                           Vec3& ut, History h, ContactForce& out) {
     if (h == History::Advance) {
       const double before2 = ut.squaredNorm();
       if (before2 > 0.0) {
@@ -61,8 +61,8 @@ struct LammpsHistory {
   static constexpr int historySize = 3;  // u_t ("shear" in LAMMPS)
 
   template <class Damping>
-  static void apply(const ContactKinematics& c, const PairMaterial& m, double f, double dt, Vec3& ut, History h,
-                    ContactForce& out) {
+  [[gnu::always_inline]] static void apply(const ContactKinematics& c, const PairMaterial& m, double f, double dt,
+                                           Vec3& ut, History h, ContactForce& out) {
     const bool advance = h == History::Advance;
     if (advance) ut += c.vt * dt;
     const double before = ut.squaredNorm();  // LAMMPS's shrmag, taken before the projection
