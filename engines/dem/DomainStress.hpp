@@ -1,11 +1,8 @@
 #pragma once
-// Whole-domain stress of a frame by Eq. 2.3 of the reference,
-//   sigma = (1/V) sum_i [ m_i C_i C_i + sum_{j != i} 1/2 r_ij F_ij ],
-// which the engine writes per step in its series. Each particle pair is stored once, so its
-// two halves add to r_ij F_ij; a wall contact counts with the wall as j at the contact point
-// (branch r_i - contact point, full length). C_i is the velocity about the mean of the mobile
-// particles, and under Lees-Edwards shear also about the streaming profile
-// u_x = shear rate (y - y_mid). Sign: positive in compression (r_ij F_ij > 0 for repulsion), as in the reference.
+// The whole-domain stress the engine writes per step in its series: Eq. 2.3 over the box volume
+// V, sigma = (sum m C C + sum r_ij F_ij) / V, from core's one implementation of the sums
+// (core/data/WholeDomainStress.hpp, which extract's domain averages use too). Positive in
+// compression, as in the reference.
 #include "core/Types.hpp"
 #include "core/data/ParticleFrame.hpp"
 

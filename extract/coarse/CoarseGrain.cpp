@@ -12,7 +12,7 @@
 #include "core/grid/SegmentCellShares.hpp"
 #include "core/grid/SphereCellOverlap.hpp"
 #include "extract/coarse/ParticleContacts.hpp"
-#include "extract/coarse/StreamingProfile.hpp"
+#include "core/data/StreamingProfile.hpp"
 #include "extract/coarse/StressMeasures.hpp"
 
 namespace grainbridge::extract::coarse {

@@ -4,9 +4,10 @@
 #include <string>
 
 #include "core/Error.hpp"
+#include "core/data/StreamingProfile.hpp"
+#include "core/data/WholeDomainStress.hpp"
 #include "extract/coarse/FrameSpecies.hpp"
 #include "extract/coarse/ParticleContacts.hpp"
-#include "extract/coarse/StreamingProfile.hpp"
 #include "extract/coarse/StressMeasures.hpp"
 
 namespace grainbridge::extract::coarse {
@@ -37,7 +38,7 @@ DomainAverages averageWholeDomain(const core::data::ParticleFrame& frame, double
   std::vector<Vec3> momentum(nSpecies, Vec3::Zero()), peculiarMomentum(nSpecies, Vec3::Zero());
   std::vector<Vec3> peculiar(n);
   double totalMass = 0.0;
-  Vec3 totalMomentum = Vec3::Zero(), totalPeculiar = Vec3::Zero();
+  Vec3 totalMomentum = Vec3::Zero();
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t k = species.slot[i];
     const double m = frame.mass[i];
@@ -50,27 +51,17 @@ DomainAverages averageWholeDomain(const core::data::ParticleFrame& frame, double
     peculiarMomentum[k] += m * peculiar[i];
     totalMass += m;
     totalMomentum += m * frame.velocity[i];
-    totalPeculiar += m * peculiar[i];
   }
-  const Vec3 meanPeculiar = totalMass > 0.0 ? Vec3(totalPeculiar / totalMass) : Vec3::Zero();
 
-  // Kinetic part of Eq. 2.3 and Eq. 3.38, C about the mean peculiar velocity (two passes).
+  // Eq. 2.3 (core's one implementation) and the species temperatures of Eq. 3.38, each species'
+  // C about its own mean peculiar velocity.
+  const auto sums = core::data::wholeDomainStressSums(frame);
+  out.kineticStress = sums.kinetic;
+  out.contactStress = sums.contact;
   std::vector<double> c2(nSpecies, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t k = species.slot[i];
-    const Vec3 C = peculiar[i] - meanPeculiar;
-    out.kineticStress += frame.mass[i] * C * C.transpose();
     if (mass[k] > 0.0) c2[k] += frame.mass[i] * (peculiar[i] - peculiarMomentum[k] / mass[k]).squaredNorm();
-  }
-  // Contact part: each stored pair once with its full r_ij F_ij; walls as j at the contact point.
-  const auto& pc = frame.contacts;
-  for (std::size_t k = 0; k < pc.size(); ++k) {
-    out.contactStress += pc.branch[k] * (pc.forceNormal[k] + pc.forceTangential[k]).transpose();
-  }
-  const auto& wc = frame.wallContacts;
-  for (std::size_t k = 0; k < wc.size(); ++k) {
-    const Vec3 branch = frame.position[contacts.wallParticle[k]] - wc.point[k];
-    out.contactStress += branch * (wc.forceNormal[k] + wc.forceTangential[k]).transpose();
   }
   if (totalMass > 0.0) out.granularTemperature = out.kineticStress.trace() / (3.0 * totalMass);
   out.kineticStress /= volume;

@@ -3,13 +3,9 @@
 // default), solid fraction, granular temperature (Eq. 3.38) per species and in total, bulk
 // coordination number (Fig. 7.5) and the multi-contact ratio (Fig. 7.11).
 //
-// The stress equals the DEM engine's printed whole-domain stress on the same frame to round-off
-// without shear. Under Lees-Edwards both take C about the streaming profile
-// u_x = gammadot (y - y_mid); here also about the mean of the peculiar velocities v - u_LE,
-// whereas the engine subtracts the mean of v itself, which is shifted by
-// gammadot (<y>_m - y_mid). The two kinetic stresses then differ in xx only, by
-// M (gammadot (<y>_m - y_mid))^2 / V: tiny in a large box, zero when the particles' centre of
-// mass is at mid-height.
+// The stress sums come from core/data/WholeDomainStress.hpp, the implementation the DEM engine's
+// series uses too: C about the streaming profile u_x = gammadot (y - y_mid) under Lees-Edwards,
+// less the mean of the peculiar velocities.
 #include <cstddef>
 #include <cstdint>
 #include <vector>

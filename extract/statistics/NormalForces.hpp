@@ -2,7 +2,7 @@
 // Normal contact forces of one frame for the force statistics of Section 6.3.2. The signed
 // normal force is F_n = F_normal . n with n = branch / |branch| (branch = r_i - r_j, force on i
 // from j), so F_n > 0 is repulsive, the sign under which Eq. 2.3's r_ij F_ij is positive in
-// compression (engines/dem/DomainStress.hpp). Only F_n > 0 enters force PDFs and correlations:
+// compression (core/data/WholeDomainStress.hpp). Only F_n > 0 enters force PDFs and correlations:
 // a dashpot can make the total normal force attractive (VALIDATION.md, force networks).
 #include <cstddef>
 #include <span>

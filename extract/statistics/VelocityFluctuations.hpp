@@ -2,7 +2,7 @@
 // Particle velocity fluctuations C_i = u_i - <u>, the peculiar velocities of Section 8.2.1.1's
 // single-particle distribution and of the velocity correlation. Under Lees-Edwards shear u_i is
 // the velocity about the imposed streaming profile, u_i = v_i - gammadot (y_i - y_mid) e_x, as in
-// the whole-domain stress (engines/dem/DomainStress.hpp). The mean is over particles (number
+// the whole-domain stress (core/data/WholeDomainStress.hpp). The mean is over particles (number
 // weighted), so the C_i of the selection sum to zero; for a mixture select one species, since
 // species in a mixture need not share a temperature.
 #include <cstddef>

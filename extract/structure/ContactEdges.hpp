@@ -3,7 +3,7 @@
 // id order, see ParticleIdIndex), each with its signed normal force
 //   F_n = forceNormal . branch / |branch|,
 // branch = r_i - r_j and forceNormal the force on i from j (core/data/ContactList.hpp), so
-// F_n > 0 is repulsion, the sign convention of engines/dem/DomainStress.hpp (r_ij F_ij > 0 in
+// F_n > 0 is repulsion, the sign convention of core/data/WholeDomainStress.hpp (r_ij F_ij > 0 in
 // compression). A linear or Hertz dashpot can make the total normal force attractive near the
 // end of a contact; such a contact has F_n < 0 and is not part of a force network (Section
 // 6.3.2: "each particle has a nonzero normal contact force"; VALIDATION.md: networks use F_n > 0).

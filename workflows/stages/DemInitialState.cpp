@@ -10,6 +10,7 @@
 #include "core/io/ParticleFrameReader.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "engines/dem/LatticeInsertion.hpp"
+#include "engines/dem/MaxwellianVelocities.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -67,23 +68,17 @@ dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
   const auto centres = p.at("insertion") == "fcc_lattice"
                            ? dem::fccLatticeSites(request.lo, request.hi, request.radii.size(), largest, rng)
                            : dem::insertRandomly(request, rng);
-  // Velocity fluctuations: Maxwellian, each component of variance T, less their mean so the
-  // total momentum about the streaming profile is zero (under shear a net y momentum P_y would
-  // drive x momentum as -gammadot P_y t).
+  // Velocity fluctuations of the mobile particles: Maxwellian with exactly zero total momentum
+  // about the streaming profile (under shear a net y momentum P_y would drive x momentum as
+  // -gammadot P_y t) and exactly the asked T.
   std::vector<Vec3> fluctuation(centres.size(), Vec3::Zero());
   if (const double T0 = p.at("initial_temperature").get<double>(); T0 > 0.0) {
-    std::normal_distribution<double> normal(0.0, std::sqrt(T0));
-    Vec3 sum = Vec3::Zero();
-    std::size_t mobile = 0;
+    std::vector<std::size_t> mobile;
     for (std::size_t i = 0; i < centres.size(); ++i) {
-      if (setup.species[static_cast<std::size_t>(speciesOf[i])].frozen) continue;
-      fluctuation[i] = Vec3(normal(rng), normal(rng), normal(rng));
-      sum += fluctuation[i];
-      ++mobile;
+      if (!setup.species[static_cast<std::size_t>(speciesOf[i])].frozen) mobile.push_back(i);
     }
-    for (std::size_t i = 0; i < centres.size(); ++i) {
-      if (!setup.species[static_cast<std::size_t>(speciesOf[i])].frozen) fluctuation[i] -= sum / mobile;
-    }
+    const auto drawn = dem::maxwellianVelocities(mobile.size(), T0, rng);
+    for (std::size_t k = 0; k < mobile.size(); ++k) fluctuation[mobile[k]] = drawn[k];
   }
   dem::Particles particles;
   std::int64_t id = 0;

@@ -16,7 +16,8 @@ class DemStage final : public StageType {
   // 4: the Lees-Edwards rebuild counts the offset drift with both displacements
   // 5: the set-up force evaluation keeps the contact history (initial contacts no longer start
   //    with their slip counted twice; LAMMPS does the same); the first frame after a preparation
-  //    carries the contacts of its own state
+  //    carries the contacts of its own state; inserted particles start at exactly the asked
+  //    initial_temperature (the Maxwellian particle_gas uses, rescaled)
   [[nodiscard]] int implVersion() const override { return 5; }
   [[nodiscard]] std::string summary() const override {
     return "soft-sphere DEM: random insertion, gravity, frictional contacts with history, walls; frames and series";

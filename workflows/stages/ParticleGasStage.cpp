@@ -9,6 +9,7 @@
 #include "core/data/ParticleFrame.hpp"
 #include "core/io/ParticleFrameWriter.hpp"
 #include "engines/dem/Insertion.hpp"
+#include "engines/dem/MaxwellianVelocities.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -89,23 +90,8 @@ void ParticleGasStage::run(StageContext& ctx) const {
   if (progress) progress->finish();
   core::failPoint("particle_gas.after_insert");
 
-  // Maxwellian velocities; the mean is removed and the spread rescaled so the frame has exactly
-  // zero momentum and granular temperature T = <C^2>/3 (Eq. 3.38).
-  std::normal_distribution<double> normal(0.0, 1.0);
-  frame.velocity.resize(static_cast<std::size_t>(n));
-  Vec3 mean = Vec3::Zero();
-  for (auto& v : frame.velocity) {
-    v = Vec3(normal(rng), normal(rng), normal(rng));
-    mean += v;
-  }
-  mean /= static_cast<double>(n);
-  double sumC2 = 0.0;
-  for (auto& v : frame.velocity) {
-    v -= mean;
-    sumC2 += v.squaredNorm();
-  }
-  const double scale = (n > 1 && sumC2 > 0) ? std::sqrt(3.0 * static_cast<double>(n) * temperature / sumC2) : 0.0;
-  for (auto& v : frame.velocity) v *= scale;
+  // Maxwellian velocities with exactly zero momentum and granular temperature T (Eq. 3.38).
+  frame.velocity = dem::maxwellianVelocities(static_cast<std::size_t>(n), temperature, rng);
 
   frame.id.resize(static_cast<std::size_t>(n));
   for (std::int64_t i = 0; i < n; ++i) frame.id[static_cast<std::size_t>(i)] = i;
