@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 machine to a test run: installs missing packages (with
-# ParaView's pvpython for the output test), builds the `ci` preset (RelWithDebInfo, assertions
+# ParaView's pvpython for the output test and LAMMPS for the chute comparison), builds the `ci` preset (RelWithDebInfo, assertions
 # on, warnings as errors) and runs the default test set (everything but the `slow` label).
 # Extra arguments go to ctest, e.g. scripts/test.sh -L unit   or   scripts/test.sh -R Hdf5
 set -euo pipefail
