@@ -151,6 +151,12 @@ Energies Simulation::energies() const {
   return e;
 }
 
+std::int64_t Simulation::mobileCount() const {
+  std::int64_t n = 0;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) n += p_.isFrozen(i) ? 0 : 1;
+  return n;
+}
+
 Vec3 Simulation::momentum() const {
   Vec3 m = Vec3::Zero();
   for (std::size_t i = 0; i < p_.nOwned; ++i) {

@@ -59,6 +59,8 @@ class Simulation {
   Particles& mutableParticles() { return p_; }
   [[nodiscard]] const SimulationSetup& setup() const { return setup_; }
   [[nodiscard]] Energies energies() const;
+  // Owned particles that move (not frozen): what coordination numbers count.
+  [[nodiscard]] std::int64_t mobileCount() const;
   [[nodiscard]] Vec3 momentum() const;
   [[nodiscard]] std::int64_t rebuilds() const { return list_.builds(); }
   // Lees-Edwards offset of the image above at time t, in [0, L_x).

@@ -52,10 +52,26 @@ def grainbridge_series(gb, repo, work):
     for csv_path in sorted(work.glob("results/**/series.csv")):
         mode = json.loads((csv_path.parent / "manifest.json").read_text())["params"]["tangential_model"]
         with csv_path.open() as f:
-            rows = {int(r["step"]): (float(r["ke_translational"]), float(r["ke_rotational"]))
-                    for r in csv.DictReader(f)}
-        series[mode] = rows
+            table = list(csv.DictReader(f))
+        series[mode] = {int(r["step"]): (float(r["ke_translational"]), float(r["ke_rotational"])) for r in table}
+        series[mode + "/coordination"] = [(int(r["contacts"]), float(r["coordination"])) for r in table]
     return series
+
+
+def count_atoms_of_type(data, atom_type):
+    lines = data.read_text().splitlines()
+    start = next(i for i, line in enumerate(lines) if line.strip().startswith("Atoms"))
+    count = 0
+    for line in lines[start + 1:]:
+        fields = line.split()
+        if not fields:
+            if count:
+                break
+            continue
+        if not fields[0].isdigit():
+            break
+        count += int(fields[1]) == atom_type
+    return count
 
 
 def compare(lmp_rows, gb_rows, steps):
@@ -96,6 +112,14 @@ def main():
     lmp_rows = lammps_thermo(args.lmp, inputs, data, work / "lammps", args.steps)
     series = grainbridge_series(args.grainbridge, repo, work / "grainbridge")
     ok = True
+    # Coordination counts the mobile grains (type 1; the frozen base is type 2), read from a file
+    # whose species declare no counts.
+    mobile = count_atoms_of_type(data, 1)
+    for contacts, coordination in series["lammps_history/coordination"]:
+        if abs(coordination - 2.0 * contacts / mobile) > 1e-12 * coordination or coordination <= 0.0:
+            print(f"FAIL: coordination {coordination} with {contacts} contacts and {mobile} mobile grains")
+            ok = False
+            break
     for mode in ("lammps_history", "history"):
         if mode not in series:
             print(f"no grainbridge run with tangential_model {mode}")

@@ -27,18 +27,20 @@ class EnergyColumns final : public SeriesColumns {
 };
 
 // Coordination counts the mobile grains only: a frozen rough base is not part of the packing.
+// Counted in the state sampled, so it holds for states read from files (whose species declare no
+// counts) and after a preparation has released the grains it held.
 class ContactColumns final : public SeriesColumns {
  public:
-  ContactColumns(dem::DemEngine& engine, std::int64_t mobile) : engine_(engine), mobile_(mobile) {}
+  explicit ContactColumns(dem::DemEngine& engine) : engine_(engine) {}
   [[nodiscard]] std::vector<std::string> names() const override { return {"contacts", "coordination"}; }
   void sample(SeriesRow& row) override {
     const auto contacts = engine_.frame().contacts.size();
-    row.add(contacts).add(mobile_ > 0 ? 2.0 * static_cast<double>(contacts) / static_cast<double>(mobile_) : 0.0);
+    const auto mobile = engine_.simulation().mobileCount();
+    row.add(contacts).add(mobile > 0 ? 2.0 * static_cast<double>(contacts) / static_cast<double>(mobile) : 0.0);
   }
 
  private:
   dem::DemEngine& engine_;
-  std::int64_t mobile_;
 };
 
 // Eq. 2.3 over the whole box.
@@ -136,7 +138,7 @@ std::vector<std::unique_ptr<SeriesColumns>> demSeriesColumns(dem::DemEngine& eng
   for (const auto& s : setup.species) species.push_back(s.name);
   std::vector<std::unique_ptr<SeriesColumns>> out;
   out.push_back(std::make_unique<EnergyColumns>(engine));
-  out.push_back(std::make_unique<ContactColumns>(engine, setup.mobileCount()));
+  out.push_back(std::make_unique<ContactColumns>(engine));
   out.push_back(std::make_unique<StressColumns>(engine, (setup.engine.hi - setup.engine.lo).prod()));
   out.push_back(std::make_unique<WallForceColumns>(engine));
   out.push_back(std::make_unique<SpeciesHeightColumns>(engine, std::move(species)));

@@ -34,14 +34,6 @@ struct DemSetup {
   std::vector<DemSpecies> species;
   std::vector<PairTiming> timings;
   std::vector<std::int64_t> trackedIds;  // particles whose height the series records
-
-  // Particles that move: coordination counts these only (a frozen rough base is no part of the
-  // packing).
-  [[nodiscard]] std::int64_t mobileCount() const {
-    std::int64_t n = 0;
-    for (const auto& s : species) n += s.frozen ? 0 : s.count;
-    return n;
-  }
 };
 
 // Builds the setup; assumes individually valid parameters.

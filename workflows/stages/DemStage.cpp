@@ -471,7 +471,7 @@ void DemStage::run(StageContext& ctx) const {
   const auto& sim = engine->simulation();
   const auto e = sim.energies();
   const auto& last = engine->frame();
-  const std::int64_t mobile = setup.mobileCount();
+  const std::int64_t mobile = sim.mobileCount();
   ctx.setSummary({{"particles", static_cast<std::int64_t>(sim.particles().nOwned)},
                   {"steps", steps},
                   {"final_ke_translational", e.translational},
