@@ -6,10 +6,13 @@
 #include <filesystem>
 #include <iostream>
 
+#include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/Version.hpp"
 #include "core/json/Diagnostics.hpp"
 #include "core/parallel/Communicator.hpp"
+#include "db/Database.hpp"
 #include "workflows/commands/Commands.hpp"
 
 namespace gb = grainbridge;
@@ -25,6 +28,13 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("-v,--verbose", verbose, "more log output (debug level)");
   app.add_flag("-q,--quiet", quiet, "warnings and errors only");
+  // What this binary is and what it was built with: the code version, then each library.
+  app.set_version_flag("--version", [] {
+    const auto& v = gb::core::codeVersion();
+    return "grainbridge " + v.release + " (git " + v.gitSha + (v.dirty ? ", dirty" : ", clean") + ")\n" + "HDF5 " +
+           gb::core::hdf5Version() + ", SQLite " + gb::db::sqliteVersion() + ", Eigen " + gb::core::eigenVersion() +
+           ", MPI: " + gb::core::mpiVersion();
+  });
   gb::workflows::commands::CommandOptions opt;
 
   auto* run = app.add_subcommand(

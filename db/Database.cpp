@@ -45,6 +45,8 @@ std::chrono::milliseconds backoff(int attempt) {
 
 }  // namespace
 
+std::string sqliteVersion() { return sqlite3_libversion(); }
+
 Database::Database(sqlite3* connection, std::filesystem::path path) : connection_(connection), path_(std::move(path)) {}
 
 Database::~Database() { close(); }

@@ -20,6 +20,9 @@ struct sqlite3;
 
 namespace grainbridge::db {
 
+// The SQLite library this binary uses ("3.40.1"), for `grainbridge --version`.
+[[nodiscard]] std::string sqliteVersion();
+
 class Database {
  public:
   // Opens or creates the file (creating missing parent folders), configures the connection
