@@ -203,10 +203,11 @@ void Simulation::step(bool recordContacts) {
 
 void Simulation::refreshContacts() {
   if (contactsCurrent_) return;
+  // Contacts only: the body forces (and what they recorded) belong to the last step.
   const std::vector<Vec3> force = p_.force;
   const std::vector<Vec3> torque = p_.torque;
   const std::vector<Vec3> wallForce = wallForce_;
-  computeForces(Evaluation::Setup);
+  contactForces(Evaluation::Setup);
   p_.force = force;
   p_.torque = torque;
   wallForce_ = wallForce;
@@ -345,7 +346,7 @@ void Simulation::rebuild(bool sort) {
   list_.build(p_, setup_.lo, setup_.hi, cutoff_, setup_.skin);
 }
 
-void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
+void Simulation::contactForces(Evaluation evaluation, bool ownedCleared) {
   const bool record = evaluation != Evaluation::Step;
   const std::size_t n = p_.size();
   for (std::size_t i = ownedCleared ? p_.nOwned : 0; i < n; ++i) {
@@ -360,7 +361,11 @@ void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
   }
   contactCount_ = 0;
   // The run's composition is chosen here, once per evaluation; the loops are compiled for it.
-  std::visit([&](auto law) { contactForces<decltype(law)>(evaluation); }, law_);
+  std::visit([&](auto law) { contactLoops<decltype(law)>(evaluation); }, law_);
+}
+
+void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
+  contactForces(evaluation, ownedCleared);
   // Forces on ghosts belong to their owners (the reverse communication of a parallel run).
   for (std::size_t k = 0; k < p_.ghostOwner.size(); ++k) {
     const std::size_t o = p_.ghostOwner[k];
@@ -372,7 +377,7 @@ void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
 }
 
 template <class Law>
-void Simulation::contactForces(Evaluation evaluation) {
+void Simulation::contactLoops(Evaluation evaluation) {
   using contact::History;
   switch (evaluation) {
     case Evaluation::Step:
@@ -384,8 +389,8 @@ void Simulation::contactForces(Evaluation evaluation) {
       wallForces<Law, true, History::Advance>();
       break;
     case Evaluation::Setup:
-      pairForces<Law, true, contact::History::Keep>();
-      wallForces<Law, true, contact::History::Keep>();
+      pairForces<Law, true, History::Keep>();
+      wallForces<Law, true, History::Keep>();
       break;
   }
 }

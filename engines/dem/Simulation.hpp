@@ -83,8 +83,9 @@ class Simulation {
   // (call refreshContacts() first when that step did not record them).
   [[nodiscard]] core::data::ParticleFrame frame() const;
   // Records the contacts of the current state when the last force evaluation did not (after
-  // unrecorded steps, a preparation or a restart): a set-up evaluation, history kept and the
-  // forces the next half kick uses put back, so the trajectory does not depend on it.
+  // unrecorded steps, a preparation or a restart): the contact part of a set-up evaluation,
+  // history kept and the forces the next half kick uses put back, so neither the trajectory nor
+  // the body forces' records depend on it.
   void refreshContacts();
 
   // Preparation protocols (Section 6.2's two-step preparation): hold particles in place with
@@ -119,8 +120,10 @@ class Simulation {
   enum class Evaluation { Step, StepRecorded, Setup };
   // ownedCleared: the owned particles' forces and torques are zero already (step clears them)
   void computeForces(Evaluation evaluation, bool ownedCleared = false);
+  // The contact part of computeForces: forces cleared, contacts evaluated (and recorded).
+  void contactForces(Evaluation evaluation, bool ownedCleared = false);
   template <class Law>
-  void contactForces(Evaluation evaluation);
+  void contactLoops(Evaluation evaluation);
   void constrainToPlane();
   template <class Law, bool Record, contact::History H>
   void pairForces();

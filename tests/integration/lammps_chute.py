@@ -52,10 +52,12 @@ def grainbridge_series(gb, repo, work):
     for csv_path in sorted(work.glob("results/**/series.csv")):
         mode = json.loads((csv_path.parent / "manifest.json").read_text())["params"]["tangential_model"]
         with csv_path.open() as f:
-            table = list(csv.DictReader(f))
-        series[mode] = {int(r["step"]): (float(r["ke_translational"]), float(r["ke_rotational"])) for r in table}
-        series[mode + "/coordination"] = [(int(r["contacts"]), float(r["coordination"])) for r in table]
+            series[mode] = list(csv.DictReader(f))
     return series
+
+
+def kinetic_energies(table):
+    return {int(r["step"]): (float(r["ke_translational"]), float(r["ke_rotational"])) for r in table}
 
 
 def count_atoms_of_type(data, atom_type):
@@ -115,7 +117,8 @@ def main():
     # Coordination counts the mobile grains (type 1; the frozen base is type 2), read from a file
     # whose species declare no counts.
     mobile = count_atoms_of_type(data, 1)
-    for contacts, coordination in series["lammps_history/coordination"]:
+    for row in series.get("lammps_history", []):
+        contacts, coordination = int(row["contacts"]), float(row["coordination"])
         if abs(coordination - 2.0 * contacts / mobile) > 1e-12 * coordination or coordination <= 0.0:
             print(f"FAIL: coordination {coordination} with {contacts} contacts and {mobile} mobile grains")
             ok = False
@@ -124,7 +127,7 @@ def main():
         if mode not in series:
             print(f"no grainbridge run with tangential_model {mode}")
             return 1
-        worst, where, first = compare(lmp_rows, series[mode], args.steps)
+        worst, where, first = compare(lmp_rows, kinetic_energies(series[mode]), args.steps)
         print(f"tangential_model {mode}: after step 1 the translational KE is {first[0]:+.6g} "
               f"({first[1]:.3g} relative) off LAMMPS; over {args.steps} steps the largest relative difference "
               f"is {worst[0]:.3g} (step {where[0]}) in translational and {worst[1]:.3g} (step {where[1]}) in "

@@ -1,5 +1,6 @@
-// Every registered composition of contact sub-models (contact/ContactModels.hpp), one typed test
-// each, so a new sub-model is checked by adding it to its list:
+// Every registered composition of contact sub-models (contact/ContactModels.hpp; the normal and
+// tangential forces of Eqs. 6.5-6.6 with the history of Eq. 6.4), one typed test each, so a new
+// sub-model is checked by adding it to its list:
 // - Newton's third law: the pair seen from j is the pair seen from i with n, v and u_t reversed,
 //   and its force is the exact opposite;
 // - the zero-overlap and zero-velocity limits: no force at first touch, no dashpot force and no
@@ -52,7 +53,6 @@ ContactKinematics someContact() {
   c.vn = vij.dot(c.n) * c.n;
   c.vt = vij - c.vn + Vec3(0.05, 0.0, 0.025);  // plus a rolling part, in the tangent plane
   c.vt -= c.vt.dot(c.n) * c.n;
-  c.meff = 0.26;
   return c;
 }
 
@@ -112,7 +112,7 @@ TYPED_TEST(EveryContactLaw, GiveNoForceAtFirstTouchAndNoDashpotWithoutMotion) {
   EXPECT_EQ(f.normalDissipative.norm(), 0.0);
   EXPECT_EQ(f.tangentialDissipative.norm(), 0.0);
   EXPECT_LE((u - u0).norm(), 1e-15 * u0.norm());
-  EXPECT_GT(f.normalElastic.dot(c.n), 0.0);     // repulsive
+  EXPECT_GT(f.normalElastic.dot(c.n), 0.0);  // repulsive
   if constexpr (Law::Tangential::historySize > 0) {
     EXPECT_LT(f.tangentialElastic.dot(u0), 0.0);  // restoring
   }

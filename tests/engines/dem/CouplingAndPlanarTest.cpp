@@ -80,6 +80,10 @@ TEST(BodyForces, RecordExactlyWhatTheParticlesReceived) {
   const Vec3 g = sim.bodyForces().applied<Gravity>()[i];
   const Vec3 b = sim.bodyForces().applied<BackgroundDamping>()[i];
   const Vec3 c = sim.bodyForces().applied<FluidCoupling>()[i];
+  // A frame's contact refresh after these unrecorded steps leaves the records (and forces) alone.
+  sim.refreshContacts();
+  EXPECT_EQ(sim.bodyForces().applied<FluidCoupling>()[i], c);
+  EXPECT_EQ(sim.bodyForces().applied<BackgroundDamping>()[i], b);
   // The force of the last evaluation (the next half kick uses it) is the recorded sum, exactly.
   EXPECT_EQ(q.force[i], Vec3(Vec3::Zero() + g + b + c));
   // Each part is its law at the velocity of the evaluation (the half-step velocity).
