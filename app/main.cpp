@@ -6,14 +6,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
-#include "core/Version.hpp"
 #include "core/json/Diagnostics.hpp"
 #include "core/parallel/Communicator.hpp"
-#include "db/Database.hpp"
 #include "workflows/commands/Commands.hpp"
+#include "workflows/report/BuildDescription.hpp"
 
 namespace gb = grainbridge;
 
@@ -30,10 +28,7 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "warnings and errors only");
   // What this binary is and what it was built with: the code version, then each library.
   app.set_version_flag("--version", [] {
-    const auto& v = gb::core::codeVersion();
-    return "grainbridge " + v.release + " (git " + v.gitSha + (v.dirty ? ", dirty" : ", clean") + ")\n" + "HDF5 " +
-           gb::core::hdf5Version() + ", SQLite " + gb::db::sqliteVersion() + ", Eigen " + gb::core::eigenVersion() +
-           ", MPI: " + gb::core::mpiVersion();
+    return gb::workflows::report::codeDescription() + "\n" + gb::workflows::report::librariesDescription();
   });
   gb::workflows::commands::CommandOptions opt;
 
@@ -59,6 +54,7 @@ int main(int argc, char** argv) {
       app.add_subcommand("report", "write the HTML report of a workflow's completed stages (or `report validation`)");
   report->add_option("config", opt.config, "workflow config (JSON)");
   report->add_option("--workdir", opt.workDir, "folder holding results/ (default: current folder)");
+  report->add_flag("--open", opt.open, "open the page in the system's browser ($BROWSER, xdg-open)");
   auto* validation = report->add_subcommand(
       "validation", "every VALIDATION.md figure reached so far (physics-test records and workflow databases)");
   validation->add_option("--records", opt.records, "folder of physics-test records (default: build/validation)");

@@ -8,12 +8,12 @@ namespace grainbridge::core {
 
 const std::array<ClosureFormInfo, 6>& closureForms() {
   static const std::array<ClosureFormInfo, 6> forms = {{
-      {ClosureForm::PTheta, "p_theta", "p / (rho T)", true, 1.0},
-      {ClosureForm::EtaTheta, "eta_theta", "mu / (rho d sqrt(T))", true, 0.5},
-      {ClosureForm::JTheta, "j_theta", "J d / (rho T^(3/2))", true, 1.5},
-      {ClosureForm::PShear, "p_shear", "p* = p / (rho d^2 gammadot^2)", false, 0.0},
-      {ClosureForm::TauShear, "tau_shear", "tau* = -sigma_xy / (rho d^2 gammadot^2)", false, 0.0},
-      {ClosureForm::TShear, "t_shear", "T* = T / (d gammadot)^2", false, 0.0},
+      {ClosureForm::PTheta, "p_theta", "p / (ρ θ)", "p/(ρθ)", true, 1.0},
+      {ClosureForm::EtaTheta, "eta_theta", "μ / (ρ d √θ)", "μ/(ρd√θ)", true, 0.5},
+      {ClosureForm::JTheta, "j_theta", "J d / (ρ θ^(3/2))", "Jd/(ρθ^(3/2))", true, 1.5},
+      {ClosureForm::PShear, "p_shear", "p* = p / (ρ d² γ̇²)", "p*", false, 0.0},
+      {ClosureForm::TauShear, "tau_shear", "τ* = −σxy / (ρ d² γ̇²)", "τ*", false, 0.0},
+      {ClosureForm::TShear, "t_shear", "T* = θ / (d γ̇)²", "T*", false, 0.0},
   }};
   return forms;
 }

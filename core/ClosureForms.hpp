@@ -23,7 +23,8 @@ enum class ClosureForm { PTheta, EtaTheta, JTheta, PShear, TauShear, TShear };
 struct ClosureFormInfo {
   ClosureForm form;
   std::string_view name;   // the closure-point column and table quantity ("p_theta")
-  std::string_view label;  // for reports ("p / (rho T)")
+  std::string_view label;   // its definition, for a figure's title ("p / (ρ θ)", UTF-8)
+  std::string_view symbol;  // for an axis or a table heading ("p*", "p/(ρθ)")
   bool thetaScaled;
   // The power of the granular temperature in the form's scale (p_theta 1, eta_theta 1/2,
   // j_theta 3/2): how the temperature's error enters the form's (0 for shear forms).

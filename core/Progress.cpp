@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/Log.hpp"
+#include "core/text/NumberText.hpp"
 
 namespace grainbridge::core {
 
@@ -34,8 +35,8 @@ std::string Progress::line(double done, double elapsed) const {
   const double rate = elapsed > 0 ? (done - startDone_) / elapsed : 0.0;
   const double eta = rate > 0 ? (total_ - done) / rate : NAN;
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%s: %5.1f%%  %.3g %s/s  elapsed %s  ETA %s", label_.c_str(), 100.0 * fraction, rate,
-                unit_.c_str(), formatDuration(elapsed).c_str(), formatDuration(eta).c_str());
+  std::snprintf(buf, sizeof buf, "%s: %5.1f%%  %s %s/s  elapsed %s  ETA %s", label_.c_str(), 100.0 * fraction,
+                humanNumber(rate, 3).c_str(), unit_.c_str(), formatDuration(elapsed).c_str(), formatDuration(eta).c_str());
   return buf;
 }
 

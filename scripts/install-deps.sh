@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages grainbridge needs (Debian 12). Usage:
 #   scripts/install-deps.sh            build + run dependencies
-#   scripts/install-deps.sh --tests    also what the test suite needs (ParaView's pvpython, LAMMPS)
+#   scripts/install-deps.sh --tests    also what the test suite needs (ParaView's pvpython, LAMMPS,
+#                                      Chromium + chromedriver + Selenium for the report browser test)
 # As root it installs what is missing; otherwise it prints the apt-get line to run.
 set -euo pipefail
 
@@ -13,7 +14,7 @@ packages=(
   libgtest-dev libgmock-dev
 )
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(python3-paraview lammps)
+  packages+=(python3-paraview lammps chromium chromium-driver python3-selenium)
 fi
 
 missing=()

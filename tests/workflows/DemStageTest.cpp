@@ -149,7 +149,7 @@ TEST(DemStage, ContactTimeAndRestitutionSetTheCoefficients) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("pair small-small: e_n = 0.7000"), std::string::npos) << r.output;
   // The wall keeps its gamma_n: with no impact speed, its Hertzian e_n is the linear estimate, and the log says so.
-  EXPECT_NE(r.output.find("pair small-wall 0: e_n = 0.8688, t_c = 7.1e-05 s, largest safe dt (t_c/10) = 7.1e-06 s "
+  EXPECT_NE(r.output.find("pair small-wall 0: e_n = 0.8688, t_c = 7.1e-5 s, largest safe dt (t_c/10) = 7.1e-6 s "
                           "(linear-spring estimate"),
             std::string::npos)
       << r.output;

@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "core/Sha256.hpp"
@@ -56,8 +58,20 @@ std::string fieldFrameDigest(const fs::path& file) {
   return core::sha256Hex(out.str());
 }
 
+// A report page's footer names the build that wrote it (git SHA, library versions) and the
+// database path: digested without it, as frames are by their data.
+std::string reportPageDigest(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto begin = page.find("<footer>");
+  const auto end = page.find("</footer>");
+  if (begin != std::string::npos && end != std::string::npos && end > begin) page.erase(begin, end - begin);
+  return core::sha256Hex(page);
+}
+
 std::string contentDigest(const fs::path& file, const std::string& kind) {
   if (kind == "field_frame") return fieldFrameDigest(file);
+  if (kind == "report_html") return reportPageDigest(file);
   if (kind != "particle_frame") return core::sha256File(file);
   const auto f = core::io::readParticleFrame(file);
   std::ostringstream out;

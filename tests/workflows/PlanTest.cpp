@@ -37,7 +37,19 @@ TEST(Plan, SweepIsCartesianProductInGivenOrder) {
   std::set<std::string> keys;
   for (auto i : p.byStage.at("gas")) keys.insert(p.instances[i].key);
   EXPECT_EQ(keys.size(), 6u);
-  EXPECT_EQ(only(p, "gas", 0).label(), "gas[seed=1,solid_fraction=0.1]");
+  EXPECT_EQ(only(p, "gas", 0).label(), "gas[seed=1, solid_fraction=0.1]");
+}
+
+// Logs and status name an instance by its sweep point as the config wrote it: a length in
+// millimetres reads "1.3 mm", not its metres with binary noise (0.0013000000000000002).
+TEST(Plan, LabelShowsTheSweepAsWritten) {
+  auto p = planOf(R"({"name": "w", "stages": {
+    "gas": {"type": "particle_gas", "params": {"n_particles": 10, "solid_fraction": 0.1},
+            "sweep": {"diameter": ["1.3 mm", 0.0021]}}}})");
+  ASSERT_EQ(p.byStage.at("gas").size(), 2u);
+  EXPECT_EQ(only(p, "gas", 0).sweepPoint["diameter"].get<double>(), 1.3 * 1e-3);
+  EXPECT_EQ(only(p, "gas", 0).label(), "gas[diameter=1.3 mm]");
+  EXPECT_EQ(only(p, "gas", 1).label(), "gas[diameter=0.0021]");
 }
 
 TEST(Plan, KeyIgnoresKeyOrderUnitSpellingAndNonResultParams) {

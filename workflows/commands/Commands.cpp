@@ -1,5 +1,9 @@
 #include "workflows/commands/Commands.hpp"
 
+#include <unistd.h>
+
+#include <cstdlib>
+
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -164,6 +168,25 @@ int commandReportValidation(const CommandOptions& opt) {
   return summary.failed > 0 ? 1 : 0;
 }
 
+namespace {
+
+// The system's browser, as a desktop user expects: $BROWSER, else xdg-open, else
+// sensible-browser. Without one (a headless node) it says so and where the page is.
+void openInBrowser(const fs::path& page) {
+  std::vector<std::string> candidates;
+  if (const char* b = std::getenv("BROWSER"); b != nullptr && *b != '\0') candidates.emplace_back(b);
+  candidates.insert(candidates.end(), {"xdg-open", "sensible-browser"});
+  for (const auto& c : candidates) {
+    const std::string probe = "command -v '" + c + "' >/dev/null 2>&1";
+    if (std::system(probe.c_str()) != 0) continue;
+    const std::string cmd = "'" + c + "' '" + page.string() + "' >/dev/null 2>&1 &";
+    if (std::system(cmd.c_str()) == 0) return;
+  }
+  spdlog::warn("--open: no browser found ($BROWSER, xdg-open, sensible-browser); open {} yourself", page.string());
+}
+
+}  // namespace
+
 int commandReport(const CommandOptions& opt) {
   if (opt.config.empty()) throw UsageError("report: give a workflow config, or `report validation`");
   const auto cfg = load(opt);
@@ -179,15 +202,27 @@ int commandReport(const CommandOptions& opt) {
       continue;
     }
     const fs::path dir = root / entry->instanceDir;
-    done.push_back({inst.stage, inst.type->name(), inst.key, dir, exec::readManifest(dir)});
+    json manifest = exec::readManifest(dir);
+    // The sweep as the config wrote it now (a cached instance may predate the wording).
+    if (!inst.sweepWritten.empty()) manifest["sweep_written"] = inst.sweepWritten;
+    done.push_back({inst.stage, inst.type->name(), inst.key, dir, std::move(manifest)});
   }
   const fs::path out = root / cfg.name / "report";
   fs::create_directories(out);
-  report::writeHtmlReport("grainbridge report: " + cfg.name, done, out, out);
-  std::printf("%s\n", (out / "report.html").c_str());
+  const auto written = report::writeHtmlReport(
+      {"grainbridge report: " + cfg.name, exec::databasePath(cfg, opt.workDir).string()}, done, out, out);
+  // The page's path first (scripts read it), then on a terminal what the page leads with.
+  const fs::path page = out / "report.html";
+  std::printf("%s\n", page.c_str());
+  if (::isatty(STDOUT_FILENO) != 0) {
+    for (const auto& f : written.findings) std::printf("\n%s", report::findingsText(f).c_str());
+    if (written.findings.empty()) std::printf("(no comparing stage in this workflow: the page lists each stage)\n");
+  }
+  std::fflush(stdout);
   if (missing > 0)
     spdlog::warn("{} of {} stage instance(s) are not complete and are not in the report", missing,
                  plan.instances.size());
+  if (opt.open) openInBrowser(page);
   return 0;
 }
 

@@ -15,6 +15,7 @@ struct CommandOptions {
   bool keepGoing = false;
   std::string why;
   bool markdown = false;
+  bool open = false;  // report --open
   std::string database;
   std::string workflowFilter;
   std::string format = "table";

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/Files.hpp"
+#include "core/text/NumberText.hpp"
 #include "db/ClosureStore.hpp"
 #include "db/ProvenanceStore.hpp"
 #include "workflows/commands/Commands.hpp"
@@ -55,19 +56,17 @@ db::ColumnRange parseRange(const std::string& text) {
   return r;
 }
 
+// A table is for people (six significant digits); CSV and JSON keep every digit.
 std::string cell(const json& v) {
   if (v.is_null()) return "";
-  if (v.is_string()) return v.get<std::string>();
-  if (v.is_number_float()) {
-    std::ostringstream out;
-    out.precision(10);
-    out << v.get<double>();
-    return out.str();
-  }
-  return v.dump();
+  return core::humanText(v);
 }
 
-std::string csvCell(const json& v) { return report::csvField(cell(v)); }
+std::string csvCell(const json& v) {
+  if (v.is_null()) return "";
+  if (v.is_number_float()) return core::roundTripText(v.get<double>());
+  return report::csvField(v.is_string() ? v.get<std::string>() : v.dump());
+}
 
 // Columns to show: the requested ones (checked), else every column that is set in some row.
 std::vector<std::string> shownColumns(const json& rows, const std::string& requested,

@@ -21,12 +21,14 @@ const StageConfig* WorkflowConfig::findStage(const std::string& stageName) const
   return nullptr;
 }
 
-std::vector<json> sweepPoints(const std::vector<SweepAxis>& axes) {
+namespace {
+
+std::vector<json> cartesianPoints(const std::vector<SweepAxis>& axes, std::vector<json> SweepAxis::*values) {
   std::vector<json> points{json::object()};
   for (const auto& axis : axes) {
     std::vector<json> next;
     for (const auto& p : points) {
-      for (const auto& v : axis.values) {
+      for (const auto& v : axis.*values) {
         json q = p;
         q[axis.param] = v;
         next.push_back(std::move(q));
@@ -35,6 +37,14 @@ std::vector<json> sweepPoints(const std::vector<SweepAxis>& axes) {
     points = std::move(next);
   }
   return points;
+}
+
+}  // namespace
+
+std::vector<json> sweepPoints(const std::vector<SweepAxis>& axes) { return cartesianPoints(axes, &SweepAxis::values); }
+
+std::vector<json> sweepPointsAsWritten(const std::vector<SweepAxis>& axes) {
+  return cartesianPoints(axes, &SweepAxis::written);
 }
 
 json withSweepPoint(json params, const json& point) {
@@ -312,11 +322,12 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
               d.add(sp, "cannot sweep \"" + param + "\" of stage type " + sc.type->name() + ": " + why);
               continue;
             }
-            SweepAxis axis{param, {}};
+            SweepAxis axis{param, {}, {}};
             for (std::size_t i = 0; i < values.size(); ++i) {
               if (auto v =
                       sc.type->params().resolveValue(*spec, values[i], cfg.units, sp + "/" + std::to_string(i), d)) {
                 axis.values.push_back(*v);
+                axis.written.push_back(values[i]);
               }
             }
             sc.sweep.push_back(std::move(axis));

@@ -19,6 +19,7 @@ namespace grainbridge::workflows::config {
 struct SweepAxis {
   std::string param;
   std::vector<nlohmann::json> values;  // resolved (SI), in the order given
+  std::vector<nlohmann::json> written; // the same values as the config gives them ("13.7823 mm")
 };
 
 struct StageConfig {
@@ -43,6 +44,8 @@ struct WorkflowConfig {
 
 // The points of the Cartesian product of sweep axes, first axis slowest: {param: value}.
 std::vector<nlohmann::json> sweepPoints(const std::vector<SweepAxis>& axes);
+// The same points, in the same order, with each value as the config wrote it (for people).
+std::vector<nlohmann::json> sweepPointsAsWritten(const std::vector<SweepAxis>& axes);
 // `params` with a sweep point applied; a swept name with '/' is a path into nested
 // parameters ("walls/1/mu").
 nlohmann::json withSweepPoint(nlohmann::json params, const nlohmann::json& point);

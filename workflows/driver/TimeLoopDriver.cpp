@@ -9,6 +9,7 @@
 #include "core/Progress.hpp"
 #include "core/io/FieldFrameReader.hpp"
 #include "core/io/ParticleFrameReader.hpp"
+#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::driver {
 
@@ -110,8 +111,8 @@ void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t i
     const auto steps = phase.steps - firstStep;
     const double rate = static_cast<double>(steps) * static_cast<double>(engine.workItems()) / seconds;
     const std::string note = engine.throughputNote();
-    spdlog::info("{}: {} steps of {} {}s in {:.3f} s: {:.4g} {}-steps/s{}", ctx_.stage(), steps, engine.workItems(),
-                 engine.workItem(), seconds, rate, engine.workItem(), note.empty() ? "" : ", " + note);
+    spdlog::info("{}: {} steps of {} {}s in {:.3f} s: {} {}-steps/s{}", ctx_.stage(), steps, engine.workItems(),
+                 engine.workItem(), seconds, core::humanNumber(rate, 4), engine.workItem(), note.empty() ? "" : ", " + note);
   }
   if (phase.leave) phase.leave();
 }

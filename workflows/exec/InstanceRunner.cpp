@@ -76,6 +76,7 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
     }
     stages::StageContext ctx(task.workflow, task.stage, task.key, task.params, partialDir, std::move(inputs), comm,
                              core::units::UnitSystem::fromJson(task.units), stop);
+    ctx.setDatabasePath(task.database);
     type->run(ctx);
     core::failPoint("stage.after_run");
     if (comm.isMpi() && comm.size() > 1) MPI_Barrier(comm.raw());
@@ -110,6 +111,8 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
         {"host", host},
         {"ranks", comm.size()},
     };
+    if (!ctx.findings().empty()) manifest["findings"] = ctx.findings().toJson();
+    if (!task.sweepWritten.empty()) manifest["sweep_written"] = task.sweepWritten;
     core::writeFileAtomically(partialDir / "manifest.json", manifest.dump(2) + "\n");
     core::failPoint("stage.before_rename");
     // A complete folder without a database record (killed between rename and commit) is not

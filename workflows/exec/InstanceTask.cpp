@@ -9,7 +9,7 @@ json InstanceTask::toJson() const {
   for (const auto& u : upstream)
     ups.push_back({{"stage", u.stage}, {"stage_type", u.stageType}, {"key", u.key}, {"dir", u.dir}});
   return {{"workflow", workflow}, {"stage", stage},   {"stage_type", stageType},
-          {"key", key},           {"params", params}, {"sweep_point", sweepPoint},
+          {"key", key},           {"params", params}, {"sweep_point", sweepPoint}, {"sweep_written", sweepWritten}, {"database", database},
           {"upstream", ups},      {"units", units},   {"instance_dir", instanceDir},
           {"group", group}};
 }
@@ -22,6 +22,8 @@ InstanceTask InstanceTask::fromJson(const json& j) {
   t.key = j.at("key");
   t.params = j.at("params");
   t.sweepPoint = j.at("sweep_point");
+  t.sweepWritten = j.value("sweep_written", json::object());
+  t.database = j.value("database", "");
   for (const auto& u : j.at("upstream"))
     t.upstream.push_back({u.at("stage"), u.at("stage_type"), u.at("key"), u.at("dir")});
   t.units = j.at("units");

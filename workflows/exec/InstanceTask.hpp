@@ -23,6 +23,8 @@ struct InstanceTask {
   std::string key;
   nlohmann::json params;
   nlohmann::json sweepPoint;
+  nlohmann::json sweepWritten;  // the point as the config wrote it (for the report)
+  std::string database;         // the workflow database path (for the report's footer)
   std::vector<UpstreamRef> upstream;
   nlohmann::json units;
   std::string instanceDir;  // relative to the results root

@@ -50,6 +50,8 @@ RunSummary runWorkflow(const config::WorkflowConfig& config, const plan::Plan& p
     t.key = inst.key;
     t.params = inst.params;
     t.sweepPoint = inst.sweepPoint;
+    t.sweepWritten = inst.sweepWritten;
+    t.database = databasePath(config, options.workDir).string();
     t.units = config.units.toJson();
     t.instanceDir = inst.relativeDir(config.name);
     for (auto u : inst.upstream) {

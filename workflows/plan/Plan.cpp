@@ -4,6 +4,7 @@
 
 #include "core/Error.hpp"
 #include "core/Sha256.hpp"
+#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::plan {
 
@@ -11,10 +12,11 @@ using nlohmann::json;
 
 std::string StageInstance::label() const {
   if (sweepPoint.empty()) return stage;
+  const json& shown = sweepWritten.empty() ? sweepPoint : sweepWritten;
   std::string s = stage + "[";
   bool first = true;
-  for (const auto& [k, v] : sweepPoint.items()) {
-    s += (first ? "" : ",") + k + "=" + v.dump();
+  for (const auto& [k, v] : shown.items()) {
+    s += (first ? "" : ", ") + k + "=" + core::humanText(v);
     first = false;
   }
   return s + "]";
@@ -73,13 +75,17 @@ Plan makePlan(const config::WorkflowConfig& config) {
       inputSets.push_back(std::move(all));
     }
     for (const auto& inputs : inputSets) {
-      for (const auto& point : config::sweepPoints(stage.sweep)) {
+      const auto points = config::sweepPoints(stage.sweep);
+      const auto written = config::sweepPointsAsWritten(stage.sweep);
+      for (std::size_t p = 0; p < points.size(); ++p) {
+        const json& point = points[p];
         StageInstance inst;
         inst.index = plan.instances.size();
         inst.stage = stage.name;
         inst.type = stage.type;
         inst.params = config::withSweepPoint(stage.params, point);
         inst.sweepPoint = point;
+        inst.sweepWritten = written[p];
         inst.upstream = inputs;
         inst.ranks = stage.ranksPerInstance;
         std::vector<std::string> upKeys;

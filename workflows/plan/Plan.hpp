@@ -20,11 +20,12 @@ struct StageInstance {
   const stages::StageType* type = nullptr;
   nlohmann::json params;      // resolved, sweep point merged in
   nlohmann::json sweepPoint;  // {param: value} of this instance ({} without a sweep)
+  nlohmann::json sweepWritten;  // the same point as the config wrote it ("13.7823 mm")
   std::string key;
   std::vector<std::size_t> upstream;  // indices of the instances it consumes
   int ranks = 1;
 
-  // "gas" or "gas[solid_fraction=0.1]", for logs and status.
+  // "gas" or "gas[solid_fraction=0.1, box=13.7 mm (×3)]" (values as written), for logs and status.
   [[nodiscard]] std::string label() const;
   // <workflow>/<stage>/<key>: the instance folder relative to the results root.
   [[nodiscard]] std::string relativeDir(const std::string& workflow) const;

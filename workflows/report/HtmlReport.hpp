@@ -1,24 +1,38 @@
 #pragma once
-// The workflow report: an HTML page with, for each stage, one row per completed instance
-// (swept parameters, summary values, stage key, links to its artifacts), the same table as
-// CSV, and SVG plots (gnuplot) of every summary value that varies along a numeric sweep.
-// Content is deterministic (no times, hosts or paths outside the results tree), so equal
-// inputs give byte-equal reports whichever executor ran them.
+// The workflow report (issue 16): one HTML page a researcher opens first.
+//   1. Findings: every stage that set findings (compare: DEM against each kinetic-theory model)
+//      leads with its headline, its table and its figures, on the first screen.
+//   2. Per stage: what is the same in every instance on one line, then one compact row per
+//      instance (the swept parameters as the config wrote them, the stage's key results with
+//      their errors, its outputs summarised: file count, size, one link to the folder and one to
+//      the .xmf ParaView opens), the full columns in stage_<name>.csv, and plots of each key
+//      result that varies along a numeric sweep (workflows/report/Plot).
+//   3. A footer with the code and library versions and the workflow's database.
+// summary.csv keeps every summary value at full precision (long format). The page has no
+// times or hosts, so equal inputs give equal reports whichever executor ran them; only the
+// footer changes with the build.
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "workflows/report/Findings.hpp"
 #include "workflows/stages/StageContext.hpp"
 
 namespace grainbridge::workflows::report {
 
+struct ReportPage {
+  std::string title;
+  std::string database;  // the workflow database's path, for the footer
+};
+
 struct ReportFiles {
   std::vector<stages::ArtifactEntry> files;  // paths relative to the output folder
+  std::vector<Findings> findings;            // what the page leads with, in page order
 };
 
 // `outDir` is where files are written now; `publishedDir` is where they will finally live (for
 // links to upstream artifacts: the two differ while a stage writes into its .partial folder).
-ReportFiles writeHtmlReport(const std::string& title, const std::vector<stages::UpstreamInstance>& instances,
+ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::UpstreamInstance>& instances,
                             const std::filesystem::path& outDir, const std::filesystem::path& publishedDir);
 
 }  // namespace grainbridge::workflows::report

@@ -1,5 +1,6 @@
 #include "workflows/stages/CompareStage.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -10,8 +11,9 @@
 #include "core/Files.hpp"
 #include "core/Log.hpp"
 #include "core/io/XdmfText.hpp"
+#include "core/text/NumberText.hpp"
 #include "engines/closures/KineticModel.hpp"
-#include "workflows/report/GnuplotFigure.hpp"
+#include "workflows/report/Plot.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -88,13 +90,81 @@ double predicted(const Prediction& p, const std::string& q) {
   return p.jTheta;
 }
 
-const std::map<std::string, std::string>& quantityLabels() {
-  static const std::map<std::string, std::string> labels = [] {
-    std::map<std::string, std::string> out;
-    for (const auto& f : core::closureForms()) out[std::string(f.name)] = std::string(f.label);
-    return out;
-  }();
-  return labels;
+std::string percent(double relative) {
+  // Three significant digits, but never an exponent: a 1040 % deviation reads as such.
+  const double pct = std::abs(100.0 * relative);
+  const std::string digits =
+      pct >= 100.0 ? std::to_string(static_cast<long long>(std::lround(pct))) : core::humanNumber(pct, 3);
+  return (relative >= 0 ? "+" : "−") + digits + " %";
+}
+
+std::string where(const Point& pt) {
+  return "φ " + core::humanNumber(pt.solidFraction, 3) + ", e " + core::humanNumber(pt.restitution) +
+         (pt.friction != 0.0 ? ", μ " + core::humanNumber(pt.friction) : "");
+}
+
+struct Deviation {
+  double relative = 0.0;  // (DEM - model) / model
+  const Point* at = nullptr;
+  std::string quantity;
+};
+
+// The findings' headline and table: for each model and form its largest relative deviation
+// from DEM and the state where it occurs; the sentence names the primary model's largest,
+// over every point and over the dilute points the summary is restricted to.
+void describeDeviations(const std::vector<Point>& points, const std::vector<std::string>& quantities,
+                        kt::KineticModelName primary, double limit, report::Findings& findings) {
+  std::vector<std::string> present;
+  for (const auto& q : quantities) {
+    if (std::any_of(points.begin(), points.end(), [&](const Point& pt) { return pt.has(q.c_str()); }))
+      present.push_back(q);
+  }
+  findings.columns = {"largest deviation from"};
+  for (const auto& q : present)
+    findings.columns.emplace_back(core::closureFormInfo(*core::closureFormFromName(q)).symbol);
+  Deviation primaryAll, primaryDilute;
+  for (auto model : kt::kAllKineticModels) {
+    std::vector<std::string> row = {std::string(kt::toString(model))};
+    for (const auto& q : present) {
+      Deviation worst;
+      for (const auto& pt : points) {
+        if (!pt.has(q.c_str())) continue;
+        const double model_value =
+            predicted(predict(model, pt.solidFraction, pt.restitution, pt.shearRate, pt.diameter, pt.density), q);
+        if (!std::isfinite(model_value) || model_value == 0.0) continue;
+        const Deviation d{(pt.value(q.c_str()) - model_value) / model_value, &pt, q};
+        if (worst.at == nullptr || std::abs(d.relative) > std::abs(worst.relative)) worst = d;
+        if (model == primary) {
+          if (primaryAll.at == nullptr || std::abs(d.relative) > std::abs(primaryAll.relative)) primaryAll = d;
+          if (pt.solidFraction <= limit &&
+              (primaryDilute.at == nullptr || std::abs(d.relative) > std::abs(primaryDilute.relative)))
+            primaryDilute = d;
+        }
+      }
+      row.push_back(worst.at == nullptr ? "–" : percent(worst.relative) + " (" + where(*worst.at) + ")");
+    }
+    findings.rows.push_back(std::move(row));
+  }
+  auto [loPhi, hiPhi] = std::minmax_element(
+      points.begin(), points.end(), [](const Point& a, const Point& b) { return a.solidFraction < b.solidFraction; });
+  std::ostringstream h;
+  h << points.size() << " DEM closure point" << (points.size() == 1 ? "" : "s") << " (φ "
+    << core::humanNumber(loPhi->solidFraction, 3);
+  if (hiPhi->solidFraction != loPhi->solidFraction) h << "–" << core::humanNumber(hiPhi->solidFraction, 3);
+  h << ").";
+  auto symbol = [](const std::string& q) {
+    return std::string(core::closureFormInfo(*core::closureFormFromName(q)).symbol);
+  };
+  if (primaryAll.at != nullptr) {
+    h << " Largest deviation from " << kt::toString(primary) << ": " << percent(primaryAll.relative) << " in "
+      << symbol(primaryAll.quantity) << " at " << where(*primaryAll.at) << ".";
+  }
+  if (primaryDilute.at != nullptr && primaryDilute.at != primaryAll.at) {
+    h << " Up to φ " << core::humanNumber(limit) << ": " << percent(primaryDilute.relative) << " in "
+      << symbol(primaryDilute.quantity) << " at " << where(*primaryDilute.at) << ".";
+  }
+  h << " Deviation = (DEM − model) / model; all forms dimensionless.";
+  findings.headline = h.str();
 }
 
 }  // namespace
@@ -157,48 +227,48 @@ void CompareStage::run(StageContext& ctx) const {
   ctx.addArtifact("comparison.csv", "csv");
   for (const auto& [q, w] : worst) summary["max_abs_deviation_" + q] = w;
 
-  // Plots: per quantity, DEM points (error bars) per (e, mu) and each model's curve per e.
-  std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>"
-       << core::io::xmlEscape(p.at("title").get<std::string>())
-       << "</title></head><body style=\"font-family:sans-serif\">\n<h1>"
-       << core::io::xmlEscape(p.at("title").get<std::string>())
-       << "</h1>\n<p>DEM closure points (symbols, with block-averaging errors) against kinetic theory (lines: "
-       << "lun1984 solid, the algebraic forms dashed) at the same solid fraction and restitution. Relative "
-       << "deviations of every model: <a href=\"comparison.csv\">comparison.csv</a>. Summary model: "
-       << kt::toString(primary) << ".</p>\n";
+  // Figures: per quantity, DEM points (block-averaging error bars) per (e, mu) and each
+  // model's curve per e, shear-scaled forms first (what a simple-shear sweep is about).
   std::set<double> restitutions;
   for (const auto& pt : points) restitutions.insert(pt.restitution);
   const Point& ref = points.front();
+  report::Findings findings;
+  findings.title = p.at("title").get<std::string>();
+  findings.details = "compare.html";
+  std::vector<std::string> shown;
   for (const auto& q : quantities) {
+    const auto& form = core::closureFormInfo(*core::closureFormFromName(q));
     report::Figure fig;
-    fig.title = quantityLabels().at(q);
-    fig.xLabel = "solid fraction";
-    fig.yLabel = q;
-    fig.logY = true;
-    std::map<std::pair<double, double>, report::FigureSeries> dem;
+    fig.title = std::string(form.label);
+    fig.x = {"solid fraction φ", "–"};
+    fig.y = {std::string(form.symbol), "–", true};
+    std::map<std::pair<double, double>, report::Series> dem;
     for (const auto& pt : points) {
       if (!pt.has(q.c_str())) continue;
       auto& s = dem[{pt.restitution, pt.friction}];
-      std::ostringstream label;
-      label << "DEM e=" << pt.restitution << " mu=" << pt.friction;
-      s.label = label.str();
-      s.style = report::FigureSeries::Style::PointsWithErrors;
+      s.label = "DEM, e " + core::humanNumber(pt.restitution) +
+                (pt.friction != 0.0 ? ", μ " + core::humanNumber(pt.friction) : "");
+      s.model = "DEM";
+      s.style = report::Series::Style::PointsWithErrors;
       s.x.push_back(pt.solidFraction);
       s.y.push_back(pt.value(q.c_str()));
       s.yError.push_back(pt.error(q));
     }
     if (dem.empty()) continue;
-    for (auto& [k, s] : dem) fig.series.push_back(std::move(s));
+    int variant = 0;
+    for (auto& [k, s] : dem) {
+      s.variant = variant++;
+      fig.series.push_back(std::move(s));
+    }
     const double shearRate = ref.shearRate;
+    int eIndex = 0;
     for (double e : restitutions) {
       for (auto model : kt::kAllKineticModels) {
-        report::FigureSeries curve;
-        std::ostringstream label;
-        label << kt::toString(model) << " e=" << e;
-        curve.label = label.str();
-        curve.style = model == kt::KineticModelName::Lun1984 ? report::FigureSeries::Style::Line
-                                                             : report::FigureSeries::Style::DashedLine;
+        report::Series curve;
+        curve.label = std::string(kt::toString(model)) + ", e " + core::humanNumber(e);
+        curve.model = kt::toString(model);
+        curve.style = report::Series::Style::Line;
+        curve.variant = eIndex;
         for (double eps = 0.02; eps <= 0.6001; eps += 0.01) {
           const double v = predicted(predict(model, eps, e, shearRate, ref.diameter, ref.density), q);
           if (std::isfinite(v) && v > 0.0) {
@@ -208,11 +278,33 @@ void CompareStage::run(StageContext& ctx) const {
         }
         fig.series.push_back(std::move(curve));
       }
+      ++eIndex;
     }
-    const std::string name = "compare_" + q + ".svg";
-    report::drawSvg(fig, ctx.outputDir() / name);
-    ctx.addArtifact(name, "svg");
-    html << "<img src=\"" << name << "\" alt=\"" << core::io::xmlEscape(fig.title) << "\">\n";
+    const auto drawn = report::drawFigure(fig, ctx.outputDir(), "compare_" + q);
+    ctx.addArtifact(drawn.svg, "svg");
+    ctx.addArtifact(drawn.png, "png");
+    findings.figures.push_back({drawn.svg, drawn.png, fig.title});
+    shown.push_back(q);
+  }
+  // Shear-scaled forms first; the first screen shows the three of one family.
+  std::stable_partition(findings.figures.begin(), findings.figures.end(),
+                        [](const report::FindingsFigure& f) { return f.svg.find("_shear") != std::string::npos; });
+  findings.firstScreen = 3;
+  describeDeviations(points, quantities, primary, limit, findings);
+  ctx.setFindings(findings);
+
+  std::ostringstream html;
+  const std::string title = core::io::xmlEscape(findings.title);
+  html
+      << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << title
+      << "</title><style>body{font-family:sans-serif;margin:1.5em;max-width:80em}img{width:32%;min-width:20em}"
+      << "</style></head><body>\n<h1>" << title << "</h1>\n<p>" << core::io::xmlEscape(findings.headline)
+      << "</p>\n<p>DEM closure points (symbols, with block-averaging errors) against kinetic theory (lines, one colour "
+      << "per model, one dash per restitution) at the same solid fraction and restitution. Every model's relative "
+      << "deviations: <a href=\"comparison.csv\">comparison.csv</a>. PNG copies for slides sit beside each SVG.</p>\n";
+  for (const auto& f : findings.figures) {
+    html << "<a href=\"" << f.png << "\"><img src=\"" << f.svg << "\" alt=\"" << core::io::xmlEscape(f.caption)
+         << "\"></a>\n";
   }
   html << "</body></html>\n";
   core::writeFileAtomically(ctx.outputDir() / "compare.html", html.str());

@@ -19,7 +19,10 @@ class CompareStage final : public StageType {
   CompareStage();
   [[nodiscard]] std::string name() const override { return "compare"; }
   // 2: comparison.csv without the extract key column
-  [[nodiscard]] int implVersion() const override { return 2; }
+  // 3: figures through report/Plot (literal text, units, legend below, PNG copies), findings
+  [[nodiscard]] int implVersion() const override { return 3; }
+  // The headline and its table are the findings; the report's row shows how many points.
+  [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"points", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "DEM closures against kinetic theory (lun1984, syamlal_algebraic): CSV, plots and an HTML page";
   }

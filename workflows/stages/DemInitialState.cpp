@@ -11,6 +11,7 @@
 #include "engines/dem/Insertion.hpp"
 #include "engines/dem/LatticeInsertion.hpp"
 #include "engines/dem/MaxwellianVelocities.hpp"
+#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -178,8 +179,8 @@ std::vector<driver::Phase> preparationPhases(const StageContext& ctx, const DemS
       engine.mutableSimulation().setWallVibration(w, vibrationOf(w));
   };
   auto report = [&engine, stage](const char* what) {
-    spdlog::info("{}: preparation: {} until step {}, kinetic energy now {:.4g} J", stage, what, engine.step(),
-                 engine.simulation().energies().kinetic());
+    spdlog::info("{}: preparation: {} until step {}, kinetic energy now {} J", stage, what, engine.step(),
+                 core::humanNumber(engine.simulation().energies().kinetic(), 4));
   };
 
   driver::Phase shaking;

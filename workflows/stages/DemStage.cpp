@@ -18,6 +18,7 @@
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DemSeriesColumns.hpp"
 #include "workflows/stages/DemSetup.hpp"
+#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -394,12 +395,12 @@ namespace {
 
 void logContactTimes(const StageContext& ctx, const DemSetup& setup) {
   for (const auto& t : setup.timings) {
-    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {:.4g} s, largest safe dt (t_c/10) = {:.4g} s{}", ctx.stage(),
-                 t.pair, t.restitution, t.contactTime, t.contactTime / 10.0,
+    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {} s, largest safe dt (t_c/10) = {} s{}", ctx.stage(),
+                 t.pair, t.restitution, core::humanNumber(t.contactTime, 4), core::humanNumber(t.contactTime / 10.0, 4),
                  t.exact ? "" : " (linear-spring estimate: a Hertzian e_n depends on the impact speed)");
     if (setup.engine.dt > t.contactTime / 20.0) {
-      spdlog::warn("{}: dt = {:.4g} s is above t_c/20 for pair {} (the reference recommends about t_c/50)", ctx.stage(),
-                   setup.engine.dt, t.pair);
+      spdlog::warn("{}: dt = {} s is above t_c/20 for pair {} (the reference recommends about t_c/50)", ctx.stage(),
+                   core::humanNumber(setup.engine.dt, 4), t.pair);
     }
   }
 }

@@ -19,6 +19,13 @@ class DemStage final : public StageType {
   //    carries the contacts of its own state; inserted particles start at exactly the asked
   //    initial_temperature (the Maxwellian particle_gas uses, rescaled)
   [[nodiscard]] int implVersion() const override { return 5; }
+  [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
+    return {{"final_coordination", "–"},
+            {"final_contacts", "–"},
+            {"final_ke_translational", "J"},
+            {"final_ke_rotational", "J"},
+            {"steps", "–"}};
+  }
   [[nodiscard]] std::string summary() const override {
     return "soft-sphere DEM: random insertion, gravity, frictional contacts with history, walls; frames and series";
   }

@@ -25,6 +25,7 @@
 #include "workflows/stages/DemSetup.hpp"
 #include "workflows/stages/ExtractForceStatistics.hpp"
 #include "workflows/stages/SurfaceTracker.hpp"
+#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -334,8 +335,8 @@ void ExtractStage::run(StageContext& ctx) const {
         << " s (its " << files.size() << " frames span " << times.front() << " to " << times.back() << " s)";
     throw Error(msg.str());
   }
-  spdlog::info("{}: averaging {} of {} frames of {} (from t = {:.6g} s)", ctx.stage(), selected.size(), files.size(),
-               up.stage, start);
+  spdlog::info("{}: averaging {} of {} frames of {} (from t = {} s)", ctx.stage(), selected.size(), files.size(),
+               up.stage, core::humanNumber(start));
 
   // Per-frame whole-domain values.
   std::vector<double> time, solidFraction, temperature, pressure, shearStress, dissipation, coordination;
@@ -513,9 +514,9 @@ void ExtractStage::run(StageContext& ctx) const {
     const double gap = std::abs(dashpots.mean - J.mean);
     if (gap > 3.0 * std::hypot(dashpots.error, J.error) + 0.05 * J.mean) {
       spdlog::warn(
-          "{}: the shear work ({:.4g} W/m3) and the dashpot dissipation ({:.4g} W/m3) of these frictionless grains "
+          "{}: the shear work ({} W/m3) and the dashpot dissipation ({} W/m3) of these frictionless grains "
           "differ by {:.0f} %: the averaged frames are not a steady state (raise start_strain or run longer)",
-          ctx.stage(), J.mean, dashpots.mean, 100.0 * gap / J.mean);
+          ctx.stage(), core::humanNumber(J.mean, 4), core::humanNumber(dashpots.mean, 4), 100.0 * gap / J.mean);
     }
   }
   // The closure forms (core/ClosureForms), each with its block-averaging error.

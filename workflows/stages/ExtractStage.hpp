@@ -19,6 +19,11 @@ class ExtractStage final : public StageType {
   // velocity statistics over every frame, no failure when no frame has a contact; 4: under
   // Lees-Edwards shear the dissipation rate is the shear work (frictional sliding losses included)
   [[nodiscard]] int implVersion() const override { return 4; }
+  // The state and the closure forms (shear-scaled, then theta-scaled: core/ClosureForms).
+  [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
+    return {{"solid_fraction", "–"}, {"restitution", "–"}, {"friction", "–"},  {"p_shear", "–"}, {"tau_shear", "–"},
+            {"t_shear", "–"},        {"p_theta", "–"},     {"eta_theta", "–"}, {"j_theta", "–"}};
+  }
   [[nodiscard]] std::string summary() const override {
     return "closure point (stress, temperature, dissipation, ...) and structure statistics from particle frames";
   }

@@ -14,6 +14,10 @@ class ParticleGasStage final : public StageType {
   [[nodiscard]] std::string name() const override { return "particle_gas"; }
   // 2: insertion through engines/dem (same statistics, different round-off)
   [[nodiscard]] int implVersion() const override { return 2; }
+  [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
+    return {
+        {"solid_fraction", "–"}, {"number_density", "1/m³"}, {"box_length", "m"}, {"granular_temperature", "m²/s²"}};
+  }
   [[nodiscard]] std::string summary() const override {
     return "random non-overlapping spheres in a periodic cube with Maxwellian velocities (one particle frame)";
   }

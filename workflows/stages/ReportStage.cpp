@@ -12,8 +12,8 @@ ReportStage::ReportStage() {
 
 void ReportStage::run(StageContext& ctx) const {
   if (ctx.inputs().empty()) throw Error("report: no upstream stages; give it \"from\"");
-  const auto files =
-      report::writeHtmlReport(ctx.params().at("title"), ctx.inputs(), ctx.outputDir(), ctx.publishedDir());
+  const auto files = report::writeHtmlReport({ctx.params().at("title"), ctx.databasePath()}, ctx.inputs(),
+                                             ctx.outputDir(), ctx.publishedDir());
   for (const auto& f : files.files) ctx.addArtifact(f.path, f.kind);
   ctx.setSummary({{"instances", ctx.inputs().size()}});
 }

@@ -10,7 +10,8 @@ class ReportStage final : public StageType {
  public:
   ReportStage();
   [[nodiscard]] std::string name() const override { return "report"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  // 2: findings first, compact per-stage tables, stage CSVs, plots through report/Plot (issue 16)
+  [[nodiscard]] int implVersion() const override { return 2; }
   [[nodiscard]] std::string summary() const override {
     return "HTML + CSV + SVG report over every instance of the upstream stages";
   }

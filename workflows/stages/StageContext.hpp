@@ -13,6 +13,7 @@
 
 #include "core/parallel/Communicator.hpp"
 #include "core/units/UnitSystem.hpp"
+#include "workflows/report/Findings.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -77,6 +78,14 @@ class StageContext {
   // Deterministic results worth showing in status and reports (no timings, no hosts).
   void setSummary(nlohmann::json summary) { summary_ = std::move(summary); }
 
+  // The workflow database's path, for a report to name (a stage never opens it).
+  void setDatabasePath(std::string path) { databasePath_ = std::move(path); }
+  [[nodiscard]] const std::string& databasePath() const { return databasePath_; }
+
+  // What a comparing stage found (headline, table, figures): the report leads with it.
+  void setFindings(report::Findings findings) { findings_ = std::move(findings); }
+  [[nodiscard]] const report::Findings& findings() const { return findings_; }
+
   // Rows for the closure database (db::ClosureStore::recordTables(): closure_points,
   // force_statistics, structure_statistics, closure_tables), keyed by column name. They travel
   // in manifest.json and the executor inserts them in the transaction that marks the run done.
@@ -98,6 +107,8 @@ class StageContext {
   std::vector<ArtifactEntry> artifacts_;
   nlohmann::json summary_ = nlohmann::json::object();
   nlohmann::json records_ = nlohmann::json::object();
+  report::Findings findings_;
+  std::string databasePath_;
 };
 
 }  // namespace grainbridge::workflows::stages

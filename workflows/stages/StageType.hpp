@@ -18,6 +18,13 @@ enum class InputMode {
   Gather,       // one instance consuming every upstream instance (extract -> tabulate, report)
 };
 
+// A summary value worth a column (and a plot along a sweep) in the report, with its SI unit
+// ("–" when dimensionless). Its block-averaging error, if any, is the summary's <key>_err.
+struct ResultColumn {
+  std::string key;
+  std::string unit;
+};
+
 class StageType {
  public:
   virtual ~StageType() = default;
@@ -45,6 +52,10 @@ class StageType {
   virtual void checkAgainstUpstream(const nlohmann::json& /*resolved*/, const std::string& /*pointer*/,
                                     const std::vector<UpstreamPlan>& /*upstream*/,
                                     core::json::Diagnostics& /*diagnostics*/) const {}
+  // The summary values a report shows as columns and plots, in order; every summary value is in
+  // the stage's CSV regardless. Empty: the report shows the summary values that vary (no plots,
+  // as their units are not declared).
+  [[nodiscard]] virtual std::vector<ResultColumn> keyResults() const { return {}; }
   // Runs one instance. Throws grainbridge::Error on failure (the instance is then recorded
   // failed and never cached) or StageInterrupted after a clean stop.
   virtual void run(StageContext& ctx) const = 0;

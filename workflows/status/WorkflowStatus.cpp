@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "core/text/NumberText.hpp"
 #include "db/Database.hpp"
 #include "db/Leases.hpp"
 #include "db/ProvenanceStore.hpp"
@@ -138,14 +139,20 @@ std::vector<std::string> explainStage(const config::WorkflowConfig& config, cons
     }
     const json oldParams = inst.type->params().keyParams(json::parse(previous->paramsJson));
     const json newParams = inst.type->params().keyParams(inst.params);
+    // For people, unless the change hides below six digits: then every digit.
+    auto change = [](const json& before, const json& after) {
+      const bool distinct = core::humanText(before) != core::humanText(after);
+      return (distinct ? core::humanText(before) : before.dump()) + " -> " +
+             (distinct ? core::humanText(after) : after.dump());
+    };
     for (const auto& [k, v] : newParams.items()) {
       if (!oldParams.contains(k))
-        lines.push_back("  parameter " + k + ": (absent) -> " + v.dump());
+        lines.push_back("  parameter " + k + ": (absent) -> " + core::humanText(v));
       else if (oldParams[k] != v)
-        lines.push_back("  parameter " + k + ": " + oldParams[k].dump() + " -> " + v.dump());
+        lines.push_back("  parameter " + k + ": " + change(oldParams[k], v));
     }
     for (const auto& [k, v] : oldParams.items()) {
-      if (!newParams.contains(k)) lines.push_back("  parameter " + k + ": " + v.dump() + " -> (absent)");
+      if (!newParams.contains(k)) lines.push_back("  parameter " + k + ": " + core::humanText(v) + " -> (absent)");
     }
     for (auto u : inst.upstream) {
       const auto& up = plan.instances[u];

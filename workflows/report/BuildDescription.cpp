@@ -1,0 +1,19 @@
+#include "workflows/report/BuildDescription.hpp"
+
+#include "core/BuildInfo.hpp"
+#include "core/Version.hpp"
+#include "db/Database.hpp"
+
+namespace grainbridge::workflows::report {
+
+std::string codeDescription() {
+  const auto& v = core::codeVersion();
+  return "grainbridge " + v.release + " (git " + v.gitSha + (v.dirty ? ", dirty" : ", clean") + ")";
+}
+
+std::string librariesDescription() {
+  return "HDF5 " + core::hdf5Version() + ", SQLite " + db::sqliteVersion() + ", Eigen " + core::eigenVersion() +
+         ", MPI: " + core::mpiVersion();
+}
+
+}  // namespace grainbridge::workflows::report

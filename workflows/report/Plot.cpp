@@ -1,0 +1,144 @@
+#include "workflows/report/Plot.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "core/text/NumberText.hpp"
+
+namespace grainbridge::workflows::report {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// gnuplot strings are single-quoted; a quote inside is doubled. With enhanced text off,
+// nothing else in a label is markup.
+std::string gnuplotString(std::string_view s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string axisTitle(const Axis& axis) { return axis.label + " [" + axis.unit + "]"; }
+
+// Filled circle, square, triangle, diamond, inverted triangle, pentagon (gnuplot pt codes).
+constexpr std::array<int, 6> kPointTypes = {7, 5, 9, 13, 11, 15};
+
+std::string plotClause(const Series& s, std::size_t block) {
+  const std::string colour = "lc rgb '" + seriesColour(s.model) + "'";
+  const std::string data = "$s" + std::to_string(block);
+  const int variant = s.variant < 0 ? 0 : s.variant;
+  switch (s.style) {
+    case Series::Style::Points:
+      return data + " using 1:2 with points pt " + std::to_string(kPointTypes[variant % kPointTypes.size()]) +
+             " ps 1.2 " + colour + " title " + gnuplotString(s.label);
+    case Series::Style::PointsWithErrors:
+      return data + " using 1:2:3 with yerrorbars pt " + std::to_string(kPointTypes[variant % kPointTypes.size()]) +
+             " ps 1.2 " + colour + " title " + gnuplotString(s.label);
+    case Series::Style::Line:
+      return data + " using 1:2 with lines lw 2 dt " + std::to_string(variant % 5 + 1) + " " + colour + " title " +
+             gnuplotString(s.label);
+  }
+  return {};
+}
+
+void checkFigure(const Figure& f, const std::string& name) {
+  if (f.x.unit.empty() || f.y.unit.empty()) {
+    throw Error("figure " + name + ": every axis needs a unit (\"–\" when dimensionless)");
+  }
+  for (const auto& s : f.series) {
+    const bool errors = s.style == Series::Style::PointsWithErrors;
+    if (s.y.size() != s.x.size() || (errors && s.yError.size() != s.x.size())) {
+      throw Error("figure " + name + ": series '" + s.label + "' has columns of different lengths");
+    }
+  }
+}
+
+}  // namespace
+
+std::string seriesColour(std::string_view model) {
+  // Okabe–Ito: distinguishable with the common colour-vision deficiencies, and in grey print.
+  if (model == "DEM") return "#000000";
+  if (model == "lun1984") return "#0072B2";
+  if (model == "syamlal_algebraic") return "#D55E00";
+  if (model == "syamlal_algebraic_mfix") return "#009E73";
+  if (model == "table") return "#E69F00";
+  if (model == "experiment") return "#CC79A7";
+  static constexpr std::array<const char*, 3> others = {"#56B4E9", "#F0E442", "#999999"};
+  std::size_t h = 0;
+  for (char c : model) h = h * 31 + static_cast<unsigned char>(c);
+  return others[h % others.size()];
+}
+
+DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::string& stem) {
+  checkFigure(figure, stem);
+  std::vector<const Series*> plotted;
+  for (const auto& s : figure.series) {
+    if (!s.x.empty()) plotted.push_back(&s);
+  }
+  if (plotted.empty()) throw Error("figure " + (dir / stem).string() + ": nothing to plot");
+  DrawnFigure out{stem + ".svg", stem + ".png"};
+
+  std::ostringstream script;
+  script << "set encoding utf8\nset termoption noenhanced\n";
+  for (std::size_t b = 0; b < plotted.size(); ++b) {
+    const Series& s = *plotted[b];
+    script << "$s" << b << " << EOD\n";
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      script << core::roundTripText(s.x[i]) << ' ' << core::roundTripText(s.y[i]);
+      if (s.style == Series::Style::PointsWithErrors) script << ' ' << core::roundTripText(s.yError[i]);
+      script << '\n';
+    }
+    script << "EOD\n";
+  }
+  script << "set title " << gnuplotString(figure.title) << "\nset xlabel " << gnuplotString(axisTitle(figure.x))
+         << "\nset ylabel " << gnuplotString(axisTitle(figure.y)) << "\n"
+         << "set grid lc rgb '#dddddd'\nset border lc rgb '#444444'\n"
+         // Below the plot in two columns (gnuplot wraps a below-key by rows, not columns).
+         << "set key outside below center vertical maxrows " << std::max<std::size_t>(2, (plotted.size() + 1) / 2)
+         << " Left reverse samplen 2\n"
+         << "set format x '%g'\nset format y '%g'\n";
+  // A margin around linear data so no point sits on the frame; a log axis ends at decades.
+  script << "set offsets graph " << (figure.x.logarithmic ? "0" : "0.02") << ", graph "
+         << (figure.x.logarithmic ? "0" : "0.02") << ", graph " << (figure.y.logarithmic ? "0" : "0.05") << ", graph "
+         << (figure.y.logarithmic ? "0" : "0.05") << "\n";
+  if (figure.x.logarithmic) script << "set logscale x\n";
+  if (figure.y.logarithmic) script << "set logscale y\n";
+  std::string plot = "plot ";
+  for (std::size_t b = 0; b < plotted.size(); ++b) plot += (b ? ", " : "") + plotClause(*plotted[b], b);
+  // The same plot twice: SVG for the page, PNG at twice the size for slides.
+  script << "set terminal svg size 540,430 font 'sans,13' noenhanced background rgb 'white'\nset output "
+         << gnuplotString((dir / out.svg).string()) << "\n"
+         << plot << "\nset output\n"
+         << "set terminal pngcairo size 1080,860 font 'sans,22' noenhanced lw 2\nset output "
+         << gnuplotString((dir / out.png).string()) << "\nreplot\nset output\n";
+
+  const fs::path errors = dir / (stem + ".gnuplot-errors");
+  const std::string cmd = "gnuplot 2> '" + errors.string() + "'";
+  FILE* gp = ::popen(cmd.c_str(), "w");
+  if (gp == nullptr) throw Error("could not start gnuplot for figure " + (dir / stem).string());
+  const std::string text = script.str();
+  std::fwrite(text.data(), 1, text.size(), gp);
+  const int rc = ::pclose(gp);
+  std::ostringstream said;
+  if (std::ifstream in(errors); in) said << in.rdbuf();
+  std::error_code ignored;
+  fs::remove(errors, ignored);
+  for (const auto& f : {out.svg, out.png}) {
+    if (rc != 0 || !fs::exists(dir / f) || fs::file_size(dir / f) == 0) {
+      throw Error("gnuplot could not draw " + (dir / f).string() +
+                  (rc == 127 || said.str().find("not found") != std::string::npos
+                       ? " (is gnuplot installed? Debian package gnuplot-nox)"
+                       : ": " + said.str()));
+    }
+  }
+  return out;
+}
+
+}  // namespace grainbridge::workflows::report

@@ -1,0 +1,53 @@
+#pragma once
+// The one plotting module: every figure a stage or a report draws goes through `drawFigure`,
+// so all of them look alike. gnuplot draws each figure twice from one script: an SVG for the
+// page and a PNG (twice the size) beside it for slides.
+//
+// What every figure gets, whoever calls:
+// - text printed literally (gnuplot's enhanced mode off: `syamlal_algebraic` keeps its
+//   underscore), symbols written in UTF-8 by the caller (p*, τ*, θ);
+// - a unit on both axes (`Axis::unit`; "–" for a dimensionless quantity), required;
+// - the legend below the plot, never on the data;
+// - one colour per model across all figures (`seriesColour`), the series' `variant` (a
+//   restitution, a friction) picking the dash or point shape within that colour;
+// - no timestamp, so equal data give byte-equal files.
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace grainbridge::workflows::report {
+
+struct Axis {
+  std::string label;  // "solid fraction", "p*"
+  std::string unit;   // "Pa", "m/s"; "–" when dimensionless
+  bool logarithmic = false;
+};
+
+struct Series {
+  std::string label;  // the legend entry, printed as written
+  std::string model;  // the colour key: "DEM", "lun1984", "experiment", ...
+  enum class Style { Points, PointsWithErrors, Line } style = Style::Points;
+  int variant = 0;                   // dash type (lines) or point shape (points) within the model's colour
+  std::vector<double> x, y, yError;  // yError only for PointsWithErrors
+};
+
+struct Figure {
+  std::string title;
+  Axis x, y;
+  std::vector<Series> series;
+};
+
+struct DrawnFigure {
+  std::string svg, png;  // file names written beside each other
+};
+
+// Writes <dir>/<stem>.svg and <dir>/<stem>.png. Throws grainbridge::Error naming the figure
+// when a series is malformed, an axis has no unit, or gnuplot is missing or fails.
+DrawnFigure drawFigure(const Figure& figure, const std::filesystem::path& dir, const std::string& stem);
+
+// The colour (#rrggbb) of a model in every figure: fixed for the models the reports know,
+// a stable choice from the Okabe–Ito palette for any other name.
+std::string seriesColour(std::string_view model);
+
+}  // namespace grainbridge::workflows::report
