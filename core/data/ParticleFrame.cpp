@@ -34,6 +34,20 @@ void ParticleFrame::validate() const {
     }
     contacts.validate();
     wallContacts.validate(domain.walls.size());
+    materials.validate();
+    if (!materials.species.empty()) {
+      for (std::size_t k = 0; k < n; ++k) {
+        if (species[k] < 0 || static_cast<std::size_t>(species[k]) >= materials.species.size()) {
+          throw Error("particle " + std::to_string(id[k]) + " has species " + std::to_string(species[k]) + ", but the "
+                      "materials name " + std::to_string(materials.species.size()) + " species");
+        }
+      }
+    }
+    for (const auto& w : materials.walls) {
+      if (static_cast<std::size_t>(w.wall) >= domain.walls.size()) {
+        throw Error("materials name wall " + std::to_string(w.wall) + " of " + std::to_string(domain.walls.size()));
+      }
+    }
   } catch (const Error& e) {
     throw e.withContext("particle frame at step " + std::to_string(step));
   }

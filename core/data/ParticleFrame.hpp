@@ -10,6 +10,7 @@
 #include "core/Types.hpp"
 #include "core/data/ContactList.hpp"
 #include "core/data/Domain.hpp"
+#include "core/data/Materials.hpp"
 #include "core/data/WallContactList.hpp"
 
 namespace grainbridge::core::data {
@@ -29,6 +30,9 @@ struct ParticleFrame {
 
   ContactList contacts;
   WallContactList wallContacts;
+  // Species, contact coefficients and gravity of the engine that wrote the frame (empty for
+  // an engine without contacts, or a file written before the contract).
+  Materials materials;
 
   [[nodiscard]] std::size_t size() const { return id.size(); }
   // Throws grainbridge::Error naming the first array whose length is inconsistent, an

@@ -5,6 +5,7 @@
 #include "core/Error.hpp"
 #include "core/io/FrameFiles.hpp"
 #include "core/io/H5InputFile.hpp"
+#include "core/io/MaterialsIo.hpp"
 
 namespace grainbridge::core::io {
 
@@ -91,6 +92,7 @@ data::ParticleFrame readParticleFrame(const std::filesystem::path& path) {
   wc.point = f.readVec3s("/wall_contacts/point", {mw});
   wc.forceNormal = f.readVec3s("/wall_contacts/force_normal", {mw});
   wc.forceTangential = f.readVec3s("/wall_contacts/force_tangential", {mw});
+  frame.materials = readMaterials(f);
 
   // Shapes are consistent by now; this catches wall indices out of range.
   try {

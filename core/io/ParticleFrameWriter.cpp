@@ -8,6 +8,7 @@
 #include "core/Files.hpp"
 #include "core/io/FrameFiles.hpp"
 #include "core/io/H5OutputFile.hpp"
+#include "core/io/MaterialsIo.hpp"
 #include "core/io/XdmfText.hpp"
 
 namespace grainbridge::core::io {
@@ -121,6 +122,7 @@ void ParticleFrameWriter::writeFile(const std::filesystem::path& path, const dat
   f.writeDataset("/wall_contacts/point", wc.point);
   f.writeDataset("/wall_contacts/force_normal", wc.forceNormal);
   f.writeDataset("/wall_contacts/force_tangential", wc.forceTangential);
+  writeMaterials(f, frame.materials);
   f.close();
 }
 

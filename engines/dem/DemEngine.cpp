@@ -36,6 +36,7 @@ const core::data::ParticleFrame& DemEngine::frame() {
   if (!frame_) {
     sim_.refreshContacts();  // the run's first frame after a preparation, or after a restart
     frame_ = sim_.frame();
+    frame_->materials = materials_;
   }
   return *frame_;
 }

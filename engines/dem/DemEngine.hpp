@@ -42,6 +42,11 @@ class DemEngine final : public core::engine::SteppedEngine {
   // The current state as a frame, with the contacts of the last observed step; built once per
   // step however many observers and writers read it.
   const core::data::ParticleFrame& frame();
+  // Species, contact coefficients and gravity stamped on every frame (set by the stage).
+  void setMaterials(core::data::Materials materials) {
+    materials_ = std::move(materials);
+    if (frame_) frame_->materials = materials_;
+  }
 
  private:
   DemEngine(SimulationSetup setup, EngineState state, const std::filesystem::path& outputDir,
@@ -50,6 +55,7 @@ class DemEngine final : public core::engine::SteppedEngine {
   Simulation sim_;
   core::io::ParticleFrameWriter writer_;
   std::optional<core::data::ParticleFrame> frame_;
+  core::data::Materials materials_;
 };
 
 }  // namespace grainbridge::dem

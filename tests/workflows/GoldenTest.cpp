@@ -86,6 +86,23 @@ std::string contentDigest(const fs::path& file, const std::string& kind) {
     }
   };
   digestVectors({&f.position, &f.velocity, &f.angularVelocity, &f.externalForce});
+  // The materials the frame carries for its readers.
+  const auto& m = f.materials;
+  for (const auto& sp : m.species) {
+    out << sp.name << ' ';
+    out.write(reinterpret_cast<const char*>(&sp.diameter), sizeof(double));
+    out.write(reinterpret_cast<const char*>(&sp.density), sizeof(double));
+  }
+  for (const auto* list : {&m.pairs, &m.walls}) {
+    for (const auto& c : *list) {
+      out << c.speciesA << ' ' << c.speciesB << ' ' << c.wall << ' ';
+      out.write(reinterpret_cast<const char*>(&c.restitution), sizeof(double));
+      out.write(reinterpret_cast<const char*>(&c.friction), sizeof(double));
+      out.write(reinterpret_cast<const char*>(&c.stiffness), sizeof(double));
+      out.write(reinterpret_cast<const char*>(&c.tangentialStiffness), sizeof(double));
+    }
+  }
+  out.write(reinterpret_cast<const char*>(m.gravity.data()), 3 * sizeof(double));
   // The contact lists carry the contact law's forces: a changed law must show even where the
   // trajectory is not yet different. (A frame without contacts digests as before.)
   const auto& c = f.contacts;

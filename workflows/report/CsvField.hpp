@@ -1,8 +1,9 @@
 #pragma once
 // One CSV field as RFC 4180 writes it: quoted (with doubled quotes) only when it holds a comma,
 // a quote or a newline. Shared by every CSV the reports and the db commands write.
-#include <sstream>
 #include <string>
+
+#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::report {
 
@@ -13,12 +14,8 @@ inline std::string csvField(const std::string& s) {
   return out + "\"";
 }
 
-// A number with 12 significant digits, the precision of every numeric CSV column we write.
-inline std::string csvNumber(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
-}
+// A number at full precision (the shortest text that reads back as the same double): CSVs are
+// read by programs; people read the report's tables (core/text/NumberText's humanNumber).
+inline std::string csvNumber(double v) { return core::roundTripText(v); }
 
 }  // namespace grainbridge::workflows::report

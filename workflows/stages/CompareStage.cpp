@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -174,8 +175,11 @@ void CompareStage::run(StageContext& ctx) const {
   const auto primary = kt::kineticModelFromString(p.at("model").get<std::string>());
   std::vector<Point> points;
   for (const auto& up : ctx.inputs()) {
-    if (up.stageType != "extract") {
-      throw Error("compare: upstream " + up.stage + " is a " + up.stageType + " stage; compare takes extract stages");
+    // What compare needs is a closure point, whichever stage computed it.
+    const json records = up.manifest.value("records", json::object());
+    if (records.value("closure_points", json::array()).empty()) {
+      throw Error("compare: upstream " + up.stage + " (" + up.key.substr(0, 12) +
+                  ") recorded no closure point; compare takes stages that do (extract)");
     }
     Point pt;
     pt.key = up.key;
@@ -185,21 +189,21 @@ void CompareStage::run(StageContext& ctx) const {
     pt.density = pt.value("density");
     if (!pt.has("restitution")) {
       throw Error("compare: the closure point of " + up.stage + " (" + up.key.substr(0, 12) +
-                  ") has no restitution: its frames do not come from a dem stage");
+                  ") has no restitution: its particle frames carry no contact materials");
     }
     pt.restitution = pt.value("restitution");
     pt.friction = pt.has("friction") ? pt.value("friction") : 0.0;
     pt.shearRate = pt.has("shear_rate") ? pt.value("shear_rate") : 0.0;
     points.push_back(std::move(pt));
   }
-  if (points.empty()) throw Error("compare: no upstream extract instances; give it \"from\"");
+  if (points.empty()) throw Error("compare: no upstream closure points; give it \"from\"");
   std::sort(points.begin(), points.end(), [](const Point& a, const Point& b) {
     return std::tie(a.restitution, a.friction, a.solidFraction) < std::tie(b.restitution, b.friction, b.solidFraction);
   });
 
   const std::vector<std::string> quantities = {"p_shear", "tau_shear", "t_shear", "p_theta", "eta_theta", "j_theta"};
   std::ostringstream csv;
-  csv.precision(10);
+  csv.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
   // The state identifies the point; which extract run it came from is in the database
   // (run_inputs), not here, so the CSV does not change when an upstream key does.
   csv << "solid_fraction,restitution,friction,shear_rate,quantity,dem,dem_err,model,prediction,deviation\n";

@@ -64,6 +64,7 @@ DemSetup makeDemSetup(const json& p) {
   const std::string periodic = p.at("periodic");
   for (int a = 0; a < 3; ++a) e.periodic[static_cast<std::size_t>(a)] = periodic.find("xyz"[a]) != std::string::npos;
   e.gravity = vec(p.at("gravity"));
+  out.materials.gravity = e.gravity;
   e.backgroundDamping = p.at("background_damping");
   for (const auto& id : p.at("track_ids")) out.trackedIds.push_back(std::llround(id.get<double>()));
   e.shearRate = p.at("shear_rate");
@@ -80,6 +81,7 @@ DemSetup makeDemSetup(const json& p) {
     maxDiameter = std::max(maxDiameter, d);
     out.species.push_back({s.at("name"), 0.5 * d, s.at("density").get<double>() * M_PI / 6.0 * d * d * d,
                            s.at("count").get<std::int64_t>(), s.at("frozen").get<bool>()});
+    out.materials.species.push_back({s.at("name"), d, s.at("density").get<double>()});
   }
   e.skin = p.at("skin").get<double>() * maxDiameter;
   const int ns = static_cast<int>(out.species.size());
@@ -105,6 +107,8 @@ DemSetup makeDemSetup(const json& p) {
       if (b >= a && std::isfinite(meff)) {
         out.timings.push_back(timing(sa.name + "-" + sb.name, c == &contact ? "/contact" : "/pair_contacts", *c, *law,
                                      e.pairMaterial[static_cast<std::size_t>(a * ns + b)], meff, d));
+        const dem::PairMaterial& m = e.pairMaterial[static_cast<std::size_t>(a * ns + b)];
+        out.materials.pairs.push_back({a, b, -1, out.timings.back().restitution, m.mu, m.kn, m.kt});
       }
     }
   }
@@ -124,6 +128,10 @@ DemSetup makeDemSetup(const json& p) {
         wall.material.push_back(material(wj, *law, s.mass, 2.0 * s.radius));
         out.timings.push_back(timing(s.name + "-wall " + std::to_string(w), "/walls/" + std::to_string(w), wj, *law,
                                      wall.material.back(), s.mass, 2.0 * s.radius));
+        const auto si = static_cast<std::int32_t>(wall.material.size() - 1);
+        const dem::PairMaterial& m = wall.material.back();
+        out.materials.walls.push_back(
+            {si, si, static_cast<std::int32_t>(w), out.timings.back().restitution, m.mu, m.kn, m.kt});
       }
       e.walls.push_back(std::move(wall));
     }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/data/Materials.hpp"
 #include "engines/dem/Simulation.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -34,6 +35,9 @@ struct DemSetup {
   std::vector<DemSpecies> species;
   std::vector<PairTiming> timings;
   std::vector<std::int64_t> trackedIds;  // particles whose height the series records
+  // What every frame carries for its readers (core/data/Materials): species, the coefficients
+  // of each species pair and wall, gravity.
+  core::data::Materials materials;
 };
 
 // Builds the setup; assumes individually valid parameters.

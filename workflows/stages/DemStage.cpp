@@ -12,13 +12,13 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/text/NumberText.hpp"
 #include "engines/dem/DemEngine.hpp"
 #include "engines/dem/contact/Conversions.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DemSeriesColumns.hpp"
 #include "workflows/stages/DemSetup.hpp"
-#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -395,8 +395,8 @@ namespace {
 
 void logContactTimes(const StageContext& ctx, const DemSetup& setup) {
   for (const auto& t : setup.timings) {
-    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {} s, largest safe dt (t_c/10) = {} s{}", ctx.stage(),
-                 t.pair, t.restitution, core::humanNumber(t.contactTime, 4), core::humanNumber(t.contactTime / 10.0, 4),
+    spdlog::info("{}: pair {}: e_n = {:.4f}, t_c = {} s, largest safe dt (t_c/10) = {} s{}", ctx.stage(), t.pair,
+                 t.restitution, core::humanNumber(t.contactTime, 4), core::humanNumber(t.contactTime / 10.0, 4),
                  t.exact ? "" : " (linear-spring estimate: a Hertzian e_n depends on the impact speed)");
     if (setup.engine.dt > t.contactTime / 20.0) {
       spdlog::warn("{}: dt = {} s is above t_c/20 for pair {} (the reference recommends about t_c/50)", ctx.stage(),
@@ -450,12 +450,17 @@ void DemStage::run(StageContext& ctx) const {
   options.checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
   options.progress = p.at("progress");
   driver::TimeLoopDriver loop(ctx, options);
-  auto engine =
-      loop.start<dem::DemEngine>([&] { return freshEngine(ctx, setup); },
-                                 [&](const std::filesystem::path& state) {
-                                   return dem::DemEngine::restore(setup.engine, state, ctx.key(), ctx.outputDir(),
-                                                                  core::io::ArtifactStamp{ctx.key()});
-                                 });
+  // Every frame carries the materials its readers need (core/data/Materials), fresh or resumed.
+  auto withMaterials = [&](std::unique_ptr<dem::DemEngine> engine) {
+    engine->setMaterials(setup.materials);
+    return engine;
+  };
+  auto engine = loop.start<dem::DemEngine>(
+      [&] { return withMaterials(freshEngine(ctx, setup)); },
+      [&](const std::filesystem::path& state) {
+        return withMaterials(dem::DemEngine::restore(setup.engine, state, ctx.key(), ctx.outputDir(),
+                                                     core::io::ArtifactStamp{ctx.key()}));
+      });
   checkTrackedIds(ctx, setup, engine->simulation());
   if (p.contains("preparation")) {
     for (auto& phase : preparationPhases(ctx, setup, *engine)) loop.addPhase(std::move(phase));

@@ -18,7 +18,8 @@ class DemStage final : public StageType {
   //    with their slip counted twice; LAMMPS does the same); the first frame after a preparation
   //    carries the contacts of its own state; inserted particles start at exactly the asked
   //    initial_temperature (the Maxwellian particle_gas uses, rescaled)
-  [[nodiscard]] int implVersion() const override { return 5; }
+  // 6: frames carry their materials (core/data/Materials), which extract reads instead of params
+  [[nodiscard]] int implVersion() const override { return 6; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"final_coordination", "–"},
             {"final_contacts", "–"},

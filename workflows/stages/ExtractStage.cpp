@@ -14,6 +14,7 @@
 #include "core/io/FieldFrameReader.hpp"
 #include "core/io/FieldFrameWriter.hpp"
 #include "core/io/ParticleFrameReader.hpp"
+#include "core/text/NumberText.hpp"
 #include "extract/coarse/BlockAverage.hpp"
 #include "extract/coarse/CoarseGrain.hpp"
 #include "extract/coarse/DissipationRate.hpp"
@@ -22,10 +23,8 @@
 #include "extract/structure/ForceNetworks.hpp"
 #include "extract/structure/MstTreeContacts.hpp"
 #include "extract/structure/MultiPassMst.hpp"
-#include "workflows/stages/DemSetup.hpp"
 #include "workflows/stages/ExtractForceStatistics.hpp"
 #include "workflows/stages/SurfaceTracker.hpp"
-#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -214,31 +213,22 @@ Averaged averaged(const std::vector<double>& samples) {
   return {b.mean, b.standardError};
 }
 
-// Restitution and friction of the particle pairs of a dem upstream (its first species pair):
-// the state a closure point belongs to. Other upstreams (particle_gas) have none.
-void upstreamMaterial(const UpstreamInstance& up, json& row) {
-  if (up.stageType != "dem") return;
-  const json& params = up.manifest.at("params");
-  const DemSetup setup = makeDemSetup(params);
-  if (!setup.timings.empty()) row["restitution"] = setup.timings.front().restitution;
-  row["friction"] = params.at("contact").at("mu").get<double>();
+// Restitution and friction of the first species pair, from the materials the frames carry
+// (core/data/Materials): the state a closure point belongs to. Frames without contact
+// materials (a particle gas) have none.
+void contactMaterial(const core::data::Materials& materials, json& row) {
+  if (materials.pairs.empty()) return;
+  row["restitution"] = materials.pairs.front().restitution;
+  row["friction"] = materials.pairs.front().friction;
 }
 
-// Heights are measured against gravity: up is -g of a dem upstream, +z otherwise.
-Vec3 upstreamUp(const UpstreamInstance& up) {
-  if (up.stageType != "dem") return Vec3::UnitZ();
-  const json& g = up.manifest.at("params").at("gravity");
-  const Vec3 gravity(g[0].get<double>(), g[1].get<double>(), g[2].get<double>());
-  return gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ();
-}
-
-std::optional<SurfaceTracker> surfaceTracker(const StageContext& ctx, const UpstreamInstance& up) {
+std::optional<SurfaceTracker> surfaceTracker(const StageContext& ctx, const core::data::Materials& materials) {
   const json& p = ctx.params();
   if (p.at("surface_particles").empty()) return std::nullopt;
   SurfaceTrackerOptions options;
   // Integers >= 0 by declaration; whether the frames hold them is checked frame by frame.
   for (const auto& id : p["surface_particles"]) options.ids.push_back(id.get<std::int64_t>());
-  options.up = upstreamUp(up);
+  options.up = materials.up();  // heights are measured against gravity, +z without it
   options.tolerance = p.at("surface_tolerance");
   options.minCoordination = p.at("surface_min_coordination");
   return SurfaceTracker(std::move(options));
@@ -316,7 +306,10 @@ void ExtractStage::run(StageContext& ctx) const {
   // Frame times, read once (summaries only: no particle arrays).
   std::vector<double> times;
   for (const auto& f : files) times.push_back(core::io::readParticleFrameSummary(f).time);
-  const double shearRate = core::io::readParticleFrame(files.front()).domain.leesEdwardsShearRate;
+  // What the engine wrote beside its frames: the shear it imposed, its materials.
+  const auto firstFrame = core::io::readParticleFrame(files.front());
+  const double shearRate = firstFrame.domain.leesEdwardsShearRate;
+  const core::data::Materials& materials = firstFrame.materials;
   double start = p.at("start_time");
   if (p.at("start_strain").get<double>() > 0.0) {
     if (shearRate == 0.0) {
@@ -342,7 +335,7 @@ void ExtractStage::run(StageContext& ctx) const {
   std::vector<double> time, solidFraction, temperature, pressure, shearStress, dissipation, coordination;
   double diameter = 0.0, density = 0.0;
   std::ostringstream perFrame;
-  perFrame.precision(12);
+  perFrame.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
   perFrame << "time,step,solid_fraction,granular_temperature,pressure,pressure_kinetic,pressure_contact,sigma_xy,"
               "dissipation_rate_dashpots,coordination,multi_contact_ratio\n";
   json structureRows = json::array();
@@ -351,9 +344,7 @@ void ExtractStage::run(StageContext& ctx) const {
   std::vector<std::string> speciesNames;
   if (p.contains("grid_cells")) {
     fieldWriter.emplace(ctx.outputDir(), core::io::ArtifactStamp{ctx.key()});
-    if (up.stageType == "dem") {
-      for (const auto& sp : up.manifest.at("params").at("species")) speciesNames.push_back(sp.at("name"));
-    }
+    for (const auto& sp : materials.species) speciesNames.push_back(sp.name);
   }
   extract::coarse::CoarseGrainer coarseGrainer;  // keeps its cell arrays from frame to frame
   extract::coarse::FieldTimeAverage fieldAverage;
@@ -362,7 +353,7 @@ void ExtractStage::run(StageContext& ctx) const {
   std::vector<core::data::ParticleFrame> kept;  // for the pooled statistics
   // Per kept frame, per MST pass p: the contacts passes 1..p found (Figs. 6.14-6.16).
   std::vector<std::vector<std::vector<std::size_t>>> mstContacts;
-  auto surface = surfaceTracker(ctx, up);
+  auto surface = surfaceTracker(ctx, materials);
   for (const auto& file : selected) {
     if (ctx.stopRequested()) throw StageInterrupted{};
     auto frame = core::io::readParticleFrame(file);
@@ -508,7 +499,7 @@ void ExtractStage::run(StageContext& ctx) const {
                 {"dissipation_rate_source", fromShearWork ? "shear_work" : "contact_dashpots"},
                 {"dissipation_rate_dashpots", dashpots.mean},
                 {"dissipation_rate_dashpots_err", dashpots.error}}}};
-  upstreamMaterial(up, row);
+  contactMaterial(materials, row);
   if (fromShearWork && row.contains("friction") && row["friction"].get<double>() == 0.0 && J.mean > 0.0) {
     // Frictionless grains lose energy in the dashpots only: shear work above them is heating.
     const double gap = std::abs(dashpots.mean - J.mean);
@@ -553,7 +544,7 @@ void ExtractStage::run(StageContext& ctx) const {
   if (p.at("closure_point").get<bool>()) {
     ctx.addRecord("closure_points", row);
     std::ostringstream point;
-    point.precision(12);
+    point.precision(std::numeric_limits<double>::max_digits10);
     point << "quantity,value\n";
     for (const auto& [k, v] : row.items()) {
       if (v.is_number()) point << k << ',' << v.get<double>() << '\n';

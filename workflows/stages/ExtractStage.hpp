@@ -17,8 +17,9 @@ class ExtractStage final : public StageType {
   [[nodiscard]] std::string name() const override { return "extract"; }
   // 2: time-averaged fields (mean/); 3: network extent also in smallest-grain diameters,
   // velocity statistics over every frame, no failure when no frame has a contact; 4: under
-  // Lees-Edwards shear the dissipation rate is the shear work (frictional sliding losses included)
-  [[nodiscard]] int implVersion() const override { return 4; }
+  // Lees-Edwards shear the dissipation rate is the shear work (frictional sliding losses included);
+  // 5: every CSV at full precision (was 12 significant digits)
+  [[nodiscard]] int implVersion() const override { return 5; }
   // The state and the closure forms (shear-scaled, then theta-scaled: core/ClosureForms).
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"solid_fraction", "–"}, {"restitution", "–"}, {"friction", "–"},  {"p_shear", "–"}, {"tau_shear", "–"},

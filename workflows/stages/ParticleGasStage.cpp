@@ -99,6 +99,7 @@ void ParticleGasStage::run(StageContext& ctx) const {
   frame.radius.assign(static_cast<std::size_t>(n), 0.5 * d);
   frame.mass.assign(static_cast<std::size_t>(n), rho * volume);
   frame.angularVelocity.assign(static_cast<std::size_t>(n), Vec3::Zero());
+  frame.materials.species = {{"grain", d, rho}};  // no contacts: no pair coefficients
 
   core::io::ParticleFrameWriter writer(ctx.outputDir(), core::io::ArtifactStamp{ctx.key()});
   const auto framePath = writer.write(frame);

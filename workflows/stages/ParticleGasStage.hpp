@@ -13,7 +13,8 @@ class ParticleGasStage final : public StageType {
   ParticleGasStage();
   [[nodiscard]] std::string name() const override { return "particle_gas"; }
   // 2: insertion through engines/dem (same statistics, different round-off)
-  [[nodiscard]] int implVersion() const override { return 2; }
+  // 3: frames carry their materials (core/data/Materials)
+  [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {
         {"solid_fraction", "–"}, {"number_density", "1/m³"}, {"box_length", "m"}, {"granular_temperature", "m²/s²"}};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <limits>
 
 #include "extract/structure/LocalFreeSurface.hpp"
 
@@ -23,7 +24,7 @@ void SurfaceTracker::add(const core::data::ParticleFrame& frame, double coordina
 
 std::string SurfaceTracker::csv() const {
   std::ostringstream out;
-  out.precision(12);
+  out.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
   out << "time,step,id,top,surface,gap,gap_diameters,covering_grains,coordination,judged,at_top\n";
   for (const Row& r : rows_) {
     out << r.time << ',' << r.step << ',' << r.id << ',' << r.top << ',' << r.surface << ',' << r.gap << ','

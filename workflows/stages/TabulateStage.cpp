@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <limits>
 
 #include "core/ClosureTable.hpp"
 #include "core/Error.hpp"
@@ -126,7 +127,7 @@ void TabulateStage::run(StageContext& ctx) const {
   }
 
   std::ostringstream csv;
-  csv.precision(12);
+  csv.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
   csv << "table,quantity,solid_fraction," << (second.empty() ? "second" : second) << ",value,uncertainty\n";
   json summary = {{"table", name}, {"friction", friction}, {"solid_fractions", xAxis.size()}, {"rows", rows}};
   json quantities = json::array();

@@ -14,7 +14,8 @@ class TabulateStage final : public StageType {
  public:
   TabulateStage();
   [[nodiscard]] std::string name() const override { return "tabulate"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  // 2: table CSV at full precision (17 significant digits, was 12)
+  [[nodiscard]] int implVersion() const override { return 2; }
   [[nodiscard]] std::string summary() const override {
     return "closure tables (p_theta, eta_theta, j_theta against solid fraction [and restitution]) from closure "
            "points";
