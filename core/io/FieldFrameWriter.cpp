@@ -11,31 +11,66 @@
 
 namespace grainbridge::core::io {
 
-FieldFrameWriter::FieldFrameWriter(std::filesystem::path directory, ArtifactStamp stamp, int deflateLevel)
-    : directory_(std::move(directory)), stamp_(std::move(stamp)), deflateLevel_(deflateLevel) {
-  prepareFrameFolder(directory_, "fields");
-  for (const auto& path : listFieldFrames(directory_)) {
-    try {
-      FieldFrameSummary s = readFieldFrameSummary(path);
-      frames_[s.step] = std::move(s);
-    } catch (const Error& e) {
-      throw e.withContext("while rescanning the frames of a restarted run");
-    }
+namespace {
+
+std::string fieldStepGrid(std::int64_t step, const FieldFrameSummary& s) {
+  // 3DCoRectMesh takes NODE counts and origin / spacing all ordered z y x; the cell arrays
+  // are [nz][ny][nx], so Center="Cell" attributes map onto the mesh without reordering.
+  std::ostringstream x;
+  const data::GridGeometry& g = s.grid;
+  const std::string file = "frames/" + s.file.filename().string() + ":";
+  const std::string cells =
+      std::to_string(g.cells[2]) + " " + std::to_string(g.cells[1]) + " " + std::to_string(g.cells[0]);
+  const std::string nodes =
+      std::to_string(g.cells[2] + 1) + " " + std::to_string(g.cells[1] + 1) + " " + std::to_string(g.cells[0] + 1);
+  const auto zyx = [](const Vec3& v) { return formatReal(v.z()) + " " + formatReal(v.y()) + " " + formatReal(v.x()); };
+  const auto scalar = [&](const std::string& name, const std::string& dataset) {
+    return xdmfAttribute(name, "Scalar", "Cell", xdmfHdfItem(cells, "Float", 8, file + dataset));
+  };
+  const auto vector = [&](const std::string& name, const std::string& dataset) {
+    return xdmfAttribute(name, "Vector", "Cell", xdmfHdfItem(cells + " 3", "Float", 8, file + dataset));
+  };
+  x << "   <Grid Name=\"step_" << step << "\" GridType=\"Uniform\">\n"
+    << "    <Time Value=\"" << formatReal(s.time) << "\"/>\n"
+    << "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
+    << "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+    << "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << zyx(g.origin)
+    << "</DataItem>\n"
+    << "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << zyx(g.spacing)
+    << "</DataItem>\n"
+    << "    </Geometry>\n"
+    << "    " << scalar("ep_g", "/ep_g") << "\n"
+    << "    " << scalar("p_g", "/p_g") << "\n"
+    << "    " << vector("u_g", "/u_g") << "\n";
+  for (const std::string& phase : s.solidsPhases) {
+    // Phase names are plain identifiers (FieldFrame::validate), safe in XML and HDF5.
+    x << "    " << scalar("ep_s_" + phase, "/solids/" + phase + "/ep_s") << "\n"
+      << "    " << vector("u_s_" + phase, "/solids/" + phase + "/u_s") << "\n"
+      << "    " << scalar("theta_" + phase, "/solids/" + phase + "/theta") << "\n";
   }
-  if (!frames_.empty()) writeXdmf();
+  for (const auto& [name, components] : s.extras) {
+    const std::string dims = components == 1 ? cells : cells + " " + std::to_string(components);
+    const char* type = components == 1 ? "Scalar" : components == 3 ? "Vector" : "Tensor";
+    x << "    " << xdmfAttribute(name, type, "Cell", xdmfHdfItem(dims, "Float", 8, file + "/extra/" + name)) << "\n";
+  }
+  x << "   </Grid>\n";
+  return x.str();
 }
+
+}  // namespace
+
+FieldFrameWriter::FieldFrameWriter(std::filesystem::path directory, ArtifactStamp stamp, int deflateLevel)
+    : stamp_(std::move(stamp)),
+      deflateLevel_(deflateLevel),
+      series_(std::move(directory), "fields", readFieldFrameSummary, fieldStepGrid) {}
 
 std::filesystem::path FieldFrameWriter::write(const data::FieldFrame& frame) {
   frame.validate();
-  if (frame.step < 0) throw Error("field frame step " + std::to_string(frame.step) + " is negative");
-  const std::filesystem::path path = directory_ / "frames" / frameFileName("fields", frame.step);
-  writeFrameFile(path, [&](const std::filesystem::path& temporary) { writeFile(temporary, frame); });
-  FieldFrameSummary s{path, frame.step, frame.time, frame.grid, {}, {}};
+  FieldFrameSummary s{{}, frame.step, frame.time, frame.grid, {}, {}};
   for (const auto& phase : frame.solids) s.solidsPhases.push_back(phase.name);
   for (const auto& extra : frame.extras) s.extras.emplace_back(extra.name, extra.components);
-  frames_[frame.step] = std::move(s);
-  writeXdmf();
-  return path;
+  return series_.write(
+      frame.step, [&](const std::filesystem::path& temporary) { writeFile(temporary, frame); }, std::move(s));
 }
 
 void FieldFrameWriter::writeFile(const std::filesystem::path& path, const data::FieldFrame& frame) const {
@@ -75,61 +110,6 @@ void FieldFrameWriter::writeFile(const std::filesystem::path& path, const data::
     }
   }
   f.close();
-}
-
-void FieldFrameWriter::writeXdmf() const {
-  // 3DCoRectMesh takes NODE counts and origin / spacing all ordered z y x; the cell arrays
-  // are [nz][ny][nx], so Center="Cell" attributes map onto the mesh without reordering.
-  std::ostringstream x;
-  x << "<?xml version=\"1.0\" ?>\n"
-       "<Xdmf Version=\"2.0\">\n"
-       " <Domain>\n"
-       "  <Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (const auto& [step, s] : frames_) {
-    const data::GridGeometry& g = s.grid;
-    const std::string file = "frames/" + s.file.filename().string() + ":";
-    const std::string cells =
-        std::to_string(g.cells[2]) + " " + std::to_string(g.cells[1]) + " " + std::to_string(g.cells[0]);
-    const std::string nodes =
-        std::to_string(g.cells[2] + 1) + " " + std::to_string(g.cells[1] + 1) + " " + std::to_string(g.cells[0] + 1);
-    const auto zyx = [](const Vec3& v) {
-      return formatReal(v.z()) + " " + formatReal(v.y()) + " " + formatReal(v.x());
-    };
-    const auto scalar = [&](const std::string& name, const std::string& dataset) {
-      return xdmfAttribute(name, "Scalar", "Cell", xdmfHdfItem(cells, "Float", 8, file + dataset));
-    };
-    const auto vector = [&](const std::string& name, const std::string& dataset) {
-      return xdmfAttribute(name, "Vector", "Cell", xdmfHdfItem(cells + " 3", "Float", 8, file + dataset));
-    };
-    x << "   <Grid Name=\"step_" << step << "\" GridType=\"Uniform\">\n"
-      << "    <Time Value=\"" << formatReal(s.time) << "\"/>\n"
-      << "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
-      << "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-      << "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << zyx(g.origin)
-      << "</DataItem>\n"
-      << "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << zyx(g.spacing)
-      << "</DataItem>\n"
-      << "    </Geometry>\n"
-      << "    " << scalar("ep_g", "/ep_g") << "\n"
-      << "    " << scalar("p_g", "/p_g") << "\n"
-      << "    " << vector("u_g", "/u_g") << "\n";
-    for (const std::string& phase : s.solidsPhases) {
-      // Phase names are plain identifiers (FieldFrame::validate), safe in XML and HDF5.
-      x << "    " << scalar("ep_s_" + phase, "/solids/" + phase + "/ep_s") << "\n"
-        << "    " << vector("u_s_" + phase, "/solids/" + phase + "/u_s") << "\n"
-        << "    " << scalar("theta_" + phase, "/solids/" + phase + "/theta") << "\n";
-    }
-    for (const auto& [name, components] : s.extras) {
-      const std::string dims = components == 1 ? cells : cells + " " + std::to_string(components);
-      const char* type = components == 1 ? "Scalar" : components == 3 ? "Vector" : "Tensor";
-      x << "    " << xdmfAttribute(name, type, "Cell", xdmfHdfItem(dims, "Float", 8, file + "/extra/" + name)) << "\n";
-    }
-    x << "   </Grid>\n";
-  }
-  x << "  </Grid>\n"
-       " </Domain>\n"
-       "</Xdmf>\n";
-  writeFileAtomically(xdmfPath(), x.str());
 }
 
 }  // namespace grainbridge::core::io

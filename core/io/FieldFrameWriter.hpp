@@ -17,6 +17,7 @@
 #include "core/data/FieldFrame.hpp"
 #include "core/io/FieldFrameReader.hpp"
 #include "core/io/FrameMetadata.hpp"
+#include "core/io/FrameSeries.hpp"
 
 namespace grainbridge::core::io {
 
@@ -30,18 +31,16 @@ class FieldFrameWriter {
   // fields.xmf. Returns the frame's path.
   std::filesystem::path write(const data::FieldFrame& frame);
 
-  [[nodiscard]] const std::filesystem::path& directory() const { return directory_; }
-  [[nodiscard]] std::filesystem::path xdmfPath() const { return directory_ / "fields.xmf"; }
-  [[nodiscard]] std::size_t frameCount() const { return frames_.size(); }
+  [[nodiscard]] const std::filesystem::path& directory() const { return series_.directory(); }
+  [[nodiscard]] std::filesystem::path xdmfPath() const { return series_.xdmfPath(); }
+  [[nodiscard]] std::size_t frameCount() const { return series_.frameCount(); }
 
  private:
   void writeFile(const std::filesystem::path& path, const data::FieldFrame& frame) const;
-  void writeXdmf() const;
 
-  std::filesystem::path directory_;
   ArtifactStamp stamp_;
   int deflateLevel_;
-  std::map<std::int64_t, FieldFrameSummary> frames_;
+  FrameSeries<FieldFrameSummary> series_;  // folder, atomic files, fields.xmf, rescan
 };
 
 }  // namespace grainbridge::core::io

@@ -13,31 +13,81 @@
 
 namespace grainbridge::core::io {
 
-ParticleFrameWriter::ParticleFrameWriter(std::filesystem::path directory, ArtifactStamp stamp, int deflateLevel)
-    : directory_(std::move(directory)), stamp_(std::move(stamp)), deflateLevel_(deflateLevel) {
-  prepareFrameFolder(directory_, "particles");
-  for (const auto& path : listParticleFrames(directory_)) {
-    try {
-      ParticleFrameSummary s = readParticleFrameSummary(path);
-      frames_[s.step] = std::move(s);
-    } catch (const Error& e) {
-      throw e.withContext("while rescanning the frames of a restarted run");
+namespace {
+
+std::string particleStepGrid(std::int64_t step, const ParticleFrameSummary& s) {
+  // One spatial collection per step inside the temporal collection: the particles as a
+  // Polyvertex grid (one vertex cell each) and, when there are contacts, the contacts as a Polyline grid of segments
+  // (r_i, r_i - branch), so a contact across a periodic boundary is drawn short instead of across the box. ParaView
+  // shows this as a multiblock per time step.
+  std::ostringstream x;
+  // Relative to the .xmf, so a moved results folder still opens.
+  const std::string file = "frames/" + s.file.filename().string() + ":";
+  const std::string n = std::to_string(s.particles);
+  const std::string m = std::to_string(s.contacts);
+  x << "   <Grid Name=\"step_" << step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+    << "    <Time Value=\"" << formatReal(s.time) << "\"/>\n";
+  // An empty frame keeps its time step but has no grids: ParaView's XDMF reader reports
+  // an error on a zero-length geometry.
+  if (s.particles > 0) {
+    x << "    <Grid Name=\"particles\" GridType=\"Uniform\">\n"
+      << "     <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n"
+      << "     <Geometry GeometryType=\"XYZ\">" << xdmfHdfItem(n + " 3", "Float", 8, file + "/position")
+      << "</Geometry>\n"
+      << "     " << xdmfAttribute("id", "Scalar", "Node", xdmfHdfItem(n, "Int", 8, file + "/id")) << "\n"
+      << "     " << xdmfAttribute("species", "Scalar", "Node", xdmfHdfItem(n, "Int", 4, file + "/species")) << "\n"
+      << "     " << xdmfAttribute("radius", "Scalar", "Node", xdmfHdfItem(n, "Float", 8, file + "/radius")) << "\n"
+      << "     " << xdmfAttribute("mass", "Scalar", "Node", xdmfHdfItem(n, "Float", 8, file + "/mass")) << "\n"
+      << "     " << xdmfAttribute("velocity", "Vector", "Node", xdmfHdfItem(n + " 3", "Float", 8, file + "/velocity"))
+      << "\n"
+      << "     "
+      << xdmfAttribute("angular_velocity", "Vector", "Node",
+                       xdmfHdfItem(n + " 3", "Float", 8, file + "/angular_velocity"))
+      << "\n";
+    if (s.hasExternalForce) {
+      x << "     "
+        << xdmfAttribute("external_force", "Vector", "Node",
+                         xdmfHdfItem(n + " 3", "Float", 8, file + "/external_force"))
+        << "\n";
     }
+    x << "    </Grid>\n";
   }
-  // A crash between publishing a frame and rewriting the sidecar leaves it one frame
-  // behind; rewriting it here brings it back in line.
-  if (!frames_.empty()) writeXdmf();
+  if (s.contacts > 0) {
+    const std::string twoM = std::to_string(2 * s.contacts);
+    x << "    <Grid Name=\"contacts\" GridType=\"Uniform\">\n"
+      << "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"" << m << "\" NodesPerElement=\"2\">"
+      << xdmfHdfItem(m + " 2", "Int", 8, file + "/contacts/segment_connectivity") << "</Topology>\n"
+      << "     <Geometry GeometryType=\"XYZ\">" << xdmfHdfItem(twoM + " 3", "Float", 8, file + "/contacts/segments")
+      << "</Geometry>\n"
+      << "     "
+      << xdmfAttribute("force_normal", "Vector", "Cell",
+                       xdmfHdfItem(m + " 3", "Float", 8, file + "/contacts/force_normal"))
+      << "\n"
+      << "     "
+      << xdmfAttribute("force_tangential", "Vector", "Cell",
+                       xdmfHdfItem(m + " 3", "Float", 8, file + "/contacts/force_tangential"))
+      << "\n"
+      << "     " << xdmfAttribute("i", "Scalar", "Cell", xdmfHdfItem(m, "Int", 8, file + "/contacts/i")) << "\n"
+      << "     " << xdmfAttribute("j", "Scalar", "Cell", xdmfHdfItem(m, "Int", 8, file + "/contacts/j")) << "\n"
+      << "    </Grid>\n";
+  }
+  x << "   </Grid>\n";
+  return x.str();
 }
+
+}  // namespace
+
+ParticleFrameWriter::ParticleFrameWriter(std::filesystem::path directory, ArtifactStamp stamp, int deflateLevel)
+    : stamp_(std::move(stamp)),
+      deflateLevel_(deflateLevel),
+      series_(std::move(directory), "particles", readParticleFrameSummary, particleStepGrid) {}
 
 std::filesystem::path ParticleFrameWriter::write(const data::ParticleFrame& frame) {
   frame.validate();
-  if (frame.step < 0) throw Error("particle frame step " + std::to_string(frame.step) + " is negative");
-  const std::filesystem::path path = directory_ / "frames" / frameFileName("particles", frame.step);
-  writeFrameFile(path, [&](const std::filesystem::path& temporary) { writeFile(temporary, frame); });
-  frames_[frame.step] = ParticleFrameSummary{
-      path, frame.step, frame.time, frame.size(), frame.contacts.size(), !frame.externalForce.empty()};
-  writeXdmf();
-  return path;
+  return series_.write(
+      frame.step, [&](const std::filesystem::path& temporary) { writeFile(temporary, frame); },
+      ParticleFrameSummary{
+          {}, frame.step, frame.time, frame.size(), frame.contacts.size(), !frame.externalForce.empty()});
 }
 
 void ParticleFrameWriter::writeFile(const std::filesystem::path& path, const data::ParticleFrame& frame) const {
@@ -124,77 +174,6 @@ void ParticleFrameWriter::writeFile(const std::filesystem::path& path, const dat
   f.writeDataset("/wall_contacts/force_tangential", wc.forceTangential);
   writeMaterials(f, frame.materials);
   f.close();
-}
-
-void ParticleFrameWriter::writeXdmf() const {
-  // XDMF 2, for ParaView's "XDMF Reader" (why not the Xdmf3 readers: see
-  // tests/integration/paraview_check.py). One spatial collection per step inside a temporal
-  // collection: the particles as a Polyvertex grid (one vertex cell each) and, when there
-  // are contacts, the contacts as a Polyline grid of segments (r_i, r_i - branch), so a
-  // contact across a periodic boundary is drawn short instead of across the box. ParaView
-  // shows this as a multiblock per time step.
-  std::ostringstream x;
-  x << "<?xml version=\"1.0\" ?>\n"
-       "<Xdmf Version=\"2.0\">\n"
-       " <Domain>\n"
-       "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (const auto& [step, s] : frames_) {
-    // Relative to the .xmf, so a moved results folder still opens.
-    const std::string file = "frames/" + s.file.filename().string() + ":";
-    const std::string n = std::to_string(s.particles);
-    const std::string m = std::to_string(s.contacts);
-    x << "   <Grid Name=\"step_" << step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
-      << "    <Time Value=\"" << formatReal(s.time) << "\"/>\n";
-    // An empty frame keeps its time step but has no grids: ParaView's XDMF reader reports
-    // an error on a zero-length geometry.
-    if (s.particles > 0) {
-      x << "    <Grid Name=\"particles\" GridType=\"Uniform\">\n"
-        << "     <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n"
-        << "     <Geometry GeometryType=\"XYZ\">" << xdmfHdfItem(n + " 3", "Float", 8, file + "/position")
-        << "</Geometry>\n"
-        << "     " << xdmfAttribute("id", "Scalar", "Node", xdmfHdfItem(n, "Int", 8, file + "/id")) << "\n"
-        << "     " << xdmfAttribute("species", "Scalar", "Node", xdmfHdfItem(n, "Int", 4, file + "/species")) << "\n"
-        << "     " << xdmfAttribute("radius", "Scalar", "Node", xdmfHdfItem(n, "Float", 8, file + "/radius")) << "\n"
-        << "     " << xdmfAttribute("mass", "Scalar", "Node", xdmfHdfItem(n, "Float", 8, file + "/mass")) << "\n"
-        << "     " << xdmfAttribute("velocity", "Vector", "Node", xdmfHdfItem(n + " 3", "Float", 8, file + "/velocity"))
-        << "\n"
-        << "     "
-        << xdmfAttribute("angular_velocity", "Vector", "Node",
-                         xdmfHdfItem(n + " 3", "Float", 8, file + "/angular_velocity"))
-        << "\n";
-      if (s.hasExternalForce) {
-        x << "     "
-          << xdmfAttribute("external_force", "Vector", "Node",
-                           xdmfHdfItem(n + " 3", "Float", 8, file + "/external_force"))
-          << "\n";
-      }
-      x << "    </Grid>\n";
-    }
-    if (s.contacts > 0) {
-      const std::string twoM = std::to_string(2 * s.contacts);
-      x << "    <Grid Name=\"contacts\" GridType=\"Uniform\">\n"
-        << "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"" << m << "\" NodesPerElement=\"2\">"
-        << xdmfHdfItem(m + " 2", "Int", 8, file + "/contacts/segment_connectivity") << "</Topology>\n"
-        << "     <Geometry GeometryType=\"XYZ\">" << xdmfHdfItem(twoM + " 3", "Float", 8, file + "/contacts/segments")
-        << "</Geometry>\n"
-        << "     "
-        << xdmfAttribute("force_normal", "Vector", "Cell",
-                         xdmfHdfItem(m + " 3", "Float", 8, file + "/contacts/force_normal"))
-        << "\n"
-        << "     "
-        << xdmfAttribute("force_tangential", "Vector", "Cell",
-                         xdmfHdfItem(m + " 3", "Float", 8, file + "/contacts/force_tangential"))
-        << "\n"
-        << "     " << xdmfAttribute("i", "Scalar", "Cell", xdmfHdfItem(m, "Int", 8, file + "/contacts/i")) << "\n"
-        << "     " << xdmfAttribute("j", "Scalar", "Cell", xdmfHdfItem(m, "Int", 8, file + "/contacts/j")) << "\n"
-        << "    </Grid>\n";
-    }
-    x << "   </Grid>\n";
-  }
-  x << "  </Grid>\n"
-       " </Domain>\n"
-       "</Xdmf>\n";
-  writeFileAtomically(xdmfPath(), x.str());
 }
 
 }  // namespace grainbridge::core::io

@@ -24,6 +24,7 @@
 
 #include "core/data/ParticleFrame.hpp"
 #include "core/io/FrameMetadata.hpp"
+#include "core/io/FrameSeries.hpp"
 #include "core/io/ParticleFrameReader.hpp"
 
 namespace grainbridge::core::io {
@@ -42,18 +43,16 @@ class ParticleFrameWriter {
   // written are untouched either way.
   std::filesystem::path write(const data::ParticleFrame& frame);
 
-  [[nodiscard]] const std::filesystem::path& directory() const { return directory_; }
-  [[nodiscard]] std::filesystem::path xdmfPath() const { return directory_ / "particles.xmf"; }
-  [[nodiscard]] std::size_t frameCount() const { return frames_.size(); }
+  [[nodiscard]] const std::filesystem::path& directory() const { return series_.directory(); }
+  [[nodiscard]] std::filesystem::path xdmfPath() const { return series_.xdmfPath(); }
+  [[nodiscard]] std::size_t frameCount() const { return series_.frameCount(); }
 
  private:
   void writeFile(const std::filesystem::path& path, const data::ParticleFrame& frame) const;
-  void writeXdmf() const;
 
-  std::filesystem::path directory_;
   ArtifactStamp stamp_;
   int deflateLevel_;
-  std::map<std::int64_t, ParticleFrameSummary> frames_;  // by step: the collection's order
+  FrameSeries<ParticleFrameSummary> series_;  // folder, atomic files, particles.xmf, rescan
 };
 
 }  // namespace grainbridge::core::io

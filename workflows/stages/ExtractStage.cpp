@@ -15,11 +15,11 @@
 #include "core/io/FieldFrameWriter.hpp"
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/text/NumberText.hpp"
-#include "extract/coarse/BlockAverage.hpp"
+#include "core/averaging/BlockAverage.hpp"
 #include "extract/coarse/CoarseGrain.hpp"
 #include "extract/coarse/DissipationRate.hpp"
 #include "extract/coarse/DomainAverages.hpp"
-#include "extract/coarse/FieldTimeAverage.hpp"
+#include "core/averaging/FieldTimeAverage.hpp"
 #include "extract/structure/ForceNetworks.hpp"
 #include "extract/structure/MstTreeContacts.hpp"
 #include "extract/structure/MultiPassMst.hpp"
@@ -209,7 +209,7 @@ struct Averaged {
 };
 
 Averaged averaged(const std::vector<double>& samples) {
-  const auto b = extract::coarse::blockAverage(samples);
+  const auto b = core::averaging::blockAverage(samples);
   return {b.mean, b.standardError};
 }
 
@@ -347,7 +347,7 @@ void ExtractStage::run(StageContext& ctx) const {
     for (const auto& sp : materials.species) speciesNames.push_back(sp.name);
   }
   extract::coarse::CoarseGrainer coarseGrainer;  // keeps its cell arrays from frame to frame
-  extract::coarse::FieldTimeAverage fieldAverage;
+  core::averaging::FieldTimeAverage fieldAverage;
   const auto kernel = extract::coarse::CoarseGrainingKernel::fromName(p.at("kernel").get<std::string>(),
                                                                       p.at("kernel_width").get<double>());
   std::vector<core::data::ParticleFrame> kept;  // for the pooled statistics

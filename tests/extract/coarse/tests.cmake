@@ -1,5 +1,5 @@
 # extract/coarse: Eq. 2.3 coarse graining against exact states (Maxwellian gas, compressed
-# lattice), the DEM engine's own whole-domain stress, block averaging and time-averaged fields.
+# lattice) and the DEM engine's own whole-domain stress.
 grainbridge_add_test(test_extract_coarse
   SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/MaxwellianKineticStressTest.cpp
@@ -8,11 +8,9 @@ grainbridge_add_test(test_extract_coarse
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/DemFrameStressTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/LeesEdwardsTemperatureTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/StressWidthConvergenceTest.cpp
-    ${CMAKE_CURRENT_SOURCE_DIR}/coarse/BlockAverageTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/ContactStatisticsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/DissipationRateTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/CoarseGrainerTest.cpp
-    ${CMAKE_CURRENT_SOURCE_DIR}/coarse/FieldTimeAverageTest.cpp
   LIBS extract engines_dem
   LABELS "physics;extract"
   TIMEOUT 60)

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "core/Error.hpp"
-#include "extract/coarse/BlockAverage.hpp"
-#include "extract/coarse/FieldTimeAverage.hpp"
+#include "core/averaging/BlockAverage.hpp"
+#include "core/averaging/FieldTimeAverage.hpp"
 
-namespace grainbridge::extract::coarse {
+namespace grainbridge::core::averaging {
 namespace {
 
 using core::data::FieldFrame;
@@ -119,4 +119,4 @@ TEST(FieldTimeAverage, FramesOfAnotherLayoutAreRefusedNamingWhatDiffers) {
 }
 
 }  // namespace
-}  // namespace grainbridge::extract::coarse
+}  // namespace grainbridge::core::averaging

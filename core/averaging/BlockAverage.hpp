@@ -16,7 +16,7 @@
 #include <span>
 #include <vector>
 
-namespace grainbridge::extract::coarse {
+namespace grainbridge::core::averaging {
 
 struct BlockAverage {
   enum class Method { Blocking, PlainFewSamples };
@@ -39,4 +39,4 @@ BlockAverage blockAverage(std::span<const double> samples);
 // same number of cells (grainbridge::Error otherwise).
 std::vector<BlockAverage> blockAverageCells(const std::vector<std::vector<double>>& frames);
 
-}  // namespace grainbridge::extract::coarse
+}  // namespace grainbridge::core::averaging

@@ -1,4 +1,4 @@
-#include "extract/coarse/BlockAverage.hpp"
+#include "core/averaging/BlockAverage.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "core/Error.hpp"
 
-namespace grainbridge::extract::coarse {
+namespace grainbridge::core::averaging {
 
 namespace {
 // Mean and naive standard error sqrt(var / (n - 1)), var the biased variance.
@@ -94,4 +94,4 @@ std::vector<BlockAverage> blockAverageCells(const std::vector<std::vector<double
   return out;
 }
 
-}  // namespace grainbridge::extract::coarse
+}  // namespace grainbridge::core::averaging

@@ -1,11 +1,11 @@
-#include "extract/coarse/FieldTimeAverage.hpp"
+#include "core/averaging/FieldTimeAverage.hpp"
 
 #include <string>
 
 #include "core/Error.hpp"
-#include "extract/coarse/BlockAverage.hpp"
+#include "core/averaging/BlockAverage.hpp"
 
-namespace grainbridge::extract::coarse {
+namespace grainbridge::core::averaging {
 
 namespace {
 
@@ -121,4 +121,4 @@ core::data::FieldFrame FieldTimeAverage::mean() const {
   return out;
 }
 
-}  // namespace grainbridge::extract::coarse
+}  // namespace grainbridge::core::averaging

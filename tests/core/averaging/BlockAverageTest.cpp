@@ -8,10 +8,10 @@
 #include <random>
 
 #include "core/Error.hpp"
-#include "extract/coarse/BlockAverage.hpp"
+#include "core/averaging/BlockAverage.hpp"
 
 using namespace grainbridge;
-using namespace grainbridge::extract::coarse;
+using namespace grainbridge::core::averaging;
 
 namespace {
 std::vector<double> ar1(std::size_t n, double rho, std::uint64_t seed) {

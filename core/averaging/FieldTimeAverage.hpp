@@ -18,7 +18,7 @@
 
 #include "core/data/FieldFrame.hpp"
 
-namespace grainbridge::extract::coarse {
+namespace grainbridge::core::averaging {
 
 class FieldTimeAverage {
  public:
@@ -39,4 +39,4 @@ class FieldTimeAverage {
   std::vector<std::vector<std::vector<double>>> series_;
 };
 
-}  // namespace grainbridge::extract::coarse
+}  // namespace grainbridge::core::averaging
