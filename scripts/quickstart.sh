@@ -13,9 +13,10 @@ cmake --build build-release -j"$(nproc)" --target grainbridge
 
 status=0
 build-release/bin/grainbridge run configs/quickstart.json || status=$?
-report=$(build-release/bin/grainbridge report configs/quickstart.json)
 echo
-echo "Report:   $report"
+# The report page's path, then (on a terminal) what it found: DEM against kinetic theory.
+build-release/bin/grainbridge report configs/quickstart.json
+echo
 echo "Database: results/quickstart/grainbridge.sqlite   (sqlite3 results/quickstart/grainbridge.sqlite '.tables')"
 echo "Closures: build-release/bin/grainbridge db query --config configs/quickstart.json"
 echo "Frames:   results/quickstart/shear/*/particles.xmf   (open in ParaView)"
