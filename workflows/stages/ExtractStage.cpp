@@ -1,30 +1,25 @@
 #include "workflows/stages/ExtractStage.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <sstream>
 
-#include "core/ClosureForms.hpp"
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/Log.hpp"
-#include "core/grid/CellGrid.hpp"
-#include "core/io/FieldFrameReader.hpp"
-#include "core/io/FieldFrameWriter.hpp"
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/text/NumberText.hpp"
-#include "core/averaging/BlockAverage.hpp"
-#include "extract/coarse/CoarseGrain.hpp"
-#include "extract/coarse/DissipationRate.hpp"
+#include "extract/coarse/CoarseGrainingKernel.hpp"
 #include "extract/coarse/DomainAverages.hpp"
-#include "core/averaging/FieldTimeAverage.hpp"
-#include "extract/structure/ForceNetworks.hpp"
-#include "extract/structure/MstTreeContacts.hpp"
-#include "extract/structure/MultiPassMst.hpp"
-#include "workflows/stages/ExtractForceStatistics.hpp"
-#include "workflows/stages/SurfaceTracker.hpp"
+#include "extract/observe/ClosurePointObserver.hpp"
+#include "extract/observe/FieldObserver.hpp"
+#include "extract/observe/ForceStatisticsObserver.hpp"
+#include "extract/observe/OutputSink.hpp"
+#include "extract/observe/StructureObserver.hpp"
+#include "extract/observe/SurfaceObserver.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -202,90 +197,24 @@ void ExtractStage::checkAgainstUpstream(const json& p, const std::string& ptr,
 
 namespace {
 
-// One time-averaged quantity: mean and block-averaging standard error.
-struct Averaged {
-  double mean = 0.0;
-  double error = 0.0;
+// The extract stage's outputs go through its context: extract/observe never sees workflows/.
+class StageSink final : public extract::observe::OutputSink {
+ public:
+  explicit StageSink(StageContext& ctx) : ctx_(ctx) {}
+  [[nodiscard]] const std::filesystem::path& outputDir() const override { return ctx_.outputDir(); }
+  [[nodiscard]] const std::string& label() const override { return ctx_.stage(); }
+  void writeFile(const std::string& relativePath, const std::string& content, const std::string& kind) override {
+    core::writeFileAtomically(ctx_.outputDir() / relativePath, content);
+    ctx_.addArtifact(relativePath, kind);
+  }
+  void addArtifact(const std::string& relativePath, const std::string& kind) override {
+    ctx_.addArtifact(relativePath, kind);
+  }
+  void addRecord(const std::string& table, json row) override { ctx_.addRecord(table, std::move(row)); }
+
+ private:
+  StageContext& ctx_;
 };
-
-Averaged averaged(const std::vector<double>& samples) {
-  const auto b = core::averaging::blockAverage(samples);
-  return {b.mean, b.standardError};
-}
-
-// Restitution and friction of the first species pair, from the materials the frames carry
-// (core/data/Materials): the state a closure point belongs to. Frames without contact
-// materials (a particle gas) have none.
-void contactMaterial(const core::data::Materials& materials, json& row) {
-  if (materials.pairs.empty()) return;
-  row["restitution"] = materials.pairs.front().restitution;
-  row["friction"] = materials.pairs.front().friction;
-}
-
-std::optional<SurfaceTracker> surfaceTracker(const StageContext& ctx, const core::data::Materials& materials) {
-  const json& p = ctx.params();
-  if (p.at("surface_particles").empty()) return std::nullopt;
-  SurfaceTrackerOptions options;
-  // Integers >= 0 by declaration; whether the frames hold them is checked frame by frame.
-  for (const auto& id : p["surface_particles"]) options.ids.push_back(id.get<std::int64_t>());
-  options.up = materials.up();  // heights are measured against gravity, +z without it
-  options.tolerance = p.at("surface_tolerance");
-  options.minCoordination = p.at("surface_min_coordination");
-  return SurfaceTracker(std::move(options));
-}
-
-// The coarse-grained fields of one frame as a field frame: the solids phases (one per species,
-// named as the upstream dem stage names them) in the continuum slots, everything else DEM
-// adds (stress tensors, pressure, coordination, forces) as named extra fields.
-core::data::FieldFrame toFieldFrame(const core::data::ParticleFrame& frame, const extract::coarse::CoarseFields& c,
-                                    const std::vector<std::string>& speciesNames) {
-  core::data::FieldFrame out;
-  out.time = frame.time;
-  out.step = frame.step;
-  out.units = frame.units;
-  out.grid = c.grid.geometry();
-  const std::size_t n = c.solidFraction.size();
-  out.ep_g.resize(n);
-  for (std::size_t k = 0; k < n; ++k) out.ep_g[k] = 1.0 - c.solidFraction[k];
-  out.p_g.assign(n, 0.0);  // no gas in a DEM frame
-  out.u_g.assign(n, Vec3::Zero());
-  for (const auto& sp : c.species) {
-    core::data::SolidsPhaseFields phase;
-    const auto index = static_cast<std::size_t>(sp.species);
-    phase.name = index < speciesNames.size() ? speciesNames[index] : "species" + std::to_string(index);
-    phase.ep_s = sp.solidFraction;
-    phase.u_s = sp.velocity;
-    phase.theta = sp.granularTemperature;
-    out.solids.push_back(std::move(phase));
-  }
-  auto scalar = [&](const char* name, const std::vector<double>& v) { out.extras.push_back({name, 1, v}); };
-  auto tensor = [&](const char* name, const std::vector<Mat3>& v) {
-    core::data::NamedCellField f{name, 9, {}};
-    f.values.reserve(9 * v.size());
-    for (const Mat3& m : v) {
-      for (int a = 0; a < 3; ++a) {
-        for (int b = 0; b < 3; ++b) f.values.push_back(m(a, b));
-      }
-    }
-    out.extras.push_back(std::move(f));
-  };
-  scalar("solid_fraction", c.solidFraction);
-  scalar("granular_temperature", c.granularTemperature);
-  scalar("pressure", c.pressure);
-  scalar("shear_stress", c.shearStress);
-  scalar("deviatoric_stress", c.deviatoricStress);
-  tensor("stress", c.stress);
-  tensor("kinetic_stress", c.kineticStress);
-  tensor("contact_stress", c.contactStress);
-  scalar("coordination", c.coordinationNumber);
-  scalar("multi_contact_ratio", c.multiContactRatio);
-  scalar("contact_force", c.contactForce);
-  if (!frame.externalForce.empty()) {
-    scalar("drag_force", c.dragForce);
-    scalar("contact_to_drag_ratio", c.contactToDragRatio);
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -331,230 +260,80 @@ void ExtractStage::run(StageContext& ctx) const {
   spdlog::info("{}: averaging {} of {} frames of {} (from t = {} s)", ctx.stage(), selected.size(), files.size(),
                up.stage, core::humanNumber(start));
 
-  // Per-frame whole-domain values.
-  std::vector<double> time, solidFraction, temperature, pressure, shearStress, dissipation, coordination;
-  double diameter = 0.0, density = 0.0;
-  std::ostringstream perFrame;
-  perFrame.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
-  perFrame << "time,step,solid_fraction,granular_temperature,pressure,pressure_kinetic,pressure_contact,sigma_xy,"
-              "dissipation_rate_dashpots,coordination,multi_contact_ratio\n";
-  json structureRows = json::array();
-  const bool forceStatistics = p.at("force_statistics");
-  std::optional<core::io::FieldFrameWriter> fieldWriter;
-  std::vector<std::string> speciesNames;
+  // The analyses this stage's parameters ask for, each an observer in extract/observe, fed every
+  // averaged frame with its whole-domain averages (computed once here). Finished in this order:
+  // the closure point first (force statistics add to it), then what adds records and files.
+  namespace ob = extract::observe;
+  ob::ClosurePointObserver closurePoint({p.at("family"), shearRate, materials, start, up.stage});
+  std::vector<ob::FrameObserver*> observers{&closurePoint};
+  std::optional<ob::FieldObserver> fields;
   if (p.contains("grid_cells")) {
-    fieldWriter.emplace(ctx.outputDir(), core::io::ArtifactStamp{ctx.key()});
+    std::array<int, 3> cells{};
+    for (std::size_t axis = 0; axis < 3; ++axis) cells[axis] = static_cast<int>(p["grid_cells"][axis].get<double>());
+    std::vector<std::string> speciesNames;
     for (const auto& sp : materials.species) speciesNames.push_back(sp.name);
+    fields.emplace(ob::FieldOptions{cells,
+                                    extract::coarse::CoarseGrainingKernel::fromName(p.at("kernel").get<std::string>(),
+                                                                                    p.at("kernel_width").get<double>()),
+                                    speciesNames, ctx.outputDir(), core::io::ArtifactStamp{ctx.key()}});
+    observers.push_back(&*fields);
   }
-  extract::coarse::CoarseGrainer coarseGrainer;  // keeps its cell arrays from frame to frame
-  core::averaging::FieldTimeAverage fieldAverage;
-  const auto kernel = extract::coarse::CoarseGrainingKernel::fromName(p.at("kernel").get<std::string>(),
-                                                                      p.at("kernel_width").get<double>());
-  std::vector<core::data::ParticleFrame> kept;  // for the pooled statistics
-  // Per kept frame, per MST pass p: the contacts passes 1..p found (Figs. 6.14-6.16).
-  std::vector<std::vector<std::vector<std::size_t>>> mstContacts;
-  auto surface = surfaceTracker(ctx, materials);
+  const bool forceStatistics = p.at("force_statistics");
+  std::optional<ob::StructureObserver> structure;
+  if (p.at("structure").get<bool>()) {
+    structure.emplace(ob::StructureOptions{p.at("family"), static_cast<int>(p.at("mst_passes").get<std::int64_t>()),
+                                           p.at("mst_elongation").get<double>(), forceStatistics});
+    observers.push_back(&*structure);
+  }
+  std::optional<ob::SurfaceObserver> surface;
+  if (!p.at("surface_particles").empty()) {
+    ob::SurfaceOptions options;
+    // Integers >= 0 by declaration; whether the frames hold them is checked frame by frame.
+    for (const auto& id : p["surface_particles"]) options.ids.push_back(id.get<std::int64_t>());
+    options.up = materials.up();  // heights are measured against gravity, +z without it
+    options.tolerance = p.at("surface_tolerance");
+    options.minCoordination = p.at("surface_min_coordination");
+    surface.emplace(std::move(options));
+    observers.push_back(&*surface);
+  }
+  std::optional<ob::ForceStatisticsObserver> forces;
+  if (forceStatistics) {
+    forces.emplace(ob::ForceStatisticsOptions{p.at("family"), p.at("correlation_range").get<double>()}, closurePoint,
+                   structure ? &*structure : nullptr);
+    observers.push_back(&*forces);  // last: it keeps (moves) the frames
+  }
+
   for (const auto& file : selected) {
     if (ctx.stopRequested()) throw StageInterrupted{};
     auto frame = core::io::readParticleFrame(file);
-    const auto a = extract::coarse::averageWholeDomain(frame);
-    const double J = extract::coarse::dissipationRate(frame, a.volume);
-    time.push_back(frame.time);
-    solidFraction.push_back(a.solidFraction);
-    temperature.push_back(a.granularTemperature);
-    pressure.push_back(a.pressure);
-    shearStress.push_back(-a.stress(0, 1));  // positive where the shear does work on the grains
-    dissipation.push_back(J);
-    coordination.push_back(a.coordinationNumber);
-    perFrame << frame.time << ',' << frame.step << ',' << a.solidFraction << ',' << a.granularTemperature << ','
-             << a.pressure << ',' << a.kineticStress.trace() / 3.0 << ',' << a.contactStress.trace() / 3.0 << ','
-             << a.stress(0, 1) << ',' << J << ',' << a.coordinationNumber << ',' << a.multiContactRatio << '\n';
-    if (diameter == 0.0) {
-      // Mean diameter and material density of the grains (monodisperse closures; a mixture's
-      // points carry the number-mean diameter).
-      double sumD = 0.0, sumM = 0.0, sumV = 0.0;
-      for (std::size_t i = 0; i < frame.size(); ++i) {
-        sumD += 2.0 * frame.radius[i];
-        sumM += frame.mass[i];
-        sumV += 4.0 / 3.0 * M_PI * std::pow(frame.radius[i], 3);
-      }
-      diameter = sumD / static_cast<double>(frame.size());
-      density = sumM / sumV;
-    }
-    if (p.at("structure").get<bool>()) {
-      const auto networks = extract::structure::analyzeForceNetworks(frame);
-      json n = {{"family", p.at("family")},
-                {"kind", "force_networks"},
-                {"pass", 0},
-                {"frame_step", frame.step},
-                {"time", frame.time},
-                {"networks", networks.networks.size()},
-                {"strong_particles", networks.strongParticles}};
-      if (!networks.networks.empty()) {
-        const auto& largest = networks.networks.front();
-        n["largest_particles"] = largest.particleIds.size();
-        n["largest_edges"] = largest.contacts;
-        n["largest_coordination"] = largest.coordination;
-        n["largest_extent"] = largest.extent.largestCentreDistance;
-        // The reference gives the extent in d0, the small grains' diameter (52.2 d0, Section
-        // 6.3.2): record it in units of the smallest diameter in the frame too.
-        double smallest = std::numeric_limits<double>::infinity();
-        for (const double r : frame.radius) smallest = std::min(smallest, 2.0 * r);
-        n["extra_json"] = {{"smallest_diameter", smallest},
-                           {"largest_extent_diameters", largest.extent.largestCentreDistance / smallest}};
-      }
-      structureRows.push_back(n);
-      extract::structure::MultiPassMstOptions options;
-      options.passes = static_cast<int>(p.at("mst_passes").get<std::int64_t>());
-      options.elongationFactor = p.at("mst_elongation");
-      const auto mst = extract::structure::runMultiPassMst(frame, options);
-      if (forceStatistics) {
-        auto& perPass = mstContacts.emplace_back();
-        for (std::size_t pass = 1; pass <= mst.passes.size(); ++pass) {
-          perPass.push_back(extract::structure::treeContactsUpToPass(mst, static_cast<int>(pass)));
-        }
-      }
-      for (std::size_t pass = 0; pass < mst.passes.size(); ++pass) {
-        const auto& mp = mst.passes[pass];
-        structureRows.push_back({{"family", p.at("family")},
-                                 {"kind", "mst"},
-                                 {"pass", pass + 1},
-                                 {"frame_step", frame.step},
-                                 {"time", frame.time},
-                                 {"largest_particles", mp.largestTree.particles},
-                                 {"largest_edges", mp.largestTree.edges},
-                                 {"other_trees", mp.otherTrees},
-                                 {"other_edges", mp.otherTreeEdges}});
-      }
-    }
-    if (fieldWriter) {
-      std::array<int, 3> cells{};
-      for (std::size_t axis = 0; axis < 3; ++axis) cells[axis] = static_cast<int>(p["grid_cells"][axis].get<double>());
-      const auto grid = core::grid::CellGrid::overDomain(frame.domain, cells);
-      const auto fields = toFieldFrame(frame, coarseGrainer(frame, grid, kernel), speciesNames);
-      fieldWriter->write(fields);
-      fieldAverage.add(fields);
-    }
-    if (surface) {
+    const auto domain = extract::coarse::averageWholeDomain(frame);
+    ob::ObservedFrame observed{frame, domain};
+    for (auto* observer : observers) {
       try {
-        surface->add(frame, a.coordinationNumber);
+        observer->observe(observed);
       } catch (const Error& e) {
-        throw Error("/stages/" + ctx.stage() + "/params/surface_particles: " + e.what() + " (" + file.string() + ")");
+        if (observer->parameter().empty()) throw;
+        throw Error("/stages/" + ctx.stage() + "/params/" + observer->parameter() + ": " + e.what() + " (" +
+                    file.string() + ")");
       }
     }
-    if (forceStatistics) kept.push_back(std::move(frame));
-  }
-  if (surface) {
-    core::writeFileAtomically(ctx.outputDir() / "surface.csv", surface->csv());
-    ctx.addArtifact("surface.csv", "csv");
-  }
-  core::writeFileAtomically(ctx.outputDir() / "frames.csv", perFrame.str());
-  ctx.addArtifact("frames.csv", "csv");
-  if (fieldWriter) {
-    for (const auto& f : core::io::listFieldFrames(ctx.outputDir())) {
-      ctx.addArtifact(f.lexically_relative(ctx.outputDir()).string(), "field_frame");
-    }
-    ctx.addArtifact("fields.xmf", "xdmf");
-    // The time-averaged fields with their block-averaging errors, as a one-frame collection.
-    core::io::FieldFrameWriter meanWriter(ctx.outputDir() / "mean", core::io::ArtifactStamp{ctx.key()});
-    meanWriter.write(fieldAverage.mean());
-    for (const auto& f : core::io::listFieldFrames(ctx.outputDir() / "mean")) {
-      ctx.addArtifact(f.lexically_relative(ctx.outputDir()).string(), "field_frame");
-    }
-    ctx.addArtifact("mean/fields.xmf", "xdmf");
   }
 
-  // The closure point: time averages with their block-averaging errors.
-  const Averaged eps = averaged(solidFraction), T = averaged(temperature), P = averaged(pressure),
-                 tau = averaged(shearStress), Z = averaged(coordination), dashpots = averaged(dissipation);
-  // The dissipation rate J. The frames' dashpot forces give the power the contacts' dashpots
-  // take out of the relative motion (DissipationRate.hpp). With friction that misses the Coulomb
-  // sliding loss (the tangential spring cut back to the cap) and the tangential spring energy a
-  // contact carries off when it opens: at friction 0.5 in the shear sweep the dashpots took only
-  // 9-56 % of the shear work. In steady Lees-Edwards shear the work done by the shear,
-  // -sigma_xy gammadot, is the whole dissipation (energy balance, VALIDATION.md), with a smaller
-  // error too, so it is J there; the dashpot figure stays in extra_json, and for frictionless
-  // grains their ratio is the check that the averaged window is a steady state. Without shear
-  // the dashpots are all there is: exact for frictionless grains, a lower bound with friction.
-  const bool fromShearWork = shearRate != 0.0;
-  const Averaged J =
-      fromShearWork ? Averaged{tau.mean * std::abs(shearRate), tau.error * std::abs(shearRate)} : dashpots;
-  json row = {{"family", p.at("family")},
-              {"solid_fraction", eps.mean},
-              {"diameter", diameter},
-              {"density", density},
-              {"frames", selected.size()},
-              {"granular_temperature", T.mean},
-              {"granular_temperature_err", T.error},
-              {"pressure", P.mean},
-              {"pressure_err", P.error},
-              {"dissipation_rate", J.mean},
-              {"dissipation_rate_err", J.error},
-              {"coordination", Z.mean},
-              {"coordination_err", Z.error},
-              {"extra_json",
-               {{"solid_fraction_err", eps.error},
-                {"start_time", start},
-                {"upstream_stage", up.stage},
-                {"dissipation_rate_source", fromShearWork ? "shear_work" : "contact_dashpots"},
-                {"dissipation_rate_dashpots", dashpots.mean},
-                {"dissipation_rate_dashpots_err", dashpots.error}}}};
-  contactMaterial(materials, row);
-  if (fromShearWork && row.contains("friction") && row["friction"].get<double>() == 0.0 && J.mean > 0.0) {
-    // Frictionless grains lose energy in the dashpots only: shear work above them is heating.
-    const double gap = std::abs(dashpots.mean - J.mean);
-    if (gap > 3.0 * std::hypot(dashpots.error, J.error) + 0.05 * J.mean) {
-      spdlog::warn(
-          "{}: the shear work ({} W/m3) and the dashpot dissipation ({} W/m3) of these frictionless grains "
-          "differ by {:.0f} %: the averaged frames are not a steady state (raise start_strain or run longer)",
-          ctx.stage(), core::humanNumber(J.mean, 4), core::humanNumber(dashpots.mean, 4), 100.0 * gap / J.mean);
-    }
-  }
-  // The closure forms (core/ClosureForms), each with its block-averaging error.
-  const core::ClosureFormState state{density, diameter, T.mean, std::abs(shearRate)};
-  auto addForm = [&](core::ClosureForm form, const Averaged& value) {
-    const std::string name(core::closureFormInfo(form).name);
-    row[name] = core::toClosureForm(form, value.mean, state);
-    row[name + "_err"] = core::closureFormError(form, {value.mean, value.error}, {T.mean, T.error}, state);
-  };
-  if (T.mean > 0.0) {
-    // The theta-scaled forms a continuum engine uses with its own temperature (DESIGN.md).
-    addForm(core::ClosureForm::PTheta, P);
-    addForm(core::ClosureForm::JTheta, J);
-  }
-  if (shearRate != 0.0) {
-    const double g = std::abs(shearRate);
-    row["shear_rate"] = g;
-    row["shear_stress"] = tau.mean;
-    row["shear_stress_err"] = tau.error;
-    const Averaged mu{tau.mean / g, tau.error / g};
-    row["viscosity"] = mu.mean;
-    row["viscosity_err"] = mu.error;
-    addForm(core::ClosureForm::PShear, P);
-    addForm(core::ClosureForm::TauShear, tau);
-    addForm(core::ClosureForm::TShear, T);
-    if (T.mean > 0.0) addForm(core::ClosureForm::EtaTheta, mu);
-  }
-  if (forceStatistics) {
-    addForceStatistics(ctx, kept, diameter, row);
-    if (!mstContacts.empty()) addMstForceStatistics(ctx, kept, mstContacts, diameter);
-  }
-  for (auto& s : structureRows) ctx.addRecord("structure_statistics", std::move(s));
+  StageSink sink(ctx);
+  ob::ExtractResult result;
+  closurePoint.finish(sink, result);
+  if (fields) fields->finish(sink, result);
+  if (forces) forces->finish(sink, result);
+  if (structure) structure->finish(sink, result);
+  if (surface) surface->finish(sink, result);
   json summary = json::object();
   if (p.at("closure_point").get<bool>()) {
-    ctx.addRecord("closure_points", row);
-    std::ostringstream point;
-    point.precision(std::numeric_limits<double>::max_digits10);
-    point << "quantity,value\n";
-    for (const auto& [k, v] : row.items()) {
-      if (v.is_number()) point << k << ',' << v.get<double>() << '\n';
-    }
-    core::writeFileAtomically(ctx.outputDir() / "closure_point.csv", point.str());
-    ctx.addArtifact("closure_point.csv", "csv");
-    summary = row;
+    ctx.addRecord("closure_points", result.point);
+    sink.writeFile("closure_point.csv", ob::closurePointCsv(result.point), "csv");
+    summary = result.point;
     summary.erase("extra_json");
   }
-  if (surface) summary.update(surface->summary());
+  summary.update(result.summary);
   ctx.setSummary(summary);
 }
 

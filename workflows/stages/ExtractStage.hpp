@@ -1,12 +1,12 @@
 #pragma once
-// `extract`: the micro-to-macro step. Reads the particle frames of one upstream instance (dem,
-// particle_gas) through core's data model, averages each frame over the whole domain (Eq. 2.3
-// stress, Eq. 3.38 temperature, solid fraction, coordination, dissipation rate), time-averages
-// the frames after a start time or strain with block-averaging errors, and reports one closure
-// point to the closure database; optionally force networks and the multi-pass MST per frame
-// (structure_statistics), force statistics pooled over the frames, for all contacts and for
-// those each MST pass found (ExtractForceStatistics.hpp), and the height of chosen particles
-// against the local free surface of the bed (surface.csv, the Brazil-nut criterion).
+// `extract`: the micro-to-macro step, as wiring. Reads the particle frames of one upstream
+// instance through core's data model (their materials included: core/data/Materials), picks the
+// frames after a start time or strain, averages each over the whole domain once, and feeds them
+// to the analyses its parameters ask for, each an observer in extract/observe: the closure point
+// (Eq. 2.3 stress, Eq. 3.38 temperature, solid fraction, coordination, dissipation rate, time-
+// averaged with block errors, closure forms), coarse-grained fields, force networks and the
+// multi-pass MST (structure_statistics), force statistics pooled over the frames, and the height
+// of chosen particles against the local free surface (surface.csv, the Brazil-nut criterion).
 #include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::stages {

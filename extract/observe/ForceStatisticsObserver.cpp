@@ -1,4 +1,4 @@
-#include "workflows/stages/ExtractForceStatistics.hpp"
+#include "extract/observe/ForceStatisticsObserver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +10,7 @@
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/Log.hpp"
+#include "core/text/NumberText.hpp"
 #include "extract/statistics/ContactSubset.hpp"
 #include "extract/statistics/CorrelationLength.hpp"
 #include "extract/statistics/DensityHistogram.hpp"
@@ -18,16 +19,19 @@
 #include "extract/statistics/NormalForces.hpp"
 #include "extract/statistics/VelocityCorrelation.hpp"
 #include "extract/statistics/VelocityMoments.hpp"
-#include "workflows/report/CsvField.hpp"
 
-namespace grainbridge::workflows::stages {
-
-using report::csvNumber;
+namespace grainbridge::extract::observe {
 
 using nlohmann::json;
 namespace st = extract::statistics;
 
 namespace {
+
+// What the helpers below report through, and with which parameters.
+struct Ctx {
+  OutputSink& out;
+  const ForceStatisticsOptions& options;
+};
 
 json fitRow(const json& family, const std::string& source, const char* model, const st::ForcePdfFit& fit,
             double meanForce) {
@@ -67,33 +71,34 @@ struct PdfWithFits {
 
   std::string csvRows(const std::string& prefix) const {
     auto curve = [](const std::optional<st::ForcePdfFit>& fit, double x) {
-      return fit ? csvNumber(st::forcePdf(fit->params, x)) : std::string();
+      return fit ? core::roundTripText(st::forcePdf(fit->params, x)) : std::string();
     };
     std::ostringstream out;
     for (std::size_t k = 0; k + 1 < histogram.edges.size(); ++k) {
       const double c = histogram.centre[k];
-      out << prefix << csvNumber(histogram.edges[k]) << ',' << csvNumber(histogram.edges[k + 1]) << ','
-          << csvNumber(histogram.density[k]) << ',' << csvNumber(histogram.error[k]) << ',' << curve(eq611, c) << ','
-          << curve(eq613, c) << '\n';
+      out << prefix << core::roundTripText(histogram.edges[k]) << ',' << core::roundTripText(histogram.edges[k + 1])
+          << ',' << core::roundTripText(histogram.density[k]) << ',' << core::roundTripText(histogram.error[k]) << ','
+          << curve(eq611, c) << ',' << curve(eq613, c) << '\n';
     }
     return out.str();
   }
 };
 
-PdfWithFits pdfWithFits(StageContext& ctx, const std::vector<double>& f, double meanForce, const std::string& source) {
-  const json& family = ctx.params().at("family");
+PdfWithFits pdfWithFits(const Ctx& ctx, const std::vector<double>& f, double meanForce, const std::string& source) {
+  const json& family = ctx.options.family;
   PdfWithFits out{st::densityHistogram(f, st::BinOptions{}, "normalised contact forces (" + source + ")"), {}, {}};
   auto fitted = [&](const char* model, auto&& fit) -> std::optional<st::ForcePdfFit> {
     try {
       return fit(out.histogram, st::ForcePdfFitOptions{});
     } catch (const Error& e) {
-      spdlog::warn("{}: force PDF fit {} of {} forces ({}) failed: {}", ctx.stage(), model, f.size(), source, e.what());
-      ctx.addRecord("force_statistics", {{"family", family},
-                                         {"source", source},
-                                         {"forces", f.size()},
-                                         {"mean_force", meanForce},
-                                         {"model", model},
-                                         {"extra_json", {{"fit_error", e.what()}}}});
+      spdlog::warn("{}: force PDF fit {} of {} forces ({}) failed: {}", ctx.out.label(), model, f.size(), source,
+                   e.what());
+      ctx.out.addRecord("force_statistics", {{"family", family},
+                                             {"source", source},
+                                             {"forces", f.size()},
+                                             {"mean_force", meanForce},
+                                             {"model", model},
+                                             {"extra_json", {{"fit_error", e.what()}}}});
       return std::nullopt;
     }
   };
@@ -103,22 +108,22 @@ PdfWithFits pdfWithFits(StageContext& ctx, const std::vector<double>& f, double 
 }
 
 // Records the successful fits of `pdf`, with the force correlation length when there is one.
-void recordFits(StageContext& ctx, const PdfWithFits& pdf, const std::string& source, double meanForce,
+void recordFits(const Ctx& ctx, const PdfWithFits& pdf, const std::string& source, double meanForce,
                 const std::optional<st::CorrelationLength>& xi) {
   for (const auto& [model, fit] : {std::pair{"eq6.11", &pdf.eq611}, std::pair{"eq6.13", &pdf.eq613}}) {
     if (!*fit) continue;
-    json row = fitRow(ctx.params().at("family"), source, model, **fit, meanForce);
+    json row = fitRow(ctx.options.family, source, model, **fit, meanForce);
     if (xi) {
       row["correlation_length"] = xi->length;
       row["correlation_length_err"] = xi->error;
     }
-    ctx.addRecord("force_statistics", row);
+    ctx.out.addRecord("force_statistics", row);
   }
 }
 
 // Correlations up to correlation_range diameters, or half the shortest periodic edge.
-st::CorrelationOptions correlationOptions(const StageContext& ctx, const core::data::Domain& domain, double diameter) {
-  double rMax = ctx.params().at("correlation_range").get<double>() * diameter;
+st::CorrelationOptions correlationOptions(const Ctx& ctx, const core::data::Domain& domain, double diameter) {
+  double rMax = ctx.options.correlationRange * diameter;
   for (int a = 0; a < 3; ++a) {
     if (domain.periodic[static_cast<std::size_t>(a)]) rMax = std::min(rMax, 0.5 * (domain.hi[a] - domain.lo[a]));
   }
@@ -126,12 +131,12 @@ st::CorrelationOptions correlationOptions(const StageContext& ctx, const core::d
 }
 
 // A correlation that does not decay within the range has no length: say so, keep the rest.
-std::optional<st::CorrelationLength> lengthOf(const StageContext& ctx, const st::CorrelationFunction& c,
+std::optional<st::CorrelationLength> lengthOf(const Ctx& ctx, const st::CorrelationFunction& c,
                                               const std::string& what) {
   try {
     return st::decayLength(c);
   } catch (const Error& e) {
-    spdlog::warn("{}: no {} correlation length: {}", ctx.stage(), what, e.what());
+    spdlog::warn("{}: no {} correlation length: {}", ctx.out.label(), what, e.what());
     return std::nullopt;
   }
 }
@@ -144,9 +149,7 @@ bool hasRepulsiveContact(const core::data::ParticleFrame& frame) {
   return false;
 }
 
-}  // namespace
-
-void addForceStatistics(StageContext& ctx, const std::vector<core::data::ParticleFrame>& allFrames, double diameter,
+void addForceStatistics(const Ctx& ctx, const std::vector<core::data::ParticleFrame>& allFrames, double diameter,
                         json& point) {
   // Velocity statistics take every frame; force statistics only the frames with a repulsive
   // contact. A dilute gas (solid fraction 0.05 sheared at k* = 1e5) can go 400 frames without
@@ -168,7 +171,7 @@ void addForceStatistics(StageContext& ctx, const std::vector<core::data::Particl
   if (frames.empty()) {
     const std::string why =
         "none of the " + std::to_string(allFrames.size()) + " averaged frames has a contact with F_n > 0";
-    spdlog::warn("{}: no force PDF or force correlation: {}", ctx.stage(), why);
+    spdlog::warn("{}: no force PDF or force correlation: {}", ctx.out.label(), why);
     point["extra_json"]["force_statistics_skipped"] = why;
   } else {
     const auto f = st::normalisedForces(frames);
@@ -176,9 +179,7 @@ void addForceStatistics(StageContext& ctx, const std::vector<core::data::Particl
     for (const auto& frame : frames) meanForce += st::repulsiveForces(frame).meanForce;
     meanForce /= static_cast<double>(frames.size());
     const PdfWithFits pdf = pdfWithFits(ctx, f, meanForce, "contacts");
-    core::writeFileAtomically(ctx.outputDir() / "force_pdf.csv",
-                              "f_lo,f_hi,density,error,eq6.11,eq6.13\n" + pdf.csvRows(""));
-    ctx.addArtifact("force_pdf.csv", "csv");
+    ctx.out.writeFile("force_pdf.csv", "f_lo,f_hi,density,error,eq6.11,eq6.13\n" + pdf.csvRows(""), "csv");
     forces = st::forceCorrelation(frames, options);
     const auto forceLength = lengthOf(ctx, *forces, "force");
     if (forceLength) {
@@ -194,16 +195,16 @@ void addForceStatistics(StageContext& ctx, const std::vector<core::data::Particl
   std::ostringstream corr;
   corr << "r,force_pairs,force_correlation,force_correlation_err,velocity_correlation,velocity_correlation_err\n";
   for (std::size_t k = 0; k < velocities.r.size(); ++k) {
-    corr << csvNumber(velocities.r[k]) << ',' << csvNumber(forces ? forces->pairs[k] : 0.0) << ','
-         << csvNumber(forces ? forces->normalised[k] : NAN) << ','
-         << csvNumber(forces ? forces->normalisedError[k] : NAN) << ',' << csvNumber(velocities.normalised[k]) << ','
-         << csvNumber(velocities.normalisedError[k]) << '\n';
+    corr << core::roundTripText(velocities.r[k]) << ',' << core::roundTripText(forces ? forces->pairs[k] : 0.0) << ','
+         << core::roundTripText(forces ? forces->normalised[k] : NAN) << ','
+         << core::roundTripText(forces ? forces->normalisedError[k] : NAN) << ','
+         << core::roundTripText(velocities.normalised[k]) << ',' << core::roundTripText(velocities.normalisedError[k])
+         << '\n';
   }
-  core::writeFileAtomically(ctx.outputDir() / "correlations.csv", corr.str());
-  ctx.addArtifact("correlations.csv", "csv");
+  ctx.out.writeFile("correlations.csv", corr.str(), "csv");
 }
 
-void addMstForceStatistics(StageContext& ctx, const std::vector<core::data::ParticleFrame>& frames,
+void addMstForceStatistics(const Ctx& ctx, const std::vector<core::data::ParticleFrame>& frames,
                            const std::vector<std::vector<std::vector<std::size_t>>>& treeContacts, double diameter) {
   std::ostringstream pdfCsv, corrCsv;
   pdfCsv << "pass,f_lo,f_hi,density,error,eq6.11,eq6.13\n";
@@ -237,15 +238,29 @@ void addMstForceStatistics(StageContext& ctx, const std::vector<core::data::Part
     pdfCsv << pdf.csvRows(std::to_string(p + 1) + ",");
     const auto forces = st::forceCorrelation(subsets, correlationOptions(ctx, subsets.front().domain, diameter));
     for (std::size_t k = 0; k < forces.r.size(); ++k) {
-      corrCsv << p + 1 << ',' << csvNumber(forces.r[k]) << ',' << csvNumber(forces.pairs[k]) << ','
-              << csvNumber(forces.normalised[k]) << ',' << csvNumber(forces.normalisedError[k]) << '\n';
+      corrCsv << p + 1 << ',' << core::roundTripText(forces.r[k]) << ',' << core::roundTripText(forces.pairs[k]) << ','
+              << core::roundTripText(forces.normalised[k]) << ',' << core::roundTripText(forces.normalisedError[k])
+              << '\n';
     }
     recordFits(ctx, pdf, source, meanForce, lengthOf(ctx, forces, source + " force"));
   }
-  core::writeFileAtomically(ctx.outputDir() / "mst_force_pdf.csv", pdfCsv.str());
-  ctx.addArtifact("mst_force_pdf.csv", "csv");
-  core::writeFileAtomically(ctx.outputDir() / "mst_correlations.csv", corrCsv.str());
-  ctx.addArtifact("mst_correlations.csv", "csv");
+  ctx.out.writeFile("mst_force_pdf.csv", pdfCsv.str(), "csv");
+  ctx.out.writeFile("mst_correlations.csv", corrCsv.str(), "csv");
 }
 
-}  // namespace grainbridge::workflows::stages
+}  // namespace
+
+void ForceStatisticsObserver::observe(ObservedFrame& observed) {
+  frames_.push_back(std::move(observed.frame));  // registered last: no observer reads it after
+}
+
+void ForceStatisticsObserver::finish(OutputSink& out, ExtractResult& result) {
+  const Ctx ctx{out, options_};
+  const double diameter = closurePoint_.diameter();
+  addForceStatistics(ctx, frames_, diameter, result.point);
+  if (structure_ != nullptr && !structure_->treeContacts().empty()) {
+    addMstForceStatistics(ctx, frames_, structure_->treeContacts(), diameter);
+  }
+}
+
+}  // namespace grainbridge::extract::observe

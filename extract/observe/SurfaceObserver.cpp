@@ -1,28 +1,28 @@
-#include "workflows/stages/SurfaceTracker.hpp"
+#include "extract/observe/SurfaceObserver.hpp"
 
 #include <algorithm>
-#include <sstream>
 #include <limits>
+#include <sstream>
 
 #include "extract/structure/LocalFreeSurface.hpp"
 
-namespace grainbridge::workflows::stages {
+namespace grainbridge::extract::observe {
 
-SurfaceTracker::SurfaceTracker(SurfaceTrackerOptions options) : options_(std::move(options)) {}
-
-void SurfaceTracker::add(const core::data::ParticleFrame& frame, double coordination) {
+void SurfaceObserver::observe(ObservedFrame& observed) {
+  const auto& frame = observed.frame;
+  const double coordination = observed.domain.coordinationNumber;
   if (frame.size() == 0) return;
   const double smallest = 2.0 * *std::min_element(frame.radius.begin(), frame.radius.end());
   const bool judged = coordination >= options_.minCoordination;
   for (const std::int64_t id : options_.ids) {
-    const auto s = extract::structure::localFreeSurface(frame, id, options_.up);
+    const auto s = structure::localFreeSurface(frame, id, options_.up);
     const double gapDiameters = s.gap / smallest;
     rows_.push_back({frame.time, frame.step, id, s.top, s.surface, s.gap, gapDiameters, s.coveringGrains, coordination,
                      judged, judged && gapDiameters <= options_.tolerance});
   }
 }
 
-std::string SurfaceTracker::csv() const {
+std::string SurfaceObserver::csv() const {
   std::ostringstream out;
   out.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
   out << "time,step,id,top,surface,gap,gap_diameters,covering_grains,coordination,judged,at_top\n";
@@ -35,7 +35,12 @@ std::string SurfaceTracker::csv() const {
   return out.str();
 }
 
-nlohmann::json SurfaceTracker::summary() const {
+void SurfaceObserver::finish(OutputSink& out, ExtractResult& result) {
+  out.writeFile("surface.csv", csv(), "csv");
+  result.summary.update(summary());
+}
+
+nlohmann::json SurfaceObserver::summary() const {
   nlohmann::json out = nlohmann::json::object();
   for (const std::int64_t id : options_.ids) {
     std::vector<const Row*> judged;
@@ -56,4 +61,4 @@ nlohmann::json SurfaceTracker::summary() const {
   return out;
 }
 
-}  // namespace grainbridge::workflows::stages
+}  // namespace grainbridge::extract::observe

@@ -1,0 +1,157 @@
+#include "extract/observe/ClosurePointObserver.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "core/ClosureForms.hpp"
+#include "core/Log.hpp"
+#include "core/averaging/BlockAverage.hpp"
+#include "core/text/NumberText.hpp"
+#include "extract/coarse/DissipationRate.hpp"
+
+namespace grainbridge::extract::observe {
+
+using nlohmann::json;
+
+namespace {
+
+// One time-averaged quantity: mean and block-averaging standard error.
+struct Averaged {
+  double mean = 0.0;
+  double error = 0.0;
+};
+
+Averaged averaged(const std::vector<double>& samples) {
+  const auto b = core::averaging::blockAverage(samples);
+  return {b.mean, b.standardError};
+}
+
+}  // namespace
+
+ClosurePointObserver::ClosurePointObserver(ClosurePointOptions options) : options_(std::move(options)) {
+  perFrame_.precision(std::numeric_limits<double>::max_digits10);  // full precision: read back by programs
+  perFrame_ << "time,step,solid_fraction,granular_temperature,pressure,pressure_kinetic,pressure_contact,sigma_xy,"
+               "dissipation_rate_dashpots,coordination,multi_contact_ratio\n";
+}
+
+void ClosurePointObserver::observe(ObservedFrame& observed) {
+  const auto& frame = observed.frame;
+  const auto& a = observed.domain;
+  const double J = coarse::dissipationRate(frame, a.volume);
+  solidFraction_.push_back(a.solidFraction);
+  temperature_.push_back(a.granularTemperature);
+  pressure_.push_back(a.pressure);
+  shearStress_.push_back(-a.stress(0, 1));  // positive where the shear does work on the grains
+  dissipation_.push_back(J);
+  coordination_.push_back(a.coordinationNumber);
+  ++frames_;
+  perFrame_ << frame.time << ',' << frame.step << ',' << a.solidFraction << ',' << a.granularTemperature << ','
+            << a.pressure << ',' << a.kineticStress.trace() / 3.0 << ',' << a.contactStress.trace() / 3.0 << ','
+            << a.stress(0, 1) << ',' << J << ',' << a.coordinationNumber << ',' << a.multiContactRatio << '\n';
+  if (diameter_ == 0.0) {
+    // Mean diameter and material density of the grains (monodisperse closures; a mixture's
+    // points carry the number-mean diameter).
+    double sumD = 0.0, sumM = 0.0, sumV = 0.0;
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      sumD += 2.0 * frame.radius[i];
+      sumM += frame.mass[i];
+      sumV += 4.0 / 3.0 * M_PI * std::pow(frame.radius[i], 3);
+    }
+    diameter_ = sumD / static_cast<double>(frame.size());
+    density_ = sumM / sumV;
+  }
+}
+
+void ClosurePointObserver::finish(OutputSink& out, ExtractResult& result) {
+  out.writeFile("frames.csv", perFrame_.str(), "csv");
+
+  const Averaged eps = averaged(solidFraction_), T = averaged(temperature_), P = averaged(pressure_),
+                 tau = averaged(shearStress_), Z = averaged(coordination_), dashpots = averaged(dissipation_);
+  // The dissipation rate J. The frames' dashpot forces give the power the contacts' dashpots
+  // take out of the relative motion (DissipationRate.hpp). With friction that misses the Coulomb
+  // sliding loss (the tangential spring cut back to the cap) and the tangential spring energy a
+  // contact carries off when it opens: at friction 0.5 in the shear sweep the dashpots took only
+  // 9-56 % of the shear work. In steady Lees-Edwards shear the work done by the shear,
+  // -sigma_xy gammadot, is the whole dissipation (energy balance, VALIDATION.md), with a smaller
+  // error too, so it is J there; the dashpot figure stays in extra_json, and for frictionless
+  // grains their ratio is the check that the averaged window is a steady state. Without shear
+  // the dashpots are all there is: exact for frictionless grains, a lower bound with friction.
+  const double shearRate = options_.shearRate;
+  const bool fromShearWork = shearRate != 0.0;
+  const Averaged J =
+      fromShearWork ? Averaged{tau.mean * std::abs(shearRate), tau.error * std::abs(shearRate)} : dashpots;
+  json row = {{"family", options_.family},
+              {"solid_fraction", eps.mean},
+              {"diameter", diameter_},
+              {"density", density_},
+              {"frames", frames_},
+              {"granular_temperature", T.mean},
+              {"granular_temperature_err", T.error},
+              {"pressure", P.mean},
+              {"pressure_err", P.error},
+              {"dissipation_rate", J.mean},
+              {"dissipation_rate_err", J.error},
+              {"coordination", Z.mean},
+              {"coordination_err", Z.error},
+              {"extra_json",
+               {{"solid_fraction_err", eps.error},
+                {"start_time", options_.startTime},
+                {"upstream_stage", options_.upstreamStage},
+                {"dissipation_rate_source", fromShearWork ? "shear_work" : "contact_dashpots"},
+                {"dissipation_rate_dashpots", dashpots.mean},
+                {"dissipation_rate_dashpots_err", dashpots.error}}}};
+  // The state the point belongs to: restitution and friction of the first species pair, from
+  // the materials the frames carry (frames without contact materials, a particle gas, have none).
+  if (!options_.materials.pairs.empty()) {
+    row["restitution"] = options_.materials.pairs.front().restitution;
+    row["friction"] = options_.materials.pairs.front().friction;
+  }
+  if (fromShearWork && row.contains("friction") && row["friction"].get<double>() == 0.0 && J.mean > 0.0) {
+    // Frictionless grains lose energy in the dashpots only: shear work above them is heating.
+    const double gap = std::abs(dashpots.mean - J.mean);
+    if (gap > 3.0 * std::hypot(dashpots.error, J.error) + 0.05 * J.mean) {
+      spdlog::warn(
+          "{}: the shear work ({} W/m3) and the dashpot dissipation ({} W/m3) of these frictionless grains "
+          "differ by {:.0f} %: the averaged frames are not a steady state (raise start_strain or run longer)",
+          out.label(), core::humanNumber(J.mean, 4), core::humanNumber(dashpots.mean, 4), 100.0 * gap / J.mean);
+    }
+  }
+  // The closure forms (core/ClosureForms), each with its block-averaging error.
+  const core::ClosureFormState state{density_, diameter_, T.mean, std::abs(shearRate)};
+  auto addForm = [&](core::ClosureForm form, const Averaged& value) {
+    const std::string name(core::closureFormInfo(form).name);
+    row[name] = core::toClosureForm(form, value.mean, state);
+    row[name + "_err"] = core::closureFormError(form, {value.mean, value.error}, {T.mean, T.error}, state);
+  };
+  if (T.mean > 0.0) {
+    // The theta-scaled forms a continuum engine uses with its own temperature (DESIGN.md).
+    addForm(core::ClosureForm::PTheta, P);
+    addForm(core::ClosureForm::JTheta, J);
+  }
+  if (shearRate != 0.0) {
+    const double g = std::abs(shearRate);
+    row["shear_rate"] = g;
+    row["shear_stress"] = tau.mean;
+    row["shear_stress_err"] = tau.error;
+    const Averaged mu{tau.mean / g, tau.error / g};
+    row["viscosity"] = mu.mean;
+    row["viscosity_err"] = mu.error;
+    addForm(core::ClosureForm::PShear, P);
+    addForm(core::ClosureForm::TauShear, tau);
+    addForm(core::ClosureForm::TShear, T);
+    if (T.mean > 0.0) addForm(core::ClosureForm::EtaTheta, mu);
+  }
+  result.point = std::move(row);
+}
+
+std::string closurePointCsv(const json& point) {
+  std::ostringstream csv;
+  csv.precision(std::numeric_limits<double>::max_digits10);
+  csv << "quantity,value\n";
+  for (const auto& [k, v] : point.items()) {
+    if (v.is_number()) csv << k << ',' << v.get<double>() << '\n';
+  }
+  return csv.str();
+}
+
+}  // namespace grainbridge::extract::observe

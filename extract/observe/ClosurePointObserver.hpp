@@ -1,0 +1,46 @@
+#pragma once
+// The closure point of an extraction: per frame the whole-domain solid fraction, granular
+// temperature, pressure, shear stress, dissipation rate and coordination (written as frames.csv),
+// time-averaged with block-averaging errors (core/averaging) into the point's row with its
+// closure forms (core/ClosureForms) and the state it belongs to (the materials the frames carry).
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/data/Materials.hpp"
+#include "extract/observe/FrameObserver.hpp"
+
+namespace grainbridge::extract::observe {
+
+struct ClosurePointOptions {
+  nlohmann::json family;            // the closure family the point is filed under ("simple_shear")
+  double shearRate = 0.0;           // imposed Lees-Edwards rate of the frames (0: none)
+  core::data::Materials materials;  // of the frames: restitution, friction of the first pair
+  double startTime = 0.0;           // first averaged frame's time window start (provenance)
+  std::string upstreamStage;        // provenance
+};
+
+class ClosurePointObserver final : public FrameObserver {
+ public:
+  explicit ClosurePointObserver(ClosurePointOptions options);
+  void observe(ObservedFrame& frame) override;
+  // Writes frames.csv and puts the point's row in result.point (whether or not the stage records
+  // it: force statistics add to it).
+  void finish(OutputSink& out, ExtractResult& result) override;
+
+  // Number-mean diameter and material density of the grains (of the first frame).
+  [[nodiscard]] double diameter() const { return diameter_; }
+
+ private:
+  ClosurePointOptions options_;
+  std::vector<double> solidFraction_, temperature_, pressure_, shearStress_, dissipation_, coordination_;
+  std::ostringstream perFrame_;
+  std::size_t frames_ = 0;
+  double diameter_ = 0.0, density_ = 0.0;
+};
+
+// The closure point as the CSV beside it: one line per numeric quantity, full precision.
+std::string closurePointCsv(const nlohmann::json& point);
+
+}  // namespace grainbridge::extract::observe
