@@ -1,0 +1,46 @@
+#pragma once
+// Fields over a staggered grid (StaggeredGrid.hpp): a CellField holds one value per cell centre,
+// a FaceField one value per face normal to its axis (a velocity component), both over the padded
+// index range (ghosts included), so a boundary condition is a write to a ghost entry and every
+// stencil reads its neighbours without a bounds test.
+#include <cstddef>
+#include <vector>
+
+#include "engines/fluid/StaggeredGrid.hpp"
+
+namespace grainbridge::fluid {
+
+class CellField {
+ public:
+  explicit CellField(const StaggeredGrid& grid, double value = 0.0) : grid_(&grid), v_(grid.paddedCount(), value) {}
+  [[nodiscard]] double& operator()(int i, int j, int k) { return v_[grid_->index(i, j, k)]; }
+  [[nodiscard]] double operator()(int i, int j, int k) const { return v_[grid_->index(i, j, k)]; }
+  [[nodiscard]] double& operator[](std::size_t c) { return v_[c]; }
+  [[nodiscard]] double operator[](std::size_t c) const { return v_[c]; }
+  [[nodiscard]] const std::vector<double>& values() const { return v_; }
+  [[nodiscard]] const StaggeredGrid& grid() const { return *grid_; }
+
+ private:
+  const StaggeredGrid* grid_;
+  std::vector<double> v_;
+};
+
+// Values on the faces normal to `axis`; entry (i, j, k) is the high face of cell (i, j, k).
+class FaceField {
+ public:
+  FaceField(const StaggeredGrid& grid, int axis, double value = 0.0)
+      : grid_(&grid), axis_(axis), v_(grid.paddedCount(), value) {}
+  [[nodiscard]] int axis() const { return axis_; }
+  [[nodiscard]] double& operator()(int i, int j, int k) { return v_[grid_->index(i, j, k)]; }
+  [[nodiscard]] double operator()(int i, int j, int k) const { return v_[grid_->index(i, j, k)]; }
+  [[nodiscard]] double& operator[](std::size_t c) { return v_[c]; }
+  [[nodiscard]] double operator[](std::size_t c) const { return v_[c]; }
+  [[nodiscard]] const std::vector<double>& values() const { return v_; }
+
+ private:
+  const StaggeredGrid* grid_;
+  int axis_;
+  std::vector<double> v_;
+};
+
+}  // namespace grainbridge::fluid

@@ -1,0 +1,7 @@
+# engines/fluid: the multiphase staggered-grid finite-volume framework (Section 3.3).
+grainbridge_add_test(test_fluid
+  SOURCES
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/StaggeredGridTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/SuperbeeTest.cpp
+  LIBS engines_fluid
+  LABELS "unit;fluid")
