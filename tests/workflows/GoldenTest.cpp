@@ -72,6 +72,9 @@ std::string reportPageDigest(const fs::path& file) {
 std::string contentDigest(const fs::path& file, const std::string& kind) {
   if (kind == "field_frame") return fieldFrameDigest(file);
   if (kind == "report_html") return reportPageDigest(file);
+  // A PNG is the raster of the SVG beside it (report/Plot draws both from one script), and its
+  // bytes depend on the machine's fonts and cairo: the SVG carries the figure's content.
+  if (kind == "png") return "raster of the svg beside it";
   if (kind != "particle_frame") return core::sha256File(file);
   const auto f = core::io::readParticleFrame(file);
   std::ostringstream out;
