@@ -88,7 +88,9 @@ JSON
 }
 
 echo "machine: $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
-echo "grainbridge: $gb ($(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)), core $core"
+# The binary's own version line (its git SHA and dirty flag), not the checkout's HEAD: GRAINBRIDGE
+# may point at another build.
+echo "grainbridge: $gb ($("$gb" --version 2>/dev/null | head -1 || echo unknown)), core $core"
 if ((scaling)); then
   time_bed 25 8
   time_bed 50 32
