@@ -11,6 +11,7 @@
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/io/XdmfText.hpp"
+#include "core/text/NumberText.hpp"
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
 #include "db/ProvenanceStore.hpp"
@@ -29,12 +30,7 @@ struct Row {
   double referenceValue = NAN, ours = NAN;
 };
 
-std::string number(double v) {
-  if (!std::isfinite(v)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string number(double v) { return std::isfinite(v) ? core::humanNumber(v) : ""; }
 
 std::string percent(double referenceValue, double ours) {
   if (!std::isfinite(referenceValue) || !std::isfinite(ours) || referenceValue == 0.0) return "";
