@@ -3,5 +3,6 @@ grainbridge_add_test(test_fluid
   SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/StaggeredGridTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/SuperbeeTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/StencilSystemTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")

@@ -1,0 +1,86 @@
+#include "engines/fluid/StencilSystem.hpp"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/Error.hpp"
+
+namespace grainbridge::fluid {
+
+namespace {
+
+// The padded neighbour of c in slot `n`, or nothing when the axis is not active (z in 2D).
+bool neighbourOf(const StaggeredGrid& grid, std::size_t c, int n, std::size_t& out) {
+  const int axis = n / 2;
+  if (!grid.active(axis)) return false;
+  out = grid.neighbour(c, axis, n % 2 == 0 ? -1 : +1);
+  return true;
+}
+
+}  // namespace
+
+StencilSystem::StencilSystem(const StaggeredGrid& grid)
+    : grid_(&grid), ap_(grid.paddedCount(), 0.0), b_(grid.paddedCount(), 0.0), active_(grid.paddedCount(), 0) {
+  for (auto& a : anb_) a.assign(grid.paddedCount(), 0.0);
+  for (int k = 0; k < grid.cells(2); ++k)
+    for (int j = 0; j < grid.cells(1); ++j)
+      for (int i = 0; i < grid.cells(0); ++i) active_[grid.index(i, j, k)] = 1;
+}
+
+void StencilSystem::solve(CellField& phi) const {
+  const std::size_t n = ap_.size();
+  std::vector<long> row(n, -1);
+  long unknowns = 0;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (active_[c] != 0) row[c] = unknowns++;
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(unknowns) * 7);
+  Eigen::VectorXd rhs(unknowns);
+  for (std::size_t c = 0; c < n; ++c) {
+    if (active_[c] == 0) continue;
+    if (ap_[c] == 0.0) throw Error("fluid: a_P is zero at padded cell " + std::to_string(c) + ": no equation there");
+    entries.emplace_back(row[c], row[c], ap_[c]);
+    double known = b_[c];
+    for (int nb = 0; nb < 6; ++nb) {
+      std::size_t m = 0;
+      const double a = anb_[static_cast<std::size_t>(nb)][c];
+      if (a == 0.0 || !neighbourOf(*grid_, c, nb, m)) continue;
+      if (active_[m] != 0) {
+        entries.emplace_back(row[c], row[m], -a);
+      } else {
+        known += a * phi[m];  // a boundary value: known
+      }
+    }
+    rhs[row[c]] = known;
+  }
+  Eigen::SparseMatrix<double> A(unknowns, unknowns);
+  A.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  lu.compute(A);
+  if (lu.info() != Eigen::Success)
+    throw Error("fluid: the discretised system is singular (" + lu.lastErrorMessage() + ")");
+  const Eigen::VectorXd x = lu.solve(rhs);
+  for (std::size_t c = 0; c < n; ++c) {
+    if (active_[c] != 0) phi[c] = x[row[c]];
+  }
+}
+
+double StencilSystem::residual(const CellField& phi) const {
+  double worst = 0.0;
+  for (std::size_t c = 0; c < ap_.size(); ++c) {
+    if (active_[c] == 0) continue;
+    double r = ap_[c] * phi[c] - b_[c];
+    for (int nb = 0; nb < 6; ++nb) {
+      std::size_t m = 0;
+      if (neighbourOf(*grid_, c, nb, m)) r -= anb_[static_cast<std::size_t>(nb)][c] * phi[m];
+    }
+    worst = std::max(worst, std::abs(r));
+  }
+  return worst;
+}
+
+}  // namespace grainbridge::fluid

@@ -1,0 +1,49 @@
+#pragma once
+// The discretised form every transport equation of the framework takes on a staggered grid,
+// Eq. 3.64:   a_P Phi_P = sum_nb a_nb Phi_nb + b
+// with the six neighbours W, E, S, N, B, T (fewer in 2D). Coefficients live per padded cell; the
+// unknowns are the cells marked active (the interior for a scalar; a face's interior for a
+// velocity component), and a neighbour that is not active (a ghost cell holding a boundary
+// value, Eqs. 3.66-3.67) is known: its term moves to the right-hand side. `solve` hands the
+// system to Eigen's sparse LU, single-threaded, so equal inputs give bit-equal results (a
+// resumed run repeats an uninterrupted one).
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "engines/fluid/Fields.hpp"
+#include "engines/fluid/StaggeredGrid.hpp"
+
+namespace grainbridge::fluid {
+
+// Neighbour slots: 2 * axis for the low side (W, S, B), 2 * axis + 1 for the high side (E, N, T).
+enum Neighbour : int { West = 0, East = 1, South = 2, North = 3, Bottom = 4, Top = 5 };
+
+class StencilSystem {
+ public:
+  // All coefficients zero; the interior cells active.
+  explicit StencilSystem(const StaggeredGrid& grid);
+
+  [[nodiscard]] const StaggeredGrid& grid() const { return *grid_; }
+  [[nodiscard]] double& ap(std::size_t c) { return ap_[c]; }
+  [[nodiscard]] double& anb(std::size_t c, int neighbour) { return anb_[static_cast<std::size_t>(neighbour)][c]; }
+  [[nodiscard]] double& b(std::size_t c) { return b_[c]; }
+  void setActive(std::size_t c, bool active) { active_[c] = active ? 1 : 0; }
+  [[nodiscard]] bool active(std::size_t c) const { return active_[c] != 0; }
+
+  // Solves for the active cells of `phi`; its other entries are the known boundary values.
+  // Throws grainbridge::Error naming the cell when the system is singular (a zero a_P, a
+  // cell cut off from every boundary value).
+  void solve(CellField& phi) const;
+  // The largest |a_P Phi_P - sum a_nb Phi_nb - b| over the active cells: the residual the
+  // solver's convergence test reads.
+  [[nodiscard]] double residual(const CellField& phi) const;
+
+ private:
+  const StaggeredGrid* grid_;
+  std::vector<double> ap_, b_;
+  std::array<std::vector<double>, 6> anb_;
+  std::vector<char> active_;
+};
+
+}  // namespace grainbridge::fluid
