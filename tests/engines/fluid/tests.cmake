@@ -4,5 +4,6 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/StaggeredGridTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/SuperbeeTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/StencilSystemTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/ConvectionDiffusionTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
