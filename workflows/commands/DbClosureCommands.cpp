@@ -62,12 +62,6 @@ std::string cell(const json& v) {
   return core::humanText(v);
 }
 
-std::string csvCell(const json& v) {
-  if (v.is_null()) return "";
-  if (v.is_number_float()) return core::roundTripText(v.get<double>());
-  return report::csvField(v.is_string() ? v.get<std::string>() : v.dump());
-}
-
 // Columns to show: the requested ones (checked), else every column that is set in some row.
 std::vector<std::string> shownColumns(const json& rows, const std::string& requested,
                                       const std::vector<std::string>& known) {
@@ -111,7 +105,8 @@ std::string formatRows(const json& rows, const std::vector<std::string>& columns
     for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c];
     out << "\n";
     for (const auto& row : rows) {
-      for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << csvCell(row.value(columns[c], json()));
+      for (std::size_t c = 0; c < columns.size(); ++c)
+        out << (c ? "," : "") << report::csvValue(row.value(columns[c], json()));
       out << "\n";
     }
     return out.str();

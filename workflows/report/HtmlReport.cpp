@@ -379,14 +379,8 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::Up
       const json sweep = sweepOf(*inst);
       const json summary = summaryOf(*inst);
       stageCsv << inst->key;
-      auto field = [](const json& v) {
-        if (v.is_null()) return std::string();
-        if (v.is_string()) return csvField(v.get<std::string>());
-        if (v.is_number_float()) return core::roundTripText(v.get<double>());
-        return csvField(v.dump());
-      };
-      for (const auto& k : sweepKeys) stageCsv << ',' << field(sweep.value(k, json()));
-      for (const auto& k : summaryKeys) stageCsv << ',' << field(summary.value(k, json()));
+      for (const auto& k : sweepKeys) stageCsv << ',' << csvValue(sweep.value(k, json()));
+      for (const auto& k : summaryKeys) stageCsv << ',' << csvValue(summary.value(k, json()));
       stageCsv << '\n';
     }
     const std::string stageCsvName = "stage_" + g.stage + ".csv";

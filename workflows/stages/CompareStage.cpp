@@ -104,17 +104,20 @@ std::string where(const Point& pt) {
          (pt.friction != 0.0 ? ", μ " + core::humanNumber(pt.friction) : "");
 }
 
+// One finite relative deviation of a closure point from a model, as comparison.csv has it.
 struct Deviation {
   double relative = 0.0;  // (DEM - model) / model
   const Point* at = nullptr;
   std::string quantity;
+  kt::KineticModelName model = kt::KineticModelName::Lun1984;
 };
 
 // The findings' headline and table: for each model and form its largest relative deviation
 // from DEM and the state where it occurs; the sentence names the primary model's largest,
 // over every point and over the dilute points the summary is restricted to.
 void describeDeviations(const std::vector<Point>& points, const std::vector<std::string>& quantities,
-                        kt::KineticModelName primary, double limit, report::Findings& findings) {
+                        const std::vector<Deviation>& deviations, kt::KineticModelName primary, double limit,
+                        report::Findings& findings) {
   std::vector<std::string> present;
   for (const auto& q : quantities) {
     if (std::any_of(points.begin(), points.end(), [&](const Point& pt) { return pt.has(q.c_str()); }))
@@ -128,12 +131,9 @@ void describeDeviations(const std::vector<Point>& points, const std::vector<std:
     std::vector<std::string> row = {std::string(kt::toString(model))};
     for (const auto& q : present) {
       Deviation worst;
-      for (const auto& pt : points) {
-        if (!pt.has(q.c_str())) continue;
-        const double model_value =
-            predicted(predict(model, pt.solidFraction, pt.restitution, pt.shearRate, pt.diameter, pt.density), q);
-        if (!std::isfinite(model_value) || model_value == 0.0) continue;
-        const Deviation d{(pt.value(q.c_str()) - model_value) / model_value, &pt, q};
+      for (const auto& d : deviations) {
+        if (d.model != model || d.quantity != q) continue;
+        const Point& pt = *d.at;
         if (worst.at == nullptr || std::abs(d.relative) > std::abs(worst.relative)) worst = d;
         if (model == primary) {
           if (primaryAll.at == nullptr || std::abs(d.relative) > std::abs(primaryAll.relative)) primaryAll = d;
@@ -210,6 +210,7 @@ void CompareStage::run(StageContext& ctx) const {
   json summary = {{"model", kt::toString(primary)}, {"points", points.size()}};
   const double limit = p.at("summary_max_solid_fraction");
   std::map<std::string, double> worst;
+  std::vector<Deviation> deviations;  // the finite ones, for the findings
   for (const auto& pt : points) {
     for (auto model : kt::kAllKineticModels) {
       const auto pred = predict(model, pt.solidFraction, pt.restitution, pt.shearRate, pt.diameter, pt.density);
@@ -221,9 +222,9 @@ void CompareStage::run(StageContext& ctx) const {
         const double deviation = kt != 0.0 ? (dem - kt) / kt : NAN;
         csv << pt.solidFraction << ',' << pt.restitution << ',' << pt.friction << ',' << pt.shearRate << ',' << q << ','
             << dem << ',' << pt.error(q) << ',' << kt::toString(model) << ',' << kt << ',' << deviation << '\n';
-        if (model == primary && pt.solidFraction <= limit && std::isfinite(deviation)) {
-          worst[q] = std::max(worst[q], std::abs(deviation));
-        }
+        if (!std::isfinite(deviation)) continue;
+        deviations.push_back({deviation, &pt, q, model});
+        if (model == primary && pt.solidFraction <= limit) worst[q] = std::max(worst[q], std::abs(deviation));
       }
     }
   }
@@ -239,7 +240,6 @@ void CompareStage::run(StageContext& ctx) const {
   report::Findings findings;
   findings.title = p.at("title").get<std::string>();
   findings.details = "compare.html";
-  std::vector<std::string> shown;
   for (const auto& q : quantities) {
     const auto& form = core::closureFormInfo(*core::closureFormFromName(q));
     report::Figure fig;
@@ -288,13 +288,11 @@ void CompareStage::run(StageContext& ctx) const {
     ctx.addArtifact(drawn.svg, "svg");
     ctx.addArtifact(drawn.png, "png");
     findings.figures.push_back({drawn.svg, drawn.png, fig.title});
-    shown.push_back(q);
   }
   // Shear-scaled forms first; the first screen shows the three of one family.
   std::stable_partition(findings.figures.begin(), findings.figures.end(),
                         [](const report::FindingsFigure& f) { return f.svg.find("_shear") != std::string::npos; });
-  findings.firstScreen = 3;
-  describeDeviations(points, quantities, primary, limit, findings);
+  describeDeviations(points, quantities, deviations, primary, limit, findings);
   ctx.setFindings(findings);
 
   std::ostringstream html;
