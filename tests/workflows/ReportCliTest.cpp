@@ -45,9 +45,13 @@ TEST(ReportCli, OpenHandsThePageToTheBrowser) {
   TempDir work;
   writeText(work.path() / "rw.json", kWorkflow);
   ASSERT_EQ(runGrainbridge(work.path(), "run rw.json").exitCode, 0);
-  // A stand-in browser that records what it was asked to open.
+  // A stand-in browser that records what it was asked to open. It writes a temporary file and
+  // renames it, so "opened" appears whole: the shell's `>` creates the file before echo fills it,
+  // and the poll below could read it empty.
   const fs::path browser = work.path() / "browser.sh";
-  writeText(browser, "#!/bin/sh\necho \"$1\" > '" + (work.path() / "opened").string() + "'\n");
+  const std::string opened_path = (work.path() / "opened").string();
+  writeText(browser, "#!/bin/sh\necho \"$1\" > '" + opened_path + ".tmp' && mv '" + opened_path + ".tmp' '" +
+                         opened_path + "'\n");
   fs::permissions(browser, fs::perms::owner_all);
   const auto report = runGrainbridge(work.path(), "report rw.json --open", "BROWSER='" + browser.string() + "'");
   ASSERT_EQ(report.exitCode, 0) << report.output;
