@@ -18,6 +18,7 @@ class CellField {
   [[nodiscard]] double& operator[](std::size_t c) { return v_[c]; }
   [[nodiscard]] double operator[](std::size_t c) const { return v_[c]; }
   [[nodiscard]] const std::vector<double>& values() const { return v_; }
+  [[nodiscard]] std::vector<double>& values() { return v_; }
   [[nodiscard]] const StaggeredGrid& grid() const { return *grid_; }
 
  private:
@@ -36,6 +37,8 @@ class FaceField {
   [[nodiscard]] double& operator[](std::size_t c) { return v_[c]; }
   [[nodiscard]] double operator[](std::size_t c) const { return v_[c]; }
   [[nodiscard]] const std::vector<double>& values() const { return v_; }
+  [[nodiscard]] std::vector<double>& values() { return v_; }
+  [[nodiscard]] const StaggeredGrid& grid() const { return *grid_; }
 
  private:
   const StaggeredGrid* grid_;

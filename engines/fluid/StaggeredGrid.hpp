@@ -45,6 +45,17 @@ class StaggeredGrid {
   [[nodiscard]] std::size_t neighbour(std::size_t c, int axis, int direction) const {
     return direction > 0 ? c + stride_[static_cast<std::size_t>(axis)] : c - stride_[static_cast<std::size_t>(axis)];
   }
+  // (i, j, k) of a flat index: the inverse of index().
+  [[nodiscard]] std::array<int, 3> coordinates(std::size_t c) const {
+    const int i = static_cast<int>(c % padded_[0]) - ghosts(0);
+    const int j = static_cast<int>((c / padded_[0]) % padded_[1]) - ghosts(1);
+    const int k = static_cast<int>(c / (padded_[0] * padded_[1])) - ghosts(2);
+    return {i, j, k};
+  }
+  [[nodiscard]] bool interior(std::size_t c) const {
+    const auto [i, j, k] = coordinates(c);
+    return interior(i, j, k);
+  }
   [[nodiscard]] bool interior(int i, int j, int k) const {
     return i >= 0 && i < cells(0) && j >= 0 && j < cells(1) && k >= 0 && k < cells(2);
   }

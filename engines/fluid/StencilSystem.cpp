@@ -30,7 +30,7 @@ StencilSystem::StencilSystem(const StaggeredGrid& grid)
       for (int i = 0; i < grid.cells(0); ++i) active_[grid.index(i, j, k)] = 1;
 }
 
-void StencilSystem::solve(CellField& phi) const {
+void StencilSystem::solve(std::vector<double>& phi) const {
   const std::size_t n = ap_.size();
   std::vector<long> row(n, -1);
   long unknowns = 0;
@@ -69,7 +69,7 @@ void StencilSystem::solve(CellField& phi) const {
   }
 }
 
-double StencilSystem::residual(const CellField& phi) const {
+double StencilSystem::residual(const std::vector<double>& phi) const {
   double worst = 0.0;
   for (std::size_t c = 0; c < ap_.size(); ++c) {
     if (active_[c] == 0) continue;
@@ -81,6 +81,42 @@ double StencilSystem::residual(const CellField& phi) const {
     worst = std::max(worst, std::abs(r));
   }
   return worst;
+}
+
+double StencilSystem::neighbourSum(std::size_t c, const std::vector<double>& phi) const {
+  double sum = b_[c];
+  for (int nb = 0; nb < 6; ++nb) {
+    std::size_t m = 0;
+    if (neighbourOf(*grid_, c, nb, m)) sum += anb_[static_cast<std::size_t>(nb)][c] * phi[m];
+  }
+  return sum;
+}
+
+void StencilSystem::relax(double alpha, const std::vector<double>& phi) {
+  for (std::size_t c = 0; c < ap_.size(); ++c) {
+    if (active_[c] == 0) continue;
+    ap_[c] /= alpha;
+    b_[c] += (1.0 - alpha) * ap_[c] * phi[c];
+  }
+}
+
+StencilSystem::Normalised StencilSystem::normalisedResidual(const std::vector<double>& phi) const {
+  Normalised out;
+  double sum = 0.0, scale = 0.0, sumB = 0.0, worst = -1.0;
+  for (std::size_t c = 0; c < ap_.size(); ++c) {
+    if (active_[c] == 0) continue;
+    const double r = std::abs(ap_[c] * phi[c] - neighbourSum(c, phi));
+    sum += r;
+    scale += std::abs(ap_[c] * phi[c]);
+    sumB += std::abs(b_[c]);
+    if (r > worst) {
+      worst = r;
+      out.worst = c;
+    }
+  }
+  const double denominator = scale > 0.0 ? scale : sumB;
+  out.value = denominator > 0.0 ? sum / denominator : 0.0;
+  return out;
 }
 
 }  // namespace grainbridge::fluid

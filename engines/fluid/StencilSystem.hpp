@@ -28,16 +28,35 @@ class StencilSystem {
   [[nodiscard]] double& ap(std::size_t c) { return ap_[c]; }
   [[nodiscard]] double& anb(std::size_t c, int neighbour) { return anb_[static_cast<std::size_t>(neighbour)][c]; }
   [[nodiscard]] double& b(std::size_t c) { return b_[c]; }
+  [[nodiscard]] double ap(std::size_t c) const { return ap_[c]; }
+  [[nodiscard]] double anb(std::size_t c, int neighbour) const { return anb_[static_cast<std::size_t>(neighbour)][c]; }
+  [[nodiscard]] double b(std::size_t c) const { return b_[c]; }
+  // sum_nb a_nb Phi_nb + b at cell c: what a_P Phi_P balances.
+  [[nodiscard]] double neighbourSum(std::size_t c, const std::vector<double>& phi) const;
+  // Patankar's implicit under-relaxation with factor alpha in (0, 1]: a_P / alpha, and
+  // (1 - alpha) a_P / alpha Phi* added to b, so a converged solution is unchanged.
+  void relax(double alpha, const std::vector<double>& phi);
   void setActive(std::size_t c, bool active) { active_[c] = active ? 1 : 0; }
   [[nodiscard]] bool active(std::size_t c) const { return active_[c] != 0; }
 
   // Solves for the active cells of `phi`; its other entries are the known boundary values.
   // Throws grainbridge::Error naming the cell when the system is singular (a zero a_P, a
   // cell cut off from every boundary value).
-  void solve(CellField& phi) const;
+  void solve(std::vector<double>& phi) const;
+  void solve(CellField& phi) const { solve(phi.values()); }
+  void solve(FaceField& phi) const { solve(phi.values()); }
   // The largest |a_P Phi_P - sum a_nb Phi_nb - b| over the active cells: the residual the
   // solver's convergence test reads.
-  [[nodiscard]] double residual(const CellField& phi) const;
+  [[nodiscard]] double residual(const std::vector<double>& phi) const;
+  [[nodiscard]] double residual(const CellField& phi) const { return residual(phi.values()); }
+  // sum |a_P Phi_P - sum a_nb Phi_nb - b| / sum |a_P Phi_P| over the active cells (MFiX's
+  // normalised residual), and the cell with the largest term; with every a_P Phi_P zero the
+  // denominator is sum |b|, and 0 / 0 is 0.
+  struct Normalised {
+    double value = 0.0;
+    std::size_t worst = 0;
+  };
+  [[nodiscard]] Normalised normalisedResidual(const std::vector<double>& phi) const;
 
  private:
   const StaggeredGrid* grid_;

@@ -7,3 +7,10 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/ConvectionDiffusionTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
+
+# The SIMPLE solver against analytic flows.
+grainbridge_add_test(test_fluid_physics
+  SOURCES
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/ChannelFlowTest.cpp
+  LIBS engines_fluid
+  LABELS "physics;fluid")

@@ -1,0 +1,88 @@
+#pragma once
+// Boundary conditions of the staggered grid (Section 3.3.2.2), imposed on the ghost layer as
+// MFiX does: every ghost cell belongs to one patch of its side, and `apply` writes the values
+// that the patch's rule gives before each assembly:
+//   no-slip wall   normal velocity 0 on the wall face; tangential ghost = -interior (Eq. 3.67),
+//                  so the wall value, the mean of the two, is zero;
+//   free-slip wall normal velocity 0; tangential ghost = interior (Eq. 3.66), no shear;
+//   velocity inlet each phase's fraction in the ghost and its velocity on the face (a uniform
+//                  inflow, or a jet: a patch covering part of a side, aligned with the faces);
+//                  tangential ghost = 2 v_in - interior, so the face value is the inflow's;
+//   pressure outlet the ghost holds the outlet pressure; the normal velocity on the outlet face is
+//                  solved from momentum; the fractions leaving are the interior's, and where the gas
+//                  flows back in, the patch's backflow state enters instead.
+// Sides no patch covers are no-slip walls.
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/Types.hpp"
+#include "engines/fluid/FlowState.hpp"
+
+namespace grainbridge::fluid {
+
+enum class BoundaryKind : unsigned char { Interior, NoSlipWall, FreeSlipWall, VelocityInlet, PressureOutlet };
+
+// The six sides of the domain: 2 * axis for the low side, 2 * axis + 1 for the high side.
+enum Side : int { XLow = 0, XHigh = 1, YLow = 2, YHigh = 3, ZLow = 4, ZHigh = 5 };
+
+struct PhaseInflow {
+  double fraction = 0.0;         // eps_m [-]
+  Vec3 velocity = Vec3::Zero();  // v_m [m/s]
+};
+
+struct BoundaryPatch {
+  BoundaryKind kind = BoundaryKind::NoSlipWall;
+  int side = YLow;
+  // The cells of the side the patch covers, along its first and second tangential axes (x before
+  // y before z), as half-open ranges of cell indices; {0, -1} means the whole side.
+  std::array<int, 2> from{0, 0};
+  std::array<int, 2> to{-1, -1};
+  std::vector<PhaseInflow> phases;  // inlet: the inflow of each phase; outlet: the backflow state
+  double pressure = 0.0;            // outlet [Pa]
+};
+
+class Boundaries {
+ public:
+  // Throws grainbridge::Error naming the patch (by its position in `patches`) when it lies on an
+  // inactive side (z in 2D), off the side, overlaps another, or gives a phase count other than
+  // `phaseCount` (inlets and outlets).
+  Boundaries(const StaggeredGrid& grid, std::vector<BoundaryPatch> patches, std::size_t phaseCount);
+
+  [[nodiscard]] const StaggeredGrid& grid() const { return *grid_; }
+  [[nodiscard]] const std::vector<BoundaryPatch>& patches() const { return patches_; }
+  // The kind of a padded cell: Interior for an interior cell, the patch's for a ghost of a side
+  // (corner ghosts, which no stencil reads, are walls).
+  [[nodiscard]] BoundaryKind kind(std::size_t cell) const { return kind_[cell]; }
+  [[nodiscard]] bool hasOutlet() const;
+
+  // Whether the face (axis, face) carries an unknown of the momentum equation of `axis`: an
+  // interior face, or the face of a pressure outlet.
+  [[nodiscard]] bool solvedFace(int axis, std::size_t face) const;
+  // Whether the face (axis, face) lets mass through: not a wall face.
+  [[nodiscard]] bool openFace(int axis, std::size_t face) const;
+
+  // Writes the ghost values of `state`: fractions and pressure in ghost cells, the normal velocity
+  // on wall and inlet faces, the tangential ghost velocities, and past an outlet face the
+  // zero-gradient continuation of its velocity.
+  void apply(FlowState& state) const;
+  // Copies each ghost cell's interior neighbour into it: a cell property (viscosity, density)
+  // that the stencils read on the boundary.
+  void copyToGhosts(CellField& field) const;
+
+ private:
+  const StaggeredGrid* grid_;
+  std::vector<BoundaryPatch> patches_;
+  std::vector<BoundaryKind> kind_;
+  std::vector<int> patchOf_;  // the patch index of a ghost cell, -1 elsewhere
+  struct Ghost {
+    std::size_t cell;   // the ghost
+    std::size_t inner;  // its interior neighbour
+    int axis;           // the side's normal axis
+    int direction;      // -1 on the low side, +1 on the high side
+  };
+  std::vector<Ghost> ghosts_;
+};
+
+}  // namespace grainbridge::fluid

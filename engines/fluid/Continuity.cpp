@@ -1,0 +1,95 @@
+#include "engines/fluid/Continuity.hpp"
+
+#include <algorithm>
+
+#include "engines/fluid/MassFlux.hpp"
+#include "engines/fluid/Momentum.hpp"
+
+namespace grainbridge::fluid {
+
+double massImbalance(const CellField& fraction, const CellField& oldFraction, const CellField& density,
+                     const std::array<FaceField, 3>& flux, double dt, std::size_t c) {
+  const StaggeredGrid& grid = fraction.grid();
+  double r = dt > 0.0 ? density[c] * (fraction[c] - oldFraction[c]) * grid.cellVolume() / dt : 0.0;
+  for (int a = 0; a < grid.dimensions(); ++a) {
+    const FaceField& F = flux[static_cast<std::size_t>(a)];
+    r += F[c] - F[grid.neighbour(c, a, -1)];
+  }
+  return r;
+}
+
+StencilSystem assemblePressureCorrection(const FlowState& state, const FlowState& old, const FlowProperties& properties,
+                                         const Boundaries& boundaries, const std::array<FaceField, 3>& gasFlux,
+                                         const std::array<const FaceField*, 3>& d, double dt) {
+  const StaggeredGrid& grid = state.grid();
+  const PhaseFields& gas = state.phases[0];
+  const CellField& rho = properties.phases[0].density;
+  StencilSystem system(grid);
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const std::size_t c = grid.index(i, j, k);
+        double sum = 0.0;
+        for (int a = 0; a < grid.dimensions(); ++a) {
+          const double A = grid.faceArea(a);
+          const FaceField& v = gas.velocity[static_cast<std::size_t>(a)];
+          const std::size_t low = grid.neighbour(c, a, -1), high = grid.neighbour(c, a, +1);
+          const FaceField& da = *d[static_cast<std::size_t>(a)];
+          const double aHigh = rho[v[c] >= 0.0 ? c : high] * faceFraction(gas.fraction, a, c, v[c]) * A * da[c];
+          const double aLow = rho[v[low] >= 0.0 ? low : c] * faceFraction(gas.fraction, a, low, v[low]) * A * da[low];
+          system.anb(c, 2 * a + 1) = aHigh;
+          system.anb(c, 2 * a) = aLow;
+          sum += aHigh + aLow;
+        }
+        system.ap(c) = sum;
+        system.b(c) = -massImbalance(gas.fraction, old.phases[0].fraction, rho, gasFlux, dt, c);
+      }
+    }
+  }
+  if (!boundaries.hasOutlet()) {
+    const std::size_t first = grid.index(0, 0, 0);
+    system.ap(first) = 1.0;
+    for (int nb = 0; nb < 6; ++nb) system.anb(first, nb) = 0.0;
+    system.b(first) = 0.0;
+  }
+  return system;
+}
+
+StencilSystem assembleFractionCorrection(const FlowState& state, const FlowState& old, const FlowProperties& properties,
+                                         std::size_t m, const std::array<FaceField, 3>& flux,
+                                         const std::array<const FaceField*, 3>& e, double dt) {
+  const StaggeredGrid& grid = state.grid();
+  const PhaseFields& phase = state.phases[m];
+  const CellField& rho = properties.phases[m].density;
+  const CellField& slope = properties.phases[m].solidsPressureSlope;
+  StencilSystem system(grid);
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const std::size_t c = grid.index(i, j, k);
+        double ap = dt > 0.0 ? rho[c] * grid.cellVolume() / dt : 0.0;
+        for (int a = 0; a < grid.dimensions(); ++a) {
+          const double A = grid.faceArea(a);
+          const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
+          const FaceField& ea = *e[static_cast<std::size_t>(a)];
+          const std::size_t low = grid.neighbour(c, a, -1);
+          // Diffusion-like part: the solids pushed by the solids-pressure change.
+          const double diffHigh =
+              rho[c] * faceFraction(phase.fraction, a, c, v[c]) * A * ea[c] * meanOnFace(slope, a, c);
+          const double diffLow =
+              rho[c] * faceFraction(phase.fraction, a, low, v[low]) * A * ea[low] * meanOnFace(slope, a, low);
+          const double outHigh = rho[c] * A * std::max(v[c], 0.0), inHigh = rho[c] * A * std::max(-v[c], 0.0);
+          const double inLow = rho[c] * A * std::max(v[low], 0.0), outLow = rho[c] * A * std::max(-v[low], 0.0);
+          system.anb(c, 2 * a + 1) = diffHigh + inHigh;
+          system.anb(c, 2 * a) = diffLow + inLow;
+          ap += diffHigh + diffLow + outHigh + outLow;
+        }
+        system.ap(c) = ap;
+        system.b(c) = -massImbalance(phase.fraction, old.phases[m].fraction, rho, flux, dt, c);
+      }
+    }
+  }
+  return system;
+}
+
+}  // namespace grainbridge::fluid

@@ -1,0 +1,47 @@
+#pragma once
+// The continuity equations (Eqs. 3.1-3.2, no interphase mass transfer) and the two corrections
+// of the modified SIMPLE method (Section 3.3.3) built on them.
+//
+// Mass imbalance of phase m in cell P, first-order implicit in time (Eq. 3.61):
+//   R_m = (rho_m eps_m - rho_m^0 eps_m^0) dV / dt + sum_faces F_out - F_in
+//
+// Gas pressure correction: the gas continuity with u'_g = -d_g (P'_E - P'_P) on every face
+// (d_g from InterphaseCoupling, so it carries the drag the solids exert) gives
+//   a_P P'_P = sum a_nb P'_nb - R_g,   a_nb = rho_g eps_g A d_g on the face to nb,
+// with P' = 0 in the ghosts of pressure outlets. A domain with no outlet fixes P' = 0 in its
+// first cell (its pressure level is free; the equations of the other cells fix the rest).
+//
+// Solids fraction correction (instead of a solids pressure correction, which needs dP_s/deps_s
+// away from zero as eps_s -> 0): with eps_s = eps_s* + eps_s' (Eq. 3.69) and the velocity
+// correction u'_s = -e_s (dP_s/deps_s) (eps_s'_E - eps_s'_P), the linearised solids continuity
+//   rho_s dV/dt eps'_P + sum_faces rho_s A (u*_s eps'_upwind - eps*_s,f u'_s) = -R_s
+// is an upwind convection-diffusion equation for eps_s'; the plastic pressure's steep slope
+// enters through dP_s/deps_s here, implicitly, and never as an explicit force alone.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "engines/fluid/Boundaries.hpp"
+#include "engines/fluid/FlowState.hpp"
+#include "engines/fluid/PhaseProperties.hpp"
+#include "engines/fluid/StencilSystem.hpp"
+
+namespace grainbridge::fluid {
+
+// R_m at cell c [kg/s], from the phase's face fluxes (MassFlux.hpp). dt = 0: steady, no transient.
+[[nodiscard]] double massImbalance(const CellField& fraction, const CellField& oldFraction, const CellField& density,
+                                   const std::array<FaceField, 3>& flux, double dt, std::size_t c);
+
+// The gas pressure correction system; `d` the gas's pressure coefficients per axis.
+[[nodiscard]] StencilSystem assemblePressureCorrection(const FlowState& state, const FlowState& old,
+                                                       const FlowProperties& properties, const Boundaries& boundaries,
+                                                       const std::array<FaceField, 3>& gasFlux,
+                                                       const std::array<const FaceField*, 3>& d, double dt);
+
+// The fraction correction system of solids phase m; `e` its solids-pressure coefficients per axis.
+[[nodiscard]] StencilSystem assembleFractionCorrection(const FlowState& state, const FlowState& old,
+                                                       const FlowProperties& properties, std::size_t m,
+                                                       const std::array<FaceField, 3>& flux,
+                                                       const std::array<const FaceField*, 3>& e, double dt);
+
+}  // namespace grainbridge::fluid

@@ -1,0 +1,39 @@
+#include "engines/fluid/MassFlux.hpp"
+
+#include "engines/fluid/Superbee.hpp"
+
+namespace grainbridge::fluid {
+
+double faceFraction(const CellField& fraction, int axis, std::size_t face, double u) {
+  const StaggeredGrid& grid = fraction.grid();
+  const int position = grid.coordinates(face)[static_cast<std::size_t>(axis)];
+  const int n = grid.cells(axis);
+  if (position >= n) return fraction[face];  // past the last ghost: nothing downstream
+  const std::size_t e = grid.neighbour(face, axis, +1);
+  // Superbee needs the far-upwind cell; at the ghost layer's edge the face takes the upwind value.
+  if (u >= 0.0) {
+    if (position - 1 < -1) return fraction[face];
+    return superbeeFaceValue(u, fraction[grid.neighbour(face, axis, -1)], fraction[face], fraction[e], fraction[e]);
+  }
+  if (position + 2 > n) return fraction[e];
+  return superbeeFaceValue(u, fraction[face], fraction[face], fraction[e], fraction[grid.neighbour(e, axis, +1)]);
+}
+
+std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& density, const Boundaries& boundaries) {
+  const StaggeredGrid& grid = boundaries.grid();
+  std::array<FaceField, 3> flux{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)};
+  for (int a = 0; a < grid.dimensions(); ++a) {
+    const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
+    FaceField& F = flux[static_cast<std::size_t>(a)];
+    const double area = grid.faceArea(a);
+    for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+      if (!boundaries.openFace(a, f)) continue;
+      const double u = v[f];
+      const std::size_t upwind = u >= 0.0 ? f : grid.neighbour(f, a, +1);
+      F[f] = density[upwind] * faceFraction(phase.fraction, a, f, u) * u * area;
+    }
+  }
+  return flux;
+}
+
+}  // namespace grainbridge::fluid

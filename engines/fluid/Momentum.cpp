@@ -1,0 +1,111 @@
+#include "engines/fluid/Momentum.hpp"
+
+#include <algorithm>
+
+#include "engines/fluid/Superbee.hpp"
+
+namespace grainbridge::fluid {
+
+namespace {
+
+// Superbee minus upwind value of the transported component `u` on the control-volume face
+// between the faces `f` and `f + e_b` (f at `position` along b), for the flux F through it. A
+// value beyond the padded range (a far-upwind face past the ghosts) takes the upwind value.
+double correction(const StaggeredGrid& grid, const FaceField& u, std::size_t f, int b, int position, double F,
+                  int lastPosition) {
+  const std::size_t e = grid.neighbour(f, b, +1);
+  if (F >= 0.0) {
+    if (position - 1 < -1) return 0.0;
+    return superbeeFaceValue(F, u[grid.neighbour(f, b, -1)], u[f], u[e], u[e]) - u[f];
+  }
+  if (position + 2 > lastPosition) return 0.0;
+  return superbeeFaceValue(F, u[f], u[f], u[e], u[grid.neighbour(e, b, +1)]) - u[e];
+}
+
+// div(v) of a phase at cell c from its face velocities.
+double divergence(const StaggeredGrid& grid, const PhaseFields& phase, std::size_t c) {
+  double div = 0.0;
+  for (int b = 0; b < grid.dimensions(); ++b) {
+    const FaceField& v = phase.velocity[static_cast<std::size_t>(b)];
+    div += (v[c] - v[grid.neighbour(c, b, -1)]) / grid.spacing(b);
+  }
+  return div;
+}
+
+}  // namespace
+
+StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, const std::array<FaceField, 3>& flux) {
+  const FlowState& state = *in.state;
+  const StaggeredGrid& grid = state.grid();
+  const PhaseFields& phase = state.phases[m];
+  const PhaseFields& old = in.old->phases[m];
+  const PhaseProperties& props = in.properties->phases[m];
+  const FaceField& u = phase.velocity[static_cast<std::size_t>(a)];
+  const CellField& mu = props.shearViscosity;
+  const double V = grid.cellVolume();
+  const int na = grid.cells(a);
+
+  StencilSystem system(grid);
+  for (std::size_t f = 0; f < grid.paddedCount(); ++f) system.setActive(f, in.boundaries->solvedFace(a, f));
+
+  for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+    if (!system.active(f)) continue;
+    const auto at = grid.coordinates(f);
+    const std::size_t P = f, E = grid.neighbour(f, a, +1);
+    const int ia = at[static_cast<std::size_t>(a)];
+    const double eps = meanOnFace(phase.fraction, a, f);
+    const double rho = meanOnFace(props.density, a, f);
+    const bool local = m > 0 && eps < in.diluteFraction;
+
+    double sumNb = 0.0, b = 0.0;
+    if (!local) {
+      for (int d = 0; d < grid.dimensions(); ++d) {
+        const double area = grid.faceArea(d), h = grid.spacing(d);
+        const FaceField& Fd = flux[static_cast<std::size_t>(d)];
+        double Fhi = 0.0, Flo = 0.0, muHi = 0.0, muLo = 0.0, transposed = 0.0;
+        if (d == a) {
+          // Control-volume faces at the centres of cells E and P.
+          Fhi = ia == na - 1 ? Fd[f] : 0.5 * (Fd[f] + Fd[E]);
+          Flo = ia == -1 ? Fd[f] : 0.5 * (Fd[grid.neighbour(f, a, -1)] + Fd[f]);
+          muHi = mu[E];
+          muLo = mu[P];
+          const double uW = ia == -1 ? u[f] : u[grid.neighbour(f, a, -1)];
+          transposed = (muHi * (u[E] - u[f]) - muLo * (u[f] - uW)) / h * area;
+        } else {
+          // Control-volume faces on the edges between P, E and their neighbours along d.
+          const std::size_t Pl = grid.neighbour(P, d, -1), El = grid.neighbour(E, d, -1);
+          const std::size_t Ph = grid.neighbour(P, d, +1), Eh = grid.neighbour(E, d, +1);
+          Fhi = 0.5 * (Fd[P] + Fd[E]);
+          Flo = 0.5 * (Fd[Pl] + Fd[El]);
+          muHi = 0.25 * (mu[P] + mu[E] + mu[Ph] + mu[Eh]);
+          muLo = 0.25 * (mu[P] + mu[E] + mu[Pl] + mu[El]);
+          const FaceField& vd = phase.velocity[static_cast<std::size_t>(d)];
+          const double ha = grid.spacing(a);
+          transposed = (muHi * (vd[E] - vd[P]) - muLo * (vd[El] - vd[Pl])) / ha * area;
+        }
+        const double aHi = muHi * area / h + std::max(-Fhi, 0.0);
+        const double aLo = muLo * area / h + std::max(Flo, 0.0);
+        system.anb(f, 2 * d + 1) = aHi;
+        system.anb(f, 2 * d) = aLo;
+        sumNb += aHi + aLo;
+        const int position = at[static_cast<std::size_t>(d)];
+        const int last = grid.cells(d);
+        b -= Fhi * correction(grid, u, f, d, position, Fhi, last) -
+             Flo * correction(grid, u, grid.neighbour(f, d, -1), d, position - 1, Flo, last);
+        b += transposed;
+      }
+      const CellField& lambda = props.bulkViscosity;
+      b += (lambda[E] * divergence(grid, phase, E) - lambda[P] * divergence(grid, phase, P)) * grid.faceArea(a);
+    }
+    const double a0 = in.dt > 0.0 ? meanOnFace(props.density, a, f) * meanOnFace(old.fraction, a, f) * V / in.dt : 0.0;
+    system.ap(f) = sumNb + a0;
+    b += a0 * old.velocity[static_cast<std::size_t>(a)][f];
+    b -= eps * (state.pressure[E] - state.pressure[P]) * grid.faceArea(a);
+    if (m > 0) b -= (props.solidsPressure[E] - props.solidsPressure[P]) * grid.faceArea(a);
+    b += eps * rho * in.gravity[a] * V;
+    system.b(f) = b;
+  }
+  return system;
+}
+
+}  // namespace grainbridge::fluid

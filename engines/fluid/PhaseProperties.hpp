@@ -1,0 +1,32 @@
+#pragma once
+// What a model (engines/mfm's closures, TF-DEM's particle coupling) tells the multiphase solver
+// about each phase at the current iterate, cell by cell, and the interphase momentum exchange.
+// The stress of phase m is S_m = -P_m I + tau_m with tau_m = 2 mu_m D_m + lambda_m tr(D_m) I
+// (Eqs. 3.19-3.20 for the gas, 3.22 and 3.27 for solids): `shearViscosity` and `bulkViscosity`
+// are mu_m and lambda_m as they multiply D_m there, so the gas's carry its eps_g (eps_g mu_g,
+// Eq. 3.20) and the solids' are the kinetic-theory and plastic viscosities as they stand.
+#include <vector>
+
+#include "engines/fluid/Fields.hpp"
+
+namespace grainbridge::fluid {
+
+struct PhaseProperties {
+  explicit PhaseProperties(const StaggeredGrid& grid)
+      : density(grid), shearViscosity(grid), bulkViscosity(grid), solidsPressure(grid), solidsPressureSlope(grid) {}
+  CellField density;              // rho_m [kg/m^3]
+  CellField shearViscosity;       // mu_m of tau_m [Pa s]
+  CellField bulkViscosity;        // lambda_m of tau_m [Pa s]
+  CellField solidsPressure;       // P_sm, kinetic plus plastic [Pa]; zero for the gas
+  CellField solidsPressureSlope;  // dP_sm / d eps_sm [Pa]: what lets the eps_s correction see packing
+};
+
+struct FlowProperties {
+  std::vector<PhaseProperties> phases;  // [0] the gas
+  // Gas-solids drag coefficient F_gm (Eq. 3.10) per solids phase m = 1..M, in cells [kg/(m^3 s)];
+  // dragCoefficient[0] is unused. The solver interpolates it to the faces once, so the gas and
+  // the solids momentum equations see the same face value.
+  std::vector<CellField> dragCoefficient;
+};
+
+}  // namespace grainbridge::fluid

@@ -1,0 +1,246 @@
+#include "engines/fluid/SimpleStep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "engines/fluid/Continuity.hpp"
+#include "engines/fluid/InterphaseCoupling.hpp"
+#include "engines/fluid/MassFlux.hpp"
+#include "engines/fluid/Momentum.hpp"
+
+namespace grainbridge::fluid {
+
+namespace {
+
+std::string phaseName(std::size_t m) { return m == 0 ? "gas" : "solids " + std::to_string(m); }
+
+FlowProperties propertiesFor(const StaggeredGrid& grid, std::size_t phases) {
+  FlowProperties p;
+  for (std::size_t m = 0; m < phases; ++m) {
+    p.phases.emplace_back(grid);
+    p.dragCoefficient.emplace_back(grid);
+  }
+  return p;
+}
+
+void copyPropertiesToGhosts(FlowProperties& p, const Boundaries& boundaries) {
+  for (PhaseProperties& phase : p.phases) {
+    for (CellField* f : {&phase.density, &phase.shearViscosity, &phase.bulkViscosity, &phase.solidsPressure,
+                         &phase.solidsPressureSlope}) {
+      boundaries.copyToGhosts(*f);
+    }
+  }
+  for (CellField& f : p.dragCoefficient) boundaries.copyToGhosts(f);
+}
+
+// Keeps the largest residual of an iteration with the equation and cell it belongs to.
+struct Worst {
+  double value = -1.0;
+  std::string equation;
+  std::size_t cell = 0;
+  void offer(double v, std::string eq, std::size_t c) {
+    if (v > value) {
+      value = v;
+      equation = std::move(eq);
+      cell = c;
+    }
+  }
+};
+
+// The continuity residual of a phase: transient, the largest volume-fraction error a cell makes
+// over the step, |R| dt / (rho dV); steady, sum |R| over the total throughput.
+void offerContinuity(Worst& worst, const std::string& name, const CellField& fraction, const CellField& oldFraction,
+                     const CellField& density, const std::array<FaceField, 3>& flux, double dt) {
+  const StaggeredGrid& grid = fraction.grid();
+  double sum = 0.0, throughput = 0.0, largest = -1.0;
+  std::size_t at = 0;
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const std::size_t c = grid.index(i, j, k);
+        const double r = std::abs(massImbalance(fraction, oldFraction, density, flux, dt, c));
+        const double measure = dt > 0.0 ? r * dt / (density[c] * grid.cellVolume()) : r;
+        if (measure > largest) {
+          largest = measure;
+          at = c;
+        }
+        sum += r;
+        for (int a = 0; a < grid.dimensions(); ++a) throughput += std::abs(flux[static_cast<std::size_t>(a)][c]);
+      }
+    }
+  }
+  const double value = dt > 0.0 ? largest : (throughput > 0.0 ? sum / throughput : 0.0);
+  worst.offer(value, name + " continuity", at);
+}
+
+// The first non-finite value or fraction out of [0, 1] (beyond round-off), described; empty if none.
+std::string firstBadValue(const FlowState& state, std::array<int, 3>& cell) {
+  const StaggeredGrid& grid = state.grid();
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const std::size_t c = grid.index(i, j, k);
+        cell = {i, j, k};
+        if (!std::isfinite(state.pressure[c])) return "the gas pressure is not finite";
+        for (std::size_t m = 0; m < state.phases.size(); ++m) {
+          const double eps = state.phases[m].fraction[c];
+          if (!std::isfinite(eps)) return "the " + phaseName(m) + " fraction is not finite";
+          if (eps < -1e-6 || eps > 1.0 + 1e-6)
+            return "the " + phaseName(m) + " fraction is " + std::to_string(eps) + ", outside [0, 1]";
+          for (int a = 0; a < grid.dimensions(); ++a) {
+            if (!std::isfinite(state.phases[m].velocity[static_cast<std::size_t>(a)][c]))
+              return "a " + phaseName(m) + " velocity is not finite";
+          }
+        }
+      }
+    }
+  }
+  return {};
+}
+
+StepResult iterate(FlowState& state, const FlowState& old, double dt, const FlowModel& model,
+                   const Boundaries& boundaries, const SimpleSettings& settings) {
+  const StaggeredGrid& grid = state.grid();
+  const std::size_t M = state.phases.size();
+  const int dims = grid.dimensions();
+  FlowProperties props = propertiesFor(grid, M);
+  MomentumInputs in;
+  in.state = &state;
+  in.old = &old;
+  in.properties = &props;
+  in.boundaries = &boundaries;
+  in.gravity = settings.gravity;
+  in.dt = dt;
+  in.diluteFraction = settings.diluteFraction;
+
+  StepResult result;
+  for (int iteration = 1; iteration <= settings.maxIterations; ++iteration) {
+    result.iterations = iteration;
+    Worst worst;
+    boundaries.apply(state);
+    model.evaluate(state, props);
+    copyPropertiesToGhosts(props, boundaries);
+
+    // 2. Momentum of every phase, component by component, with the drag eliminated.
+    std::vector<std::array<FaceField, 3>> flux;
+    for (std::size_t m = 0; m < M; ++m)
+      flux.push_back(massFluxes(state.phases[m], props.phases[m].density, boundaries));
+    std::vector<CorrectionCoefficients> corrections;
+    for (int a = 0; a < dims; ++a) {
+      std::vector<StencilSystem> systems;
+      for (std::size_t m = 0; m < M; ++m) systems.push_back(assembleMomentum(in, m, a, flux[m]));
+      corrections.push_back(coupleAndRelax(systems, state, props, a, settings.momentumRelaxation));
+      for (std::size_t m = 0; m < M; ++m) {
+        FaceField& u = state.phases[m].velocity[static_cast<std::size_t>(a)];
+        const auto r = systems[m].normalisedResidual(u.values());
+        worst.offer(r.value, phaseName(m) + " " + std::string(1, "xyz"[a]) + " momentum", r.worst);
+        systems[m].solve(u);
+      }
+    }
+    for (int a = dims; a < 3; ++a) corrections.emplace_back();
+    boundaries.apply(state);
+
+    // 3. Gas pressure correction.
+    const auto gasFlux = massFluxes(state.phases[0], props.phases[0].density, boundaries);
+    offerContinuity(worst, "gas", state.phases[0].fraction, old.phases[0].fraction, props.phases[0].density, gasFlux,
+                    dt);
+    std::array<const FaceField*, 3> d{nullptr, nullptr, nullptr};
+    for (int a = 0; a < dims; ++a)
+      d[static_cast<std::size_t>(a)] = &corrections[static_cast<std::size_t>(a)].pressure[0];
+    const StencilSystem pressureSystem = assemblePressureCorrection(state, old, props, boundaries, gasFlux, d, dt);
+    CellField pressureCorrection(grid, 0.0);
+    pressureSystem.solve(pressureCorrection);
+    for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
+      if (grid.interior(c)) state.pressure[c] += settings.pressureRelaxation * pressureCorrection[c];
+    }
+    for (int a = 0; a < dims; ++a) {
+      for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+        if (!boundaries.solvedFace(a, f)) continue;
+        const double dp = pressureCorrection[grid.neighbour(f, a, +1)] - pressureCorrection[f];
+        for (std::size_t m = 0; m < M; ++m) {
+          state.phases[m].velocity[static_cast<std::size_t>(a)][f] -=
+              corrections[static_cast<std::size_t>(a)].pressure[m][f] * dp;
+        }
+      }
+    }
+
+    // 4. Solids fraction corrections (Eqs. 3.68-3.69).
+    for (std::size_t m = 1; m < M; ++m) {
+      boundaries.apply(state);
+      PhaseFields& phase = state.phases[m];
+      const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries);
+      offerContinuity(worst, phaseName(m), phase.fraction, old.phases[m].fraction, props.phases[m].density, solidsFlux,
+                      dt);
+      std::array<const FaceField*, 3> e{nullptr, nullptr, nullptr};
+      for (int a = 0; a < dims; ++a)
+        e[static_cast<std::size_t>(a)] = &corrections[static_cast<std::size_t>(a)].solidsPressure[m];
+      const StencilSystem fractionSystem = assembleFractionCorrection(state, old, props, m, solidsFlux, e, dt);
+      CellField fractionCorrection(grid, 0.0);
+      fractionSystem.solve(fractionCorrection);
+      for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
+        if (!grid.interior(c)) continue;
+        double& correction = fractionCorrection[c];
+        if (phase.fraction[c] + correction > settings.packedFraction && correction > 0.0)
+          correction *= settings.fractionRelaxation;  // Eq. 3.68
+        phase.fraction[c] += correction;              // Eq. 3.69
+      }
+      const CellField& slope = props.phases[m].solidsPressureSlope;
+      for (int a = 0; a < dims; ++a) {
+        FaceField& u = phase.velocity[static_cast<std::size_t>(a)];
+        const FaceField& ea = *e[static_cast<std::size_t>(a)];
+        for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+          if (!boundaries.solvedFace(a, f)) continue;
+          u[f] -=
+              ea[f] * meanOnFace(slope, a, f) * (fractionCorrection[grid.neighbour(f, a, +1)] - fractionCorrection[f]);
+        }
+      }
+    }
+    if (M > 1) {
+      for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
+        if (!grid.interior(c)) continue;
+        double solids = 0.0;
+        for (std::size_t m = 1; m < M; ++m) solids += state.phases[m].fraction[c];
+        state.phases[0].fraction[c] = 1.0 - solids;
+      }
+    }
+
+    result.residual = worst.value;
+    result.equation = worst.equation;
+    result.cell = grid.coordinates(worst.cell);
+    std::array<int, 3> badCell{};
+    result.failure = firstBadValue(state, badCell);
+    if (!result.failure.empty()) {
+      result.cell = badCell;
+      return result;
+    }
+    if (worst.value < settings.tolerance) {
+      result.converged = true;
+      boundaries.apply(state);
+      return result;
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+StepResult advance(FlowState& state, double dt, const FlowModel& model, const Boundaries& boundaries,
+                   const SimpleSettings& settings) {
+  const FlowState old = state;
+  StepResult result = iterate(state, old, dt, model, boundaries, settings);
+  if (result.converged) {
+    state.time = old.time + dt;
+  } else {
+    state = old;
+  }
+  return result;
+}
+
+StepResult solveSteady(FlowState& state, const FlowModel& model, const Boundaries& boundaries,
+                       const SimpleSettings& settings) {
+  const FlowState old = state;
+  return iterate(state, old, 0.0, model, boundaries, settings);
+}
+
+}  // namespace grainbridge::fluid

@@ -1,0 +1,63 @@
+#pragma once
+// One time step of the multiphase flow by the modified SIMPLE method of Section 3.3.3 (MFiX's
+// algorithm, Syamlal 1998), iterated until the normalised residuals fall below the tolerance:
+//   1. the model evaluates each phase's properties and the drag at the current iterate;
+//   2. every phase's momentum, each component, with the drag by partial elimination, solved;
+//   3. the gas pressure correction from the gas continuity, P += omega_P P', every phase's
+//      velocity corrected (the correction coefficients carry the drag);
+//   4. per solids phase, the fraction correction from its continuity, under-relaxed as Eq. 3.68
+//      says where the bed is packed, eps_s += eps_s' (Eq. 3.69), its velocity corrected;
+//      eps_g = 1 - sum eps_s. No fraction is ever clipped: clipping would break conservation.
+// The step either converges (the state is the new time level) or reports which equation, cell
+// and residual kept it from converging, and leaves the state at the old level, so the caller can
+// retry with a smaller step.
+#include <cstddef>
+#include <string>
+
+#include "core/Types.hpp"
+#include "engines/fluid/Boundaries.hpp"
+#include "engines/fluid/FlowState.hpp"
+#include "engines/fluid/PhaseProperties.hpp"
+
+namespace grainbridge::fluid {
+
+// The model side: fills `properties` (sized for the grid and the phase count) at `state`.
+class FlowModel {
+ public:
+  virtual ~FlowModel() = default;
+  virtual void evaluate(const FlowState& state, FlowProperties& properties) const = 0;
+};
+
+struct SimpleSettings {
+  Vec3 gravity = Vec3::Zero();
+  double pressureRelaxation = 0.8;  // omega_P (MFiX UR_FAC(1))
+  double momentumRelaxation = 0.5;  // alpha_u (MFiX UR_FAC(3))
+  double fractionRelaxation = 0.5;  // omega_eps of Eq. 3.68
+  double packedFraction = 0.0;      // eps_p of Eq. 3.68 (the solids fraction of the packed bed); 0: no solids
+  double diluteFraction = 1e-4;     // solids faces below this keep only their local momentum terms
+  double tolerance = 1e-3;          // normalised residuals (MFiX TOL_RESID)
+  int maxIterations = 50;
+};
+
+struct StepResult {
+  bool converged = false;
+  int iterations = 0;
+  // The largest normalised residual of the last iteration, its equation ("gas continuity",
+  // "solids 1 continuity", "gas x momentum", ...) and the cell (i, j, k) where it is largest.
+  double residual = 0.0;
+  std::string equation;
+  std::array<int, 3> cell{0, 0, 0};
+  // A non-finite value or a fraction outside [0, 1] stops the iterations at once; its reason.
+  std::string failure;
+};
+
+// Advances `state` by dt (> 0). `state.time` moves on only when the step converged.
+StepResult advance(FlowState& state, double dt, const FlowModel& model, const Boundaries& boundaries,
+                   const SimpleSettings& settings);
+
+// A steady solve (no transient terms), `iterations` outer iterations at most, stopping at the
+// tolerance: for flows with a steady state (the laminar channel).
+StepResult solveSteady(FlowState& state, const FlowModel& model, const Boundaries& boundaries,
+                       const SimpleSettings& settings);
+
+}  // namespace grainbridge::fluid
