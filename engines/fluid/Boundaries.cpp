@@ -137,9 +137,13 @@ void Boundaries::apply(FlowState& state) const {
           phase.fraction[g] = patch->phases[m].fraction;
           normal[face] = patch->phases[m].velocity[a];
           break;
-        case BoundaryKind::PressureOutlet:
-          phase.fraction[g] = gasLeaves ? phase.fraction[in] : patch->phases[m].fraction;
+        case BoundaryKind::PressureOutlet: {
+          // Each phase by its own direction: what leaves carries the interior's fraction, what
+          // enters the backflow state's (solids falling back into the domain bring none).
+          const bool leaves = m == 0 ? gasLeaves : normal[face] * ghost.direction >= 0.0;
+          phase.fraction[g] = leaves ? phase.fraction[in] : patch->phases[m].fraction;
           break;
+        }
         default:
           phase.fraction[g] = phase.fraction[in];
           normal[face] = 0.0;

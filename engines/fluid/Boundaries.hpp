@@ -9,8 +9,8 @@
 //                  inflow, or a jet: a patch covering part of a side, aligned with the faces);
 //                  tangential ghost = 2 v_in - interior, so the face value is the inflow's;
 //   pressure outlet the ghost holds the outlet pressure; the normal velocity on the outlet face is
-//                  solved from momentum; the fractions leaving are the interior's, and where the gas
-//                  flows back in, the patch's backflow state enters instead.
+//                  solved from momentum; a phase leaving takes the interior's fraction, a phase
+//                  flowing back in brings the patch's backflow state's.
 // Sides no patch covers are no-slip walls.
 #include <array>
 #include <cstddef>

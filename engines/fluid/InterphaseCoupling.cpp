@@ -7,7 +7,8 @@
 namespace grainbridge::fluid {
 
 CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
-                                      const FlowProperties& properties, int axis, double relaxation) {
+                                      const FlowProperties& properties, int axis, double relaxation,
+                                      double diluteFraction) {
   const StaggeredGrid& grid = state.grid();
   const std::size_t M = systems.size();
   const double V = grid.cellVolume(), A = grid.faceArea(axis);
@@ -17,8 +18,7 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
     out.solidsPressure.emplace_back(grid, axis);
   }
   std::vector<double> H(M), a(M), dragV(M, 0.0), u(M);
-  Eigen::MatrixXd K(M, M);
-  Eigen::VectorXd fractions(M);
+  std::vector<char> dilute(M, 0);
   for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
     if (!systems[0].active(f)) continue;
     for (std::size_t m = 0; m < M; ++m) {
@@ -27,57 +27,65 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
       a[m] = systems[m].ap(f);
       u[m] = v[f];
       dragV[m] = m == 0 ? 0.0 : meanOnFace(properties.dragCoefficient[m], axis, f) * V;
-      fractions[static_cast<Eigen::Index>(m)] = meanOnFace(state.phases[m].fraction, axis, f);
+      dilute[m] = diluteFace(state, m, axis, f, diluteFraction) ? 1 : 0;
     }
     double gasDiagonal = a[0];
     for (std::size_t m = 1; m < M; ++m) gasDiagonal += dragV[m];
-    // The gas: each solids velocity eliminated through its own equation.
+    // The gas: each solids velocity eliminated through its own equation; a dilute phase's drag
+    // at its current velocity.
     double apGas = gasDiagonal, bGas = systems[0].b(f);
     for (std::size_t m = 1; m < M; ++m) {
+      if (dilute[m] != 0) {
+        bGas += dragV[m] * u[m];
+        continue;
+      }
       const double solidsDiagonal = a[m] + dragV[m];
-      if (solidsDiagonal <= 0.0) continue;
       apGas -= dragV[m] * dragV[m] / solidsDiagonal;
       bGas += dragV[m] * H[m] / solidsDiagonal;
     }
     // Each solids phase: the gas velocity eliminated through the gas equation, the other solids
     // phases at their current iterate.
     for (std::size_t m = 1; m < M; ++m) {
+      if (dilute[m] != 0) continue;
       double gasSide = H[0];
       for (std::size_t l = 1; l < M; ++l) {
         if (l != m) gasSide += dragV[l] * u[l];
       }
-      const double ap = a[m] + dragV[m] - dragV[m] * dragV[m] / gasDiagonal;
-      if (ap <= 1e-30 * (std::abs(a[0]) + 1.0)) {  // no solids and no drag: follow the gas
-        systems[m].ap(f) = 1.0;
-        for (int nb = 0; nb < 6; ++nb) systems[m].anb(f, nb) = 0.0;
-        systems[m].b(f) = u[0];
-        continue;
-      }
-      systems[m].ap(f) = ap;
+      systems[m].ap(f) = a[m] + dragV[m] - dragV[m] * dragV[m] / gasDiagonal;
       systems[m].b(f) += dragV[m] * gasSide / gasDiagonal;
     }
     systems[0].ap(f) = apGas;
     systems[0].b(f) = bGas;
 
-    // The point-coupled matrix of the corrections, its diagonal relaxed as the systems are.
-    K.setZero();
+    // The point-coupled matrix of the corrections over the phases with an equation here, its
+    // diagonal relaxed as the systems are.
+    std::vector<std::size_t> coupled;
     for (std::size_t m = 0; m < M; ++m) {
-      const auto i = static_cast<Eigen::Index>(m);
-      K(i, i) = std::max(a[m], 0.0) / relaxation;
+      if (dilute[m] == 0) coupled.push_back(m);
+    }
+    const auto n = static_cast<Eigen::Index>(coupled.size());
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd fractions(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::size_t m = coupled[static_cast<std::size_t>(i)];
+      fractions[i] = meanOnFace(state.phases[m].fraction, axis, f) * A;
+      K(i, i) += a[m] / relaxation;
       if (m > 0) {
         K(i, i) += dragV[m];
         K(0, 0) += dragV[m];
         K(0, i) = K(i, 0) = -dragV[m];
       }
-      if (K(i, i) <= 0.0) K(i, i) = 1e-30;
     }
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(K);
-    const Eigen::VectorXd d = lu.solve(fractions * A);
-    for (std::size_t m = 0; m < M; ++m) out.pressure[m][f] = d[static_cast<Eigen::Index>(m)];
-    for (std::size_t m = 1; m < M; ++m) {
-      Eigen::VectorXd unit = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(M));
-      unit[static_cast<Eigen::Index>(m)] = A;
-      out.solidsPressure[m][f] = lu.solve(unit)[static_cast<Eigen::Index>(m)];
+    const Eigen::VectorXd d = lu.solve(fractions);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::size_t m = coupled[static_cast<std::size_t>(i)];
+      out.pressure[m][f] = d[i];
+      if (m > 0) {
+        Eigen::VectorXd unit = Eigen::VectorXd::Zero(n);
+        unit[i] = A;
+        out.solidsPressure[m][f] = lu.solve(unit)[i];
+      }
     }
   }
   for (std::size_t m = 0; m < M; ++m) {

@@ -32,8 +32,10 @@ struct CorrectionCoefficients {
 
 // Adds the drag to `systems` (one per phase, all of component `axis`, assembled without it),
 // relaxes each by `relaxation` (StencilSystem::relax), and returns the correction coefficients.
-// A solids face with no coefficient left (no solids, no drag) follows the gas: u_m = u_g*.
+// A dilute solids face (Momentum.hpp) keeps its own equation: the gas sees its drag explicitly,
+// and its corrections are zero.
 CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
-                                      const FlowProperties& properties, int axis, double relaxation);
+                                      const FlowProperties& properties, int axis, double relaxation,
+                                      double diluteFraction);
 
 }  // namespace grainbridge::fluid

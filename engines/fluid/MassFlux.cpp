@@ -1,10 +1,14 @@
 #include "engines/fluid/MassFlux.hpp"
 
+#include <algorithm>
+
 #include "engines/fluid/Superbee.hpp"
 
 namespace grainbridge::fluid {
 
-double faceFraction(const CellField& fraction, int axis, std::size_t face, double u) {
+namespace {
+
+double superbeeFraction(const CellField& fraction, int axis, std::size_t face, double u) {
   const StaggeredGrid& grid = fraction.grid();
   const int position = grid.coordinates(face)[static_cast<std::size_t>(axis)];
   const int n = grid.cells(axis);
@@ -17,6 +21,15 @@ double faceFraction(const CellField& fraction, int axis, std::size_t face, doubl
   }
   if (position + 2 > n) return fraction[e];
   return superbeeFaceValue(u, fraction[face], fraction[face], fraction[e], fraction[grid.neighbour(e, axis, +1)]);
+}
+
+}  // namespace
+
+double faceFraction(const CellField& fraction, int axis, std::size_t face, double u) {
+  // Never a negative face fraction: a cell that round-off or the deferred correction left a
+  // hair below zero must not export negative mass (which would draw it further down). The
+  // limit acts on the face value both cells share, so mass stays conserved.
+  return std::max(superbeeFraction(fraction, axis, face, u), 0.0);
 }
 
 std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& density, const Boundaries& boundaries) {

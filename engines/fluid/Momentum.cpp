@@ -32,7 +32,31 @@ double divergence(const StaggeredGrid& grid, const PhaseFields& phase, std::size
   return div;
 }
 
+// MFiX's rule for a dilute face: the mean of the neighbouring faces of the same component whose
+// cells (the neighbour face's far cell) hold solids above the threshold; none: the current value.
+void diluteEquation(StencilSystem& system, const PhaseFields& phase, const Boundaries& boundaries, int a, std::size_t f,
+                    double threshold) {
+  const StaggeredGrid& grid = phase.fraction.grid();
+  double count = 0.0;
+  for (int d = 0; d < grid.dimensions(); ++d) {
+    for (int direction : {-1, +1}) {
+      const std::size_t n = grid.neighbour(f, d, direction);
+      const bool solids = meanOnFace(phase.fraction, a, n) > threshold;
+      if (solids && boundaries.solvedFace(a, n)) {
+        system.anb(f, 2 * d + (direction > 0 ? 1 : 0)) = 1.0;
+        count += 1.0;
+      }
+    }
+  }
+  system.ap(f) = count > 0.0 ? count : 1.0;
+  system.b(f) = count > 0.0 ? 0.0 : phase.velocity[static_cast<std::size_t>(a)][f];
+}
+
 }  // namespace
+
+bool diluteFace(const FlowState& state, std::size_t m, int axis, std::size_t face, double threshold) {
+  return m > 0 && meanOnFace(state.phases[m].fraction, axis, face) < threshold;
+}
 
 StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, const std::array<FaceField, 3>& flux) {
   const FlowState& state = *in.state;
@@ -55,10 +79,12 @@ StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, c
     const int ia = at[static_cast<std::size_t>(a)];
     const double eps = meanOnFace(phase.fraction, a, f);
     const double rho = meanOnFace(props.density, a, f);
-    const bool local = m > 0 && eps < in.diluteFraction;
-
+    if (diluteFace(state, m, a, f, in.diluteFraction)) {
+      diluteEquation(system, phase, *in.boundaries, a, f, in.diluteFraction);
+      continue;
+    }
     double sumNb = 0.0, b = 0.0;
-    if (!local) {
+    {
       for (int d = 0; d < grid.dimensions(); ++d) {
         const double area = grid.faceArea(d), h = grid.spacing(d);
         const FaceField& Fd = flux[static_cast<std::size_t>(d)];

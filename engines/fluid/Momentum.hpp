@@ -10,8 +10,10 @@
 //   pressure    -eps_m grad P_g and, for solids, -grad P_s, explicit at the current iterate;
 //   gravity     eps_m rho_m g.
 // The interphase drag is not here: InterphaseCoupling adds it with partial elimination, after
-// every phase is assembled. A solids face below the dilute threshold keeps only its local terms
-// (transient, pressure, gravity, and then drag): no convection or stress where no solids are.
+// every phase is assembled. A solids face below the dilute threshold (MFiX DIL_EP_S) has no
+// momentum equation worth the name (every coefficient vanishes with eps_s, and the ratios of
+// vanishing terms blow up): as MFiX does, its velocity is the mean of the neighbouring faces'
+// whose cells hold solids, or, with none, stays what it is; drag and corrections skip it.
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -38,6 +40,9 @@ struct MomentumInputs {
 // `flux` are that phase's face mass fluxes (MassFlux.hpp) at the current iterate.
 [[nodiscard]] StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t phase, int axis,
                                              const std::array<FaceField, 3>& flux);
+
+// Whether phase m's momentum on face (axis, face) is a dilute face's.
+[[nodiscard]] bool diluteFace(const FlowState& state, std::size_t m, int axis, std::size_t face, double threshold);
 
 // eps_m on a face, the mean of its two cells (the momentum control volume's fraction).
 [[nodiscard]] inline double meanOnFace(const CellField& field, int axis, std::size_t face) {

@@ -126,14 +126,22 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     std::vector<std::array<FaceField, 3>> flux;
     for (std::size_t m = 0; m < M; ++m)
       flux.push_back(massFluxes(state.phases[m], props.phases[m].density, boundaries));
+    std::vector<double> speed(M, settings.velocityScale);
+    for (std::size_t m = 0; m < M; ++m) {
+      for (int a = 0; a < dims; ++a) {
+        for (double u : state.phases[m].velocity[static_cast<std::size_t>(a)].values())
+          speed[m] = std::max(speed[m], std::abs(u));
+      }
+    }
     std::vector<CorrectionCoefficients> corrections;
     for (int a = 0; a < dims; ++a) {
       std::vector<StencilSystem> systems;
       for (std::size_t m = 0; m < M; ++m) systems.push_back(assembleMomentum(in, m, a, flux[m]));
-      corrections.push_back(coupleAndRelax(systems, state, props, a, settings.momentumRelaxation));
+      corrections.push_back(
+          coupleAndRelax(systems, state, props, a, settings.momentumRelaxation, settings.diluteFraction));
       for (std::size_t m = 0; m < M; ++m) {
         FaceField& u = state.phases[m].velocity[static_cast<std::size_t>(a)];
-        const auto r = systems[m].normalisedResidual(u.values());
+        const auto r = systems[m].normalisedResidual(u.values(), speed[m]);
         worst.offer(r.value, phaseName(m) + " " + std::string(1, "xyz"[a]) + " momentum", r.worst);
         systems[m].solve(u);
       }
@@ -178,12 +186,23 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       const StencilSystem fractionSystem = assembleFractionCorrection(state, old, props, m, solidsFlux, e, dt);
       CellField fractionCorrection(grid, 0.0);
       fractionSystem.solve(fractionCorrection);
+      // The correction conserves the phase's mass exactly (its fluxes telescope); Eq. 3.68's
+      // relaxation withholds part of it, which the next iteration hands back. A step converges
+      // only once what was withheld is negligible, so under-relaxation never leaks mass.
+      double withheld = 0.0, inventory = 0.0;
       for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
         if (!grid.interior(c)) continue;
         double& correction = fractionCorrection[c];
-        if (phase.fraction[c] + correction > settings.packedFraction && correction > 0.0)
+        if (phase.fraction[c] + correction > settings.packedFraction && correction > 0.0) {
+          withheld += (1.0 - settings.fractionRelaxation) * correction;
           correction *= settings.fractionRelaxation;  // Eq. 3.68
-        phase.fraction[c] += correction;              // Eq. 3.69
+        }
+        phase.fraction[c] += correction;  // Eq. 3.69
+        inventory += std::abs(phase.fraction[c]);
+      }
+      if (inventory > 0.0) {
+        worst.offer(withheld / inventory / settings.massTolerance * settings.tolerance,
+                    phaseName(m) + " packing relaxation", worst.cell);
       }
       const CellField& slope = props.phases[m].solidsPressureSlope;
       for (int a = 0; a < dims; ++a) {

@@ -100,22 +100,20 @@ void StencilSystem::relax(double alpha, const std::vector<double>& phi) {
   }
 }
 
-StencilSystem::Normalised StencilSystem::normalisedResidual(const std::vector<double>& phi) const {
+StencilSystem::Normalised StencilSystem::normalisedResidual(const std::vector<double>& phi, double scale) const {
   Normalised out;
-  double sum = 0.0, scale = 0.0, sumB = 0.0, worst = -1.0;
+  double sum = 0.0, diagonal = 0.0, worst = -1.0;
   for (std::size_t c = 0; c < ap_.size(); ++c) {
     if (active_[c] == 0) continue;
     const double r = std::abs(ap_[c] * phi[c] - neighbourSum(c, phi));
     sum += r;
-    scale += std::abs(ap_[c] * phi[c]);
-    sumB += std::abs(b_[c]);
+    diagonal += std::abs(ap_[c]);
     if (r > worst) {
       worst = r;
       out.worst = c;
     }
   }
-  const double denominator = scale > 0.0 ? scale : sumB;
-  out.value = denominator > 0.0 ? sum / denominator : 0.0;
+  out.value = diagonal > 0.0 && scale > 0.0 ? sum / diagonal / scale : 0.0;
   return out;
 }
 

@@ -49,14 +49,15 @@ class StencilSystem {
   // solver's convergence test reads.
   [[nodiscard]] double residual(const std::vector<double>& phi) const;
   [[nodiscard]] double residual(const CellField& phi) const { return residual(phi.values()); }
-  // sum |a_P Phi_P - sum a_nb Phi_nb - b| / sum |a_P Phi_P| over the active cells (MFiX's
-  // normalised residual), and the cell with the largest term; with every a_P Phi_P zero the
-  // denominator is sum |b|, and 0 / 0 is 0.
+  // The mean residual per unit a_P, sum |a_P Phi_P - sum a_nb Phi_nb - b| / sum |a_P|, in units
+  // of Phi, over `scale` (a typical magnitude of Phi: for a velocity, the phase's largest speed),
+  // and the cell with the largest term. Unlike a division by sum |a_P Phi_P| it stays meaningful
+  // for a component that is zero everywhere (the cross-stream velocity of a column).
   struct Normalised {
     double value = 0.0;
     std::size_t worst = 0;
   };
-  [[nodiscard]] Normalised normalisedResidual(const std::vector<double>& phi) const;
+  [[nodiscard]] Normalised normalisedResidual(const std::vector<double>& phi, double scale) const;
 
  private:
   const StaggeredGrid* grid_;

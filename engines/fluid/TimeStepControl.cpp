@@ -1,0 +1,35 @@
+#include "engines/fluid/TimeStepControl.hpp"
+
+#include <algorithm>
+
+namespace grainbridge::fluid {
+
+std::string TimeStepLimits::problem() const {
+  if (!(minimum > 0.0)) return "the minimum time step must be positive";
+  if (!(maximum >= minimum)) return "the maximum time step must not be below the minimum";
+  if (!(initial >= minimum && initial <= maximum))
+    return "the initial time step must lie between the minimum and the maximum";
+  if (!(courant > 0.0)) return "the Courant number must be positive";
+  if (!(growth >= 1.0) || !(shrink > 0.0 && shrink <= 1.0)) return "growth must be >= 1 and shrink in (0, 1]";
+  if (fewIterations < 1 || manyIterations < fewIterations) return "need 1 <= few iterations <= many iterations";
+  return {};
+}
+
+double TimeStepControl::next(double speedOverSpacing) const {
+  double dt = dt_;
+  if (speedOverSpacing > 0.0) dt = std::min(dt, limits_.courant / speedOverSpacing);
+  return std::max(dt, limits_.minimum);
+}
+
+void TimeStepControl::converged(int iterations) {
+  if (iterations <= limits_.fewIterations) dt_ = std::min(dt_ * limits_.growth, limits_.maximum);
+  if (iterations > limits_.manyIterations) dt_ = std::max(dt_ * limits_.shrink, limits_.minimum);
+}
+
+bool TimeStepControl::failed(double tried) {
+  if (tried * 0.5 < limits_.minimum) return false;
+  dt_ = tried * 0.5;
+  return true;
+}
+
+}  // namespace grainbridge::fluid

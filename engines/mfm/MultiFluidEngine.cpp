@@ -1,0 +1,68 @@
+#include "engines/mfm/MultiFluidEngine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Error.hpp"
+
+namespace grainbridge::mfm {
+
+MultiFluidEngine::MultiFluidEngine(const core::data::GridGeometry& geometry, std::vector<fluid::BoundaryPatch> patches,
+                                   MultiFluidParams model, fluid::SimpleSettings settings, fluid::TimeStepLimits limits)
+    : grid_(std::make_unique<fluid::StaggeredGrid>(geometry)),
+      model_(std::move(model)),
+      settings_(settings),
+      control_(limits) {
+  const std::size_t phases = 1 + model_.params().solids.size();
+  boundaries_ = std::make_unique<fluid::Boundaries>(*grid_, std::move(patches), phases);
+  state_ = std::make_unique<fluid::FlowState>(*grid_, phases);
+  for (std::size_t c = 0; c < grid_->paddedCount(); ++c) state_->phases[0].fraction[c] = 1.0;
+}
+
+double MultiFluidEngine::speedOverSpacing() const {
+  double worst = 0.0;
+  for (const auto& phase : state_->phases) {
+    for (int a = 0; a < grid_->dimensions(); ++a) {
+      const auto& v = phase.velocity[static_cast<std::size_t>(a)].values();
+      for (double u : v) worst = std::max(worst, std::abs(u) / grid_->spacing(a));
+    }
+  }
+  return worst;
+}
+
+void MultiFluidEngine::step(double limit) {
+  for (;;) {
+    const double dt = std::min(control_.next(speedOverSpacing()), limit - state_->time);
+    const fluid::StepResult r = fluid::advance(*state_, dt, model_, *boundaries_, settings_);
+    if (r.converged) {
+      control_.converged(r.iterations);
+      ++stats_.steps;
+      stats_.iterations += r.iterations;
+      stats_.lastDt = dt;
+      stats_.lastResidual = r.residual;
+      return;
+    }
+    ++stats_.retries;
+    if (!control_.failed(dt)) {
+      std::ostringstream msg;
+      msg << "mfm: at t = " << state_->time << " s no step down to the minimum " << control_.limits().minimum
+          << " s converged; at dt = " << dt << " s ";
+      if (!r.failure.empty()) {
+        msg << r.failure;
+      } else {
+        msg << "the " << r.equation << " residual stayed at " << r.residual << " (tolerance " << settings_.tolerance
+            << ") after " << r.iterations << " iterations";
+      }
+      msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")";
+      throw Error(msg.str());
+    }
+  }
+}
+
+void MultiFluidEngine::advanceTo(double time) {
+  // A remainder below a thousandth of the minimum step is round-off in the step sum.
+  while (state_->time < time - 1e-3 * control_.limits().minimum) step(time);
+}
+
+}  // namespace grainbridge::mfm

@@ -1,0 +1,57 @@
+#pragma once
+// The multi-fluid engine: gas plus M solids continua on a staggered grid (Chapter 3), advanced by
+// the modified SIMPLE step of engines/fluid with the adaptive time step. It owns the grid, the
+// boundary patches, the state and the model; the mfm stage wires it to the engine driver.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engines/fluid/Boundaries.hpp"
+#include "engines/fluid/SimpleStep.hpp"
+#include "engines/fluid/TimeStepControl.hpp"
+#include "engines/mfm/MultiFluidModel.hpp"
+
+namespace grainbridge::mfm {
+
+struct StepStatistics {
+  long steps = 0;       // converged steps
+  long retries = 0;     // steps retried at a smaller time step
+  long iterations = 0;  // outer iterations over all converged steps
+  double lastDt = 0.0;  // [s]
+  double lastResidual = 0.0;
+};
+
+class MultiFluidEngine {
+ public:
+  MultiFluidEngine(const core::data::GridGeometry& geometry, std::vector<fluid::BoundaryPatch> patches,
+                   MultiFluidParams model, fluid::SimpleSettings settings, fluid::TimeStepLimits limits);
+
+  [[nodiscard]] const fluid::StaggeredGrid& grid() const { return *grid_; }
+  [[nodiscard]] const fluid::Boundaries& boundaries() const { return *boundaries_; }
+  [[nodiscard]] fluid::FlowState& state() { return *state_; }
+  [[nodiscard]] const fluid::FlowState& state() const { return *state_; }
+  [[nodiscard]] const MultiFluidModel& model() const { return model_; }
+  [[nodiscard]] double time() const { return state_->time; }
+  [[nodiscard]] const StepStatistics& statistics() const { return stats_; }
+  [[nodiscard]] fluid::TimeStepControl& timeStep() { return control_; }
+
+  // Takes one converged step (retrying at smaller steps as needed) without passing `limit`.
+  // Throws grainbridge::Error naming the time, the equation, the cell and the residual (or the
+  // bad value) when no step above the minimum converges; the state stays at the last good level.
+  void step(double limit);
+  // Steps until time() reaches `time`.
+  void advanceTo(double time);
+
+ private:
+  [[nodiscard]] double speedOverSpacing() const;
+
+  std::unique_ptr<fluid::StaggeredGrid> grid_;
+  std::unique_ptr<fluid::Boundaries> boundaries_;
+  std::unique_ptr<fluid::FlowState> state_;
+  MultiFluidModel model_;
+  fluid::SimpleSettings settings_;
+  fluid::TimeStepControl control_;
+  StepStatistics stats_;
+};
+
+}  // namespace grainbridge::mfm

@@ -1,0 +1,62 @@
+#pragma once
+// The multi-fluid model of Chapter 3 as the SIMPLE solver of engines/fluid sees it: per cell,
+// the gas's density and viscosity, each solids phase's stresses and the gas-solids drag.
+//   gas      incompressible, tau_g = 2 eps_g mu_g D_g - 2/3 eps_g mu_g tr(D_g) I (Eq. 3.20 with
+//            Stokes's hypothesis lambda_g = -2/3 mu_g);
+//   solids   the viscous regime of kinetic theory in its algebraic form (Eqs. 3.21-3.25 with the
+//            granular temperature of MFiX's gt_algebraic: production S:grad v equals the
+//            dissipation K4 eps^2 theta^1.5, convection and conduction neglected), plus, below
+//            the critical void fraction eps_g*, the plastic regime of Eqs. 3.26-3.27 (Schaeffer's
+//            viscosity). The two add, as MFiX's Schaeffer option adds them, so the stress has no
+//            jump at eps_g*, where P* vanishes.
+//   drag     the gas-solids law by name (Syamlal-O'Brien, Eqs. 3.10-3.16, by default) at the
+//            cell-centred slip.
+// The solids-pressure slope dP_s/deps_s the fraction correction needs is the plastic one,
+// P* + eps_s n A (eps_g* - eps_g)^(n-1), plus the kinetic 2 K1 eps_s theta (theta held).
+#include <string>
+#include <vector>
+
+#include "engines/closures/GasSolidsDrag.hpp"
+#include "engines/closures/PlasticRegime.hpp"
+#include "engines/closures/SyamlalAlgebraic.hpp"
+#include "engines/fluid/SimpleStep.hpp"
+
+namespace grainbridge::mfm {
+
+struct GasPhase {
+  double density = 1.2;       // rho_g [kg/m^3]
+  double viscosity = 1.8e-5;  // mu_g [Pa s]
+};
+
+struct SolidsPhase {
+  std::string name;
+  double diameter = 0.0;     // d_p [m]
+  double density = 0.0;      // rho_s [kg/m^3]
+  double restitution = 0.9;  // e_mm [-]
+};
+
+struct MultiFluidParams {
+  GasPhase gas;
+  std::vector<SolidsPhase> solids;
+  closures::GasSolidsDrag drag = closures::GasSolidsDrag::byName("syamlal_obrien");
+  closures::SyamlalAlgebraic kinetic;
+  closures::PlasticRegime plastic;
+};
+
+class MultiFluidModel final : public fluid::FlowModel {
+ public:
+  explicit MultiFluidModel(MultiFluidParams params) : params_(std::move(params)) {}
+  [[nodiscard]] const MultiFluidParams& params() const { return params_; }
+  void evaluate(const fluid::FlowState& state, fluid::FlowProperties& properties) const override;
+
+ private:
+  MultiFluidParams params_;
+};
+
+// The algebraic granular temperature of MFiX's gt_algebraic: the positive root x = sqrt(theta) of
+//   K4 eps x^2 + K1 eps tr(D) x - (K2 tr(D)^2 + 2 K3 D:D) = 0,
+// zero where the solids do not shear. [m^2/s^2]
+[[nodiscard]] double algebraicGranularTemperature(const closures::SyamlalCoefficients& k, double solidFraction,
+                                                  double traceD, double doubleDotD);
+
+}  // namespace grainbridge::mfm
