@@ -3,6 +3,8 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <map>
+#include <memory>
 #include <cmath>
 #include <string>
 
@@ -30,6 +32,29 @@ StencilSystem::StencilSystem(const StaggeredGrid& grid)
       for (int i = 0; i < grid.cells(0); ++i) active_[grid.index(i, j, k)] = 1;
 }
 
+namespace {
+
+// The column ordering and symbolic analysis of a sparse LU depend only on the sparsity pattern,
+// which is fixed by the active mask (every active neighbour gets an entry, zero or not); a solver
+// assembles the same few patterns (a momentum component per axis, the pressure and fraction
+// corrections) thousands of times, so each pattern is analysed once per thread and reused. The
+// factorisation, and so the result, is the same as a fresh solver's.
+using Lu = Eigen::SparseLU<Eigen::SparseMatrix<double>>;
+
+Lu& analysedFor(const std::vector<char>& active, const Eigen::SparseMatrix<double>& A) {
+  thread_local std::map<std::vector<char>, std::unique_ptr<Lu>> cache;
+  auto it = cache.find(active);
+  if (it == cache.end()) {
+    if (cache.size() > 64) cache.clear();  // many grids in one process (tests): bound the memory
+    auto lu = std::make_unique<Lu>();
+    lu->analyzePattern(A);
+    it = cache.emplace(active, std::move(lu)).first;
+  }
+  return *it->second;
+}
+
+}  // namespace
+
 void StencilSystem::solve(std::vector<double>& phi) const {
   const std::size_t n = ap_.size();
   std::vector<long> row(n, -1);
@@ -47,10 +72,10 @@ void StencilSystem::solve(std::vector<double>& phi) const {
     double known = b_[c];
     for (int nb = 0; nb < 6; ++nb) {
       std::size_t m = 0;
+      if (!neighbourOf(*grid_, c, nb, m)) continue;
       const double a = anb_[static_cast<std::size_t>(nb)][c];
-      if (a == 0.0 || !neighbourOf(*grid_, c, nb, m)) continue;
       if (active_[m] != 0) {
-        entries.emplace_back(row[c], row[m], -a);
+        entries.emplace_back(row[c], row[m], -a);  // kept when zero: the pattern is the mask's
       } else {
         known += a * phi[m];  // a boundary value: known
       }
@@ -59,8 +84,9 @@ void StencilSystem::solve(std::vector<double>& phi) const {
   }
   Eigen::SparseMatrix<double> A(unknowns, unknowns);
   A.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-  lu.compute(A);
+  A.makeCompressed();
+  Lu& lu = analysedFor(active_, A);
+  lu.factorize(A);
   if (lu.info() != Eigen::Success)
     throw Error("fluid: the discretised system is singular (" + lu.lastErrorMessage() + ")");
   const Eigen::VectorXd x = lu.solve(rhs);
