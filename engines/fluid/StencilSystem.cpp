@@ -3,9 +3,9 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
-#include <cmath>
 #include <string>
 
 #include "core/Error.hpp"

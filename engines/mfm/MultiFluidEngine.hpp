@@ -31,9 +31,12 @@ class MultiFluidEngine {
   [[nodiscard]] fluid::FlowState& state() { return *state_; }
   [[nodiscard]] const fluid::FlowState& state() const { return *state_; }
   [[nodiscard]] const MultiFluidModel& model() const { return model_; }
+  [[nodiscard]] const fluid::SimpleSettings& settings() const { return settings_; }
   [[nodiscard]] double time() const { return state_->time; }
   [[nodiscard]] const StepStatistics& statistics() const { return stats_; }
   [[nodiscard]] fluid::TimeStepControl& timeStep() { return control_; }
+  [[nodiscard]] const fluid::TimeStepControl& timeStep() const { return control_; }
+  void restoreStatistics(const StepStatistics& s) { stats_ = s; }
 
   // Takes one converged step (retrying at smaller steps as needed) without passing `limit`.
   // Throws grainbridge::Error naming the time, the equation, the cell and the residual (or the

@@ -71,4 +71,13 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
   }
 }
 
+double MultiFluidModel::granularTemperature(const fluid::FlowState& state, std::size_t m, std::size_t c) const {
+  const SolidsPhase& solids = params_.solids[m - 1];
+  const double epsG = std::clamp(state.phases[0].fraction[c], 1e-12, 1.0);
+  const double eps = std::clamp(state.phases[m].fraction[c], 0.0, 1.0 - epsG);
+  const closures::KineticState ks{eps, 0.0, solids.diameter, solids.density, solids.restitution, 0.0};
+  const fluid::StrainRate D = fluid::strainRate(state.phases[m], c);
+  return algebraicGranularTemperature(params_.kinetic.coefficients(ks), eps, D.trace(), D.doubleDot());
+}
+
 }  // namespace grainbridge::mfm

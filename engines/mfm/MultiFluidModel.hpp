@@ -48,6 +48,8 @@ class MultiFluidModel final : public fluid::FlowModel {
   explicit MultiFluidModel(MultiFluidParams params) : params_(std::move(params)) {}
   [[nodiscard]] const MultiFluidParams& params() const { return params_; }
   void evaluate(const fluid::FlowState& state, fluid::FlowProperties& properties) const override;
+  // The algebraic granular temperature of solids phase m (1..M) at interior cell c [m^2/s^2].
+  [[nodiscard]] double granularTemperature(const fluid::FlowState& state, std::size_t m, std::size_t c) const;
 
  private:
   MultiFluidParams params_;

@@ -1,0 +1,34 @@
+#pragma once
+// What a researcher reads off a fluidized bed while it runs (the series of an mfm stage):
+//   the gas pressure drop between two heights along gravity, interpolated linearly between cell
+//   centres and averaged across the bed (Fig. 4.5's Delta P, with the heights the experiment's
+//   taps had);
+//   the mean particle height of Eq. 5.22, sum eps_s h / sum eps_s, weighted by cell volume too
+//   (VALIDATION.md: on a non-uniform grid), measured from the domain's low side along gravity;
+//   the solids volume of each phase (mass divided by its density), which a walled bed keeps.
+#include <vector>
+
+#include "engines/fluid/FlowState.hpp"
+
+namespace grainbridge::mfm {
+
+// The axis gravity points along (the largest |g| component) and its sign: heights grow
+// against gravity.
+struct VerticalAxis {
+  int axis = 1;
+  double up = 1.0;  // +1: height grows with the axis coordinate
+};
+[[nodiscard]] VerticalAxis verticalAxis(const Vec3& gravity);
+
+// P_g at height h [m] above the domain's bottom, averaged over the cells of that height; between
+// cell centres linearly, below the first centre extrapolated from the first two (the inlet face).
+[[nodiscard]] double pressureAtHeight(const fluid::FlowState& state, VerticalAxis vertical, double height);
+
+// Eq. 5.22 for solids phase m [m]; 0 when the phase holds no solids.
+[[nodiscard]] double meanParticleHeight(const fluid::FlowState& state, VerticalAxis vertical, std::size_t m);
+
+// The volume of solids phase m in the domain [m^3] (per unit depth in 2D: the cell volume uses
+// the z spacing, which a 2D grid sets to its depth).
+[[nodiscard]] double solidsVolume(const fluid::FlowState& state, std::size_t m);
+
+}  // namespace grainbridge::mfm
