@@ -1,5 +1,8 @@
-#engines / mfm : the multi - fluid model on the SIMPLE solver(issue 17).
-grainbridge_add_test(test_mfm SOURCES ${CMAKE_CURRENT_SOURCE_DIR} / mfm /
-                     PackedBedTest.cpp ${CMAKE_CURRENT_SOURCE_DIR} / mfm /
-                     FluidizedBedTest.cpp ${CMAKE_CURRENT_SOURCE_DIR} / mfm /
-                     MfmEngineTest.cpp LIBS engines_mfm LABELS "physics;mfm")
+# engines/mfm: the multi-fluid model on the SIMPLE solver (issue 17).
+grainbridge_add_test(test_mfm
+  SOURCES
+    ${CMAKE_CURRENT_SOURCE_DIR}/mfm/PackedBedTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/mfm/FluidizedBedTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/mfm/MfmEngineTest.cpp
+  LIBS engines_mfm
+  LABELS "physics;mfm")
