@@ -1,0 +1,78 @@
+#include "engines/mfm/InitialRegions.hpp"
+
+#include <random>
+
+#include "engines/mfm/BedMeasures.hpp"
+
+namespace grainbridge::mfm {
+
+void initialise(MultiFluidEngine& engine, const InitialState& init) {
+  auto& st = engine.state();
+  const auto& grid = engine.grid();
+  const std::size_t M = st.phases.size();
+  std::mt19937_64 rng(init.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const std::size_t c = grid.index(i, j, k);
+        const Vec3 x = grid.cellCentre(i, j, k);
+        const InitialRegion* region = nullptr;
+        for (const auto& r : init.regions) {
+          bool inside = true;
+          for (int a = 0; a < grid.dimensions(); ++a) inside = inside && x[a] >= r.lo[a] && x[a] < r.hi[a];
+          if (inside) region = &r;
+        }
+        const double noise = unit(rng);  // drawn for every cell: the sequence is the grid's
+        double solids = 0.0;
+        for (std::size_t m = 1; m < M; ++m) {
+          double eps = region != nullptr ? region->solidsFractions[m - 1] : 0.0;
+          eps *= 1.0 - init.perturbation * noise;
+          st.phases[m].fraction[c] = eps;
+          solids += eps;
+        }
+        st.phases[0].fraction[c] = 1.0 - solids;
+        for (std::size_t m = 0; m < M; ++m) {
+          const Vec3 v = region != nullptr ? region->velocities[m] : Vec3::Zero();
+          // The faces of the cell's high sides; a face shared with the next cell takes the last
+          // written, so regions set velocities face-exactly where they meet.
+          for (int a = 0; a < grid.dimensions(); ++a) {
+            st.phases[m].velocity[static_cast<std::size_t>(a)][c] = v[a];
+            if (grid.coordinates(c)[static_cast<std::size_t>(a)] == 0)
+              st.phases[m].velocity[static_cast<std::size_t>(a)][grid.neighbour(c, a, -1)] = v[a];
+          }
+        }
+      }
+    }
+  }
+  // The gas pressure: each cell carries the weight of the mixture above it, starting from the
+  // reference at the top.
+  const VerticalAxis v = verticalAxis(engine.settings().gravity);
+  const double g = engine.settings().gravity.norm();
+  const double h = grid.spacing(v.axis);
+  const int n = grid.cells(v.axis);
+  const auto& model = engine.model().params();
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        std::array<int, 3> at{i, j, k};
+        if (at[static_cast<std::size_t>(v.axis)] != 0) continue;
+        // From the top face (the reference) down: half of each cell's weight lies above its
+        // centre, so consecutive centres differ by the mean of their two cells' weights.
+        double p = init.referencePressure, weightAbove = 0.0;
+        for (int b = n - 1; b >= 0; --b) {  // b counts rows from the bottom
+          at[static_cast<std::size_t>(v.axis)] = v.up > 0.0 ? b : n - 1 - b;
+          const std::size_t c = grid.index(at[0], at[1], at[2]);
+          double density = st.phases[0].fraction[c] * model.gas.density;
+          for (std::size_t m = 1; m < M; ++m) density += st.phases[m].fraction[c] * model.solids[m - 1].density;
+          const double weight = density * g * h;
+          p += 0.5 * (weightAbove + weight);
+          st.pressure[c] = p;
+          weightAbove = weight;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace grainbridge::mfm

@@ -1,0 +1,33 @@
+#pragma once
+// The initial state of a multi-fluid run as MFiX's IC regions give it: boxes, later ones over
+// earlier ones, each setting the solids fractions (the gas takes the rest) and each phase's
+// velocity in the cells whose centres lie inside; then the gas pressure from the outlet down,
+// each cell carrying the weight of the mixture above it (a bed starts at rest on its gas, not
+// falling through it). A seeded perturbation of the solids fraction breaks the symmetry of a
+// uniform bed between free-slip walls, which would otherwise stay one-dimensional and slug as a
+// piston.
+#include <cstdint>
+#include <vector>
+
+#include "core/Types.hpp"
+#include "engines/mfm/MultiFluidEngine.hpp"
+
+namespace grainbridge::mfm {
+
+struct InitialRegion {
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // [m]
+  std::vector<double> solidsFractions;        // per solids phase
+  std::vector<Vec3> velocities;               // per phase, the gas first [m/s]
+};
+
+struct InitialState {
+  std::vector<InitialRegion> regions;
+  double referencePressure = 101325.0;  // at the top of the domain (against gravity) [Pa]
+  double perturbation = 0.0;            // relative amplitude, solids fractions only lowered
+  std::uint64_t seed = 1;
+};
+
+// Cells no region covers are gas at rest.
+void initialise(MultiFluidEngine& engine, const InitialState& initial);
+
+}  // namespace grainbridge::mfm

@@ -1,0 +1,35 @@
+#include "workflows/stages/MfmSeriesColumns.hpp"
+
+#include "engines/mfm/BedMeasures.hpp"
+
+namespace grainbridge::workflows::stages {
+
+MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup& setup)
+    : engine_(engine), setup_(setup) {
+  for (const auto& tap : setup.taps) names_.push_back("dp_" + tap.name);
+  for (const auto& s : setup.engine.model.solids) names_.push_back("mean_height_" + s.name);
+  for (const auto& s : setup.engine.model.solids) names_.push_back("solids_volume_" + s.name);
+  names_.push_back("dt");
+}
+
+void MfmSeriesColumns::sample(driver::SeriesRow& row) {
+  const auto& state = engine_.engine().state();
+  const mfm::VerticalAxis vertical = mfm::verticalAxis(setup_.engine.settings.gravity);
+  std::vector<double> values;
+  for (const auto& tap : setup_.taps) {
+    values.push_back(mfm::pressureAtHeight(state, vertical, tap.low) -
+                     mfm::pressureAtHeight(state, vertical, tap.high));
+  }
+  const std::size_t M = setup_.engine.model.solids.size();
+  for (std::size_t m = 1; m <= M; ++m) values.push_back(mfm::meanParticleHeight(state, vertical, m));
+  for (std::size_t m = 1; m <= M; ++m) values.push_back(mfm::solidsVolume(state, m));
+  values.push_back(engine_.engine().statistics().lastDt);
+  for (double v : values) row.add(v);
+  // The window: from average_from on (to round-off in the sampling times).
+  if (state.time >= setup_.averageFrom - 1e-9 * setup_.engine.interval) {
+    for (std::size_t k = 0; k < names_.size(); ++k) window_[names_[k]].push_back(values[k]);
+    fields_.add(engine_.frame());
+  }
+}
+
+}  // namespace grainbridge::workflows::stages

@@ -1,0 +1,37 @@
+#pragma once
+// Turns the `mfm` stage's resolved parameters (SI) into the multi-fluid engine's setup and
+// initial state, and lists what must stop a run before its first step, each at the JSON pointer
+// of the parameter at fault (below /params). The stage's config check and its run both call it,
+// so both see the same numbers and each rule is written once.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engines/mfm/InitialRegions.hpp"
+#include "engines/mfm/MfmEngine.hpp"
+
+namespace grainbridge::workflows::stages {
+
+struct PressureTap {
+  std::string name;
+  double low = 0.0, high = 0.0;  // heights above the bottom along gravity [m]
+};
+
+struct MfmSetup {
+  mfm::MultiFluidSetup engine;
+  mfm::InitialState initial;
+  std::vector<PressureTap> taps;
+  double duration = 0.0;
+  double averageFrom = 0.0;
+  // (pointer below /params, message): empty when the run may start.
+  std::vector<std::pair<std::string, std::string>> problems;
+};
+
+// Assumes individually valid parameters (the schema's checks passed).
+MfmSetup makeMfmSetup(const nlohmann::json& params);
+
+// The run's output steps: duration / interval, rounded.
+[[nodiscard]] std::int64_t mfmSteps(const nlohmann::json& params);
+
+}  // namespace grainbridge::workflows::stages

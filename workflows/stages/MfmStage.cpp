@@ -1,0 +1,267 @@
+#include "workflows/stages/MfmStage.hpp"
+
+#include <cmath>
+
+#include "core/Error.hpp"
+#include "core/averaging/BlockAverage.hpp"
+#include "core/io/FieldFrameWriter.hpp"
+#include "engines/mfm/BedMeasures.hpp"
+#include "engines/mfm/MfmEngine.hpp"
+#include "workflows/driver/TimeLoopDriver.hpp"
+#include "workflows/stages/MfmSeriesColumns.hpp"
+#include "workflows/stages/MfmSetup.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using core::units::Dimension;
+using nlohmann::json;
+using params::ParamSchema;
+using params::ParamSpec;
+
+namespace {
+
+std::shared_ptr<const ParamSchema> solidsSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("name").required().doc("phase name (field frames, series columns)"))
+      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("particle diameter d_p"))
+      .add(ParamSpec::quantity("density", Dimension::density()).required().positive().doc("material density rho_s"))
+      .add(ParamSpec::number("restitution")
+               .defaultValue(0.9)
+               .min(0.0, false)
+               .max(1.0)
+               .doc("particle-particle restitution e (Eqs. 3.23-3.25)"));
+  return s;
+}
+
+std::shared_ptr<const ParamSchema> boundarySchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("side")
+             .required()
+             .options({"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"})
+             .doc("the domain side the patch lies on"))
+      .add(ParamSpec::string("kind")
+               .required()
+               .options({"no_slip_wall", "free_slip_wall", "velocity_inlet", "pressure_outlet"})
+               .doc("boundary condition (ghost-cell rules, Eqs. 3.66-3.67)"))
+      .add(ParamSpec::quantityList("from", Dimension::lengthDim(), 2)
+               .doc("start of the patch along the side's two tangential axes (x before y before z); on cell faces"))
+      .add(ParamSpec::quantityList("to", Dimension::lengthDim(), 2).doc("end of the patch, likewise (a jet)"))
+      .add(ParamSpec::quantity("gas_inflow", Dimension::velocity())
+               .defaultValue(0.0)
+               .doc("inlet: gas speed into the domain, normal to the side (outlet: of gas flowing back in)"))
+      .add(ParamSpec::quantityList("solids_fractions", Dimension::none(), 0)
+               .defaultValue(json::array())
+               .doc("inlet: each solids phase's fraction entering (outlet: of the backflow); default none"))
+      .add(ParamSpec::quantityList("solids_inflow", Dimension::velocity(), 0)
+               .defaultValue(json::array())
+               .doc("inlet: each solids phase's speed into the domain; default 0"))
+      .add(ParamSpec::quantity("pressure", Dimension::pressure())
+               .defaultValue("101325 Pa")
+               .doc("outlet: the pressure beyond the outlet face"));
+  return s;
+}
+
+std::shared_ptr<const ParamSchema> regionSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::quantityList("lo", Dimension::lengthDim(), 3).required().doc("lower corner (cell centres inside)"))
+      .add(ParamSpec::quantityList("hi", Dimension::lengthDim(), 3).required().doc("upper corner"))
+      .add(ParamSpec::quantityList("solids_fractions", Dimension::none(), 0)
+               .required()
+               .doc("each solids phase's fraction; the gas takes the rest"))
+      .add(ParamSpec::quantityList("gas_velocity", Dimension::velocity(), 3)
+               .defaultValue(json::array({0, 0, 0}))
+               .doc("gas velocity (interstitial)"))
+      .add(ParamSpec::quantityList("solids_velocity", Dimension::velocity(), 3)
+               .defaultValue(json::array({0, 0, 0}))
+               .doc("velocity of every solids phase"));
+  return s;
+}
+
+std::shared_ptr<const ParamSchema> tapSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("name").required().doc("column name: series.csv gets dp_<name>"))
+      .add(ParamSpec::quantity("low", Dimension::lengthDim())
+               .required()
+               .min(0.0)
+               .doc("lower tap, height above the bottom"))
+      .add(ParamSpec::quantity("high", Dimension::lengthDim()).required().doc("upper tap"));
+  return s;
+}
+
+// A block average as summary values: <key> and <key>_err.
+void addAverage(json& summary, const std::string& key, const std::vector<double>& samples) {
+  if (samples.empty()) return;
+  const auto avg = core::averaging::blockAverage(samples);
+  summary[key] = avg.mean;
+  summary[key + "_err"] = avg.standardError;
+}
+
+}  // namespace
+
+MfmStage::MfmStage() {
+  schema_.add(ParamSpec::integerList("cells", 3).required().min(1).doc("cells along x, y, z (z = 1: a 2D x-y grid)"))
+      .add(ParamSpec::quantityList("lengths", Dimension::lengthDim(), 3)
+               .required()
+               .doc("domain size along x, y, z (z of a 2D grid: its depth)"))
+      .add(ParamSpec::quantityList("gravity", Dimension::acceleration(), 3)
+               .defaultValue(json::array({0, -9.81, 0}))
+               .doc("gravitational acceleration"))
+      .add(ParamSpec::quantity("gas_density", Dimension::density())
+               .defaultValue("1.2 kg/m3")
+               .positive()
+               .doc("gas density rho_g (incompressible gas)"))
+      .add(ParamSpec::quantity("gas_viscosity", Dimension::viscosity())
+               .defaultValue("1.8e-5 Pa s")
+               .positive()
+               .doc("gas viscosity mu_g (VALIDATION.md: the reference gives none; air)"))
+      .add(ParamSpec::objectList("solids", solidsSchema()).required().doc("solids phases"))
+      .add(ParamSpec::string("drag")
+               .defaultValue("syamlal_obrien")
+               .options({"syamlal_obrien", "ergun_wen_yu", "gidaspow"})
+               .doc("gas-solids drag law (Eqs. 3.10-3.16 by default)"))
+      .add(ParamSpec::number("drag_c").defaultValue(0.8).positive().doc("Syamlal-O'Brien C (Eq. 3.13; Table 4.3)"))
+      .add(ParamSpec::number("drag_d").defaultValue(2.65).positive().doc("Syamlal-O'Brien D (Eq. 3.13; Table 4.3)"))
+      .add(ParamSpec::string("kinetic_model")
+               .defaultValue("syamlal_algebraic")
+               .options({"syamlal_algebraic", "syamlal_algebraic_mfix"})
+               .doc("solids stress of the viscous regime: Eqs. 3.21-3.25 as printed, or with MFiX's (3e+1)/2"))
+      .add(ParamSpec::number("critical_void_fraction")
+               .required()
+               .min(0.0, false)
+               .max(1.0, false)
+               .doc("eps_g* where the plastic regime begins (Eqs. 3.26-3.27)"))
+      .add(ParamSpec::number("friction_angle")
+               .defaultValue("30 degree")
+               .doc("internal friction angle of Schaeffer's plastic viscosity"))
+      .add(ParamSpec::number("packed_solids_fraction")
+               .min(0.0, false)
+               .max(1.0, false)
+               .doc("eps_s,max: the packed solids fraction of Eq. 3.68 and the initial states' bound "
+                    "(default 1 - critical_void_fraction)"))
+      .add(ParamSpec::objectList("boundaries", boundarySchema())
+               .required()
+               .doc("boundary patches; sides no patch covers are no-slip walls"))
+      .add(ParamSpec::objectList("regions", regionSchema()).doc("initial regions, later over earlier; elsewhere gas"))
+      .add(ParamSpec::quantity("reference_pressure", Dimension::pressure())
+               .defaultValue("101325 Pa")
+               .doc("initial gas pressure at the top; below it each cell carries the mixture above"))
+      .add(ParamSpec::number("perturbation")
+               .defaultValue(0.0)
+               .min(0.0)
+               .max(0.5)
+               .doc("relative random lowering of the initial solids fractions (breaks a uniform bed's symmetry)"))
+      .add(ParamSpec::integer("seed").defaultValue(1).min(0).doc("seed of the perturbation"))
+      .add(ParamSpec::quantity("duration", Dimension::timeDim()).required().positive().doc("simulated time"))
+      .add(ParamSpec::quantity("output_interval", Dimension::timeDim())
+               .defaultValue("0.01 s")
+               .positive()
+               .doc("series rows (and the frames' grid of times)"))
+      .add(
+          ParamSpec::integer("frames").defaultValue(10).min(0).doc("field frames after the initial one, evenly spaced"))
+      .add(ParamSpec::quantity("average_from", Dimension::timeDim())
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("start of the time-averaging window (to the end)"))
+      .add(ParamSpec::objectList("pressure_taps", tapSchema())
+               .doc("pairs of heights whose gas pressure difference series.csv records"))
+      .add(ParamSpec::quantity("dt", Dimension::timeDim()).defaultValue("1e-4 s").positive().doc("first time step"))
+      .add(ParamSpec::quantity("dt_min", Dimension::timeDim())
+               .defaultValue("1e-7 s")
+               .positive()
+               .doc("smallest step before a non-converging run stops"))
+      .add(ParamSpec::quantity("dt_max", Dimension::timeDim())
+               .defaultValue("1e-3 s")
+               .positive()
+               .doc("largest step (dt_min = dt_max: a fixed step)"))
+      .add(ParamSpec::number("courant").defaultValue(0.5).positive().doc("largest |v| dt / dx"))
+      .add(ParamSpec::number("tolerance").defaultValue(1e-4).positive().doc("normalised residuals of a converged step"))
+      .add(
+          ParamSpec::integer("max_iterations").defaultValue(50).min(1).doc("outer iterations before a step is retried"))
+      .add(ParamSpec::number("momentum_relaxation").defaultValue(0.9).min(0.0, false).max(1.0).doc("alpha_u"))
+      .add(ParamSpec::number("pressure_relaxation").defaultValue(0.8).min(0.0, false).max(1.0).doc("omega_P"))
+      .add(ParamSpec::number("fraction_relaxation")
+               .defaultValue(0.5)
+               .min(0.0, false)
+               .max(1.0)
+               .doc("omega_eps of Eq. 3.68 (packed cells)"))
+      .add(ParamSpec::number("dilute_fraction")
+               .defaultValue(1e-4)
+               .min(0.0)
+               .doc("solids faces below this fraction have no momentum equation (MFiX DIL_EP_S)"))
+      .add(ParamSpec::quantity("checkpoint_interval", Dimension::timeDim())
+               .defaultValue("600 s")
+               .positive()
+               .doesNotAffectResults()
+               .doc("wall-clock time between checkpoints (one is also written on SIGTERM)"))
+      .add(ParamSpec::boolean("progress").defaultValue(true).doesNotAffectResults().doc("show progress"));
+}
+
+void MfmStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
+  for (const auto& [where, what] : makeMfmSetup(p).problems) d.add(ptr + where, what);
+}
+
+void MfmStage::run(StageContext& ctx) const {
+  const json& p = ctx.params();
+  const MfmSetup setup = makeMfmSetup(p);
+  if (!setup.problems.empty()) {
+    throw Error("/stages/" + ctx.stage() + "/params" + setup.problems.front().first + ": " +
+                setup.problems.front().second);
+  }
+  driver::TimeLoopOptions options;
+  const auto steps = mfmSteps(p);
+  options.frames = p.at("frames");
+  options.seriesRows = steps;
+  options.checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
+  options.progress = p.at("progress");
+  driver::TimeLoopDriver loop(ctx, options);
+  const core::io::ArtifactStamp stamp{ctx.key()};
+  auto engine = loop.start<mfm::MfmEngine>(
+      [&] {
+        return std::make_unique<mfm::MfmEngine>(
+            setup.engine, [&](mfm::MultiFluidEngine& e) { mfm::initialise(e, setup.initial); }, ctx.outputDir(), stamp);
+      },
+      [&](const std::filesystem::path& state) {
+        return mfm::MfmEngine::restore(setup.engine, state, ctx.key(), ctx.outputDir(), stamp);
+      });
+  driver::Phase run;
+  run.name = "run";
+  run.steps = steps;
+  run.output = true;
+  loop.addPhase(std::move(run));
+  auto columns = std::make_unique<MfmSeriesColumns>(*engine, setup);
+  MfmSeriesColumns& observed = *columns;
+  const double initialVolume = mfm::solidsVolume(engine->engine().state(), 1);
+  loop.addColumns(std::move(columns));
+  loop.run(*engine);
+
+  // Time averages over the window: the summary's values with block-averaging errors, and the
+  // mean fields beside the frames (mean/fields.xmf).
+  json summary;
+  const auto& window = observed.windowSamples();
+  for (std::size_t k = 0; k < setup.taps.size(); ++k) {
+    addAverage(summary, "dp_" + setup.taps[k].name, window.at("dp_" + setup.taps[k].name));
+    if (k == 0) addAverage(summary, "pressure_drop", window.at("dp_" + setup.taps[k].name));
+  }
+  const auto& solids = setup.engine.model.solids;
+  for (std::size_t m = 0; m < solids.size(); ++m) {
+    addAverage(summary, "mean_height_" + solids[m].name, window.at("mean_height_" + solids[m].name));
+    if (m == 0) addAverage(summary, "mean_height", window.at("mean_height_" + solids[m].name));
+  }
+  const auto& stats = engine->engine().statistics();
+  summary["solver_steps"] = stats.steps;
+  summary["retries"] = stats.retries;
+  summary["iterations_per_step"] = stats.steps > 0 ? static_cast<double>(stats.iterations) / stats.steps : 0.0;
+  summary["window_samples"] = observed.fieldAverage().frames();
+  if (!solids.empty() && initialVolume > 0.0) {
+    summary["solids_volume_change"] = mfm::solidsVolume(engine->engine().state(), 1) / initialVolume - 1.0;
+  }
+  if (observed.fieldAverage().frames() > 0) {
+    core::io::FieldFrameWriter mean(ctx.outputDir() / "mean", stamp);
+    const auto path = mean.write(observed.fieldAverage().mean());
+    ctx.addArtifact(path.lexically_relative(ctx.outputDir()).string(), "field_frame");
+    ctx.addArtifact("mean/fields.xmf", "xdmf");
+  }
+  ctx.setSummary(summary);
+}
+
+}  // namespace grainbridge::workflows::stages
