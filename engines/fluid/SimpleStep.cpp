@@ -75,7 +75,7 @@ void offerContinuity(Worst& worst, const std::string& name, const CellField& fra
 }
 
 // The first non-finite value or fraction out of [0, 1] (beyond round-off), described; empty if none.
-std::string firstBadValue(const FlowState& state, std::array<int, 3>& cell) {
+std::string firstBadValue(const FlowState& state, const SimpleSettings& settings, std::array<int, 3>& cell) {
   const StaggeredGrid& grid = state.grid();
   for (int k = 0; k < grid.cells(2); ++k) {
     for (int j = 0; j < grid.cells(1); ++j) {
@@ -83,6 +83,12 @@ std::string firstBadValue(const FlowState& state, std::array<int, 3>& cell) {
         const std::size_t c = grid.index(i, j, k);
         cell = {i, j, k};
         if (!std::isfinite(state.pressure[c])) return "the gas pressure is not finite";
+        if (state.phases.size() > 1 && settings.packedFraction > 0.0) {
+          const double solids = 1.0 - state.phases[0].fraction[c];
+          if (solids > settings.packedFraction + settings.overpacking)
+            return "the solids fraction is " + std::to_string(solids) + ", beyond eps_s,max " +
+                   std::to_string(settings.packedFraction) + " by more than " + std::to_string(settings.overpacking);
+        }
         for (std::size_t m = 0; m < state.phases.size(); ++m) {
           const double eps = state.phases[m].fraction[c];
           if (!std::isfinite(eps)) return "the " + phaseName(m) + " fraction is not finite";
@@ -228,7 +234,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     result.equation = worst.equation;
     result.cell = grid.coordinates(worst.cell);
     std::array<int, 3> badCell{};
-    result.failure = firstBadValue(state, badCell);
+    result.failure = firstBadValue(state, settings, badCell);
     if (!result.failure.empty()) {
       result.cell = badCell;
       return result;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/text/NumberText.hpp"
 #include "engines/closures/SyamlalOBrien.hpp"
 #include "engines/mfm/BedMeasures.hpp"
 
@@ -118,12 +119,12 @@ MfmSetup makeMfmSetup(const json& p) {
         const double h = geometry.spacing[t];
         const std::string axisName(1, "xyz"[t]);
         if (from < 0.0 || to > lengths[t] * (1.0 + 1e-9) || from >= to) {
-          problem(at + "/to", "the patch [" + std::to_string(from) + ", " + std::to_string(to) + "] m along " +
-                                  axisName + " is not inside the side (0 to " + std::to_string(lengths[t]) + " m)");
+          problem(at + "/to", "the patch [" + core::humanNumber(from) + ", " + core::humanNumber(to) + "] m along " +
+                                  axisName + " is not inside the side (0 to " + core::humanNumber(lengths[t]) + " m)");
         } else if (!onFaces(from, h) || !onFaces(to, h)) {
-          problem(at + "/from", "the patch's ends along " + axisName + " (" + std::to_string(from) + ", " +
-                                    std::to_string(to) + " m) must lie on cell faces, multiples of " +
-                                    std::to_string(h) + " m");
+          problem(at + "/from", "the patch's ends along " + axisName + " (" + core::humanNumber(from) + ", " +
+                                    core::humanNumber(to) + " m) must lie on cell faces, multiples of " +
+                                    core::humanNumber(h) + " m");
         }
         patch.from[static_cast<std::size_t>(q)] = static_cast<int>(std::lround(from / h));
         patch.to[static_cast<std::size_t>(q)] = static_cast<int>(std::lround(to / h));
@@ -152,8 +153,8 @@ MfmSetup makeMfmSetup(const json& p) {
       solids += patch.phases[m + 1].fraction;
     }
     if (solids > packed) {
-      problem(at + "/solids_fractions", "the solids fractions add up to " + std::to_string(solids) +
-                                            ", above the packed solids fraction " + std::to_string(packed));
+      problem(at + "/solids_fractions", "the solids fractions add up to " + core::humanNumber(solids) +
+                                            ", above the packed solids fraction " + core::humanNumber(packed));
     }
     patch.phases[0].fraction = 1.0 - solids;
     patch.phases[0].velocity[axis] = inward * b.at("gas_inflow").get<double>();
@@ -162,9 +163,9 @@ MfmSetup makeMfmSetup(const json& p) {
         const double cfl = std::abs(patch.phases[m].velocity[axis]) * limits.maximum / geometry.spacing[axis];
         if (cfl > limits.courant) {
           problem(at + (m == 0 ? "/gas_inflow" : "/solids_inflow"),
-                  "with the fixed time step " + std::to_string(limits.maximum) + " s the inflow crosses " +
-                      std::to_string(cfl) + " cells per step, above the Courant limit " +
-                      std::to_string(limits.courant) + ": lower dt or let it adapt (dt_min < dt_max)");
+                  "with the fixed time step " + core::humanNumber(limits.maximum) + " s the inflow crosses " +
+                      core::humanNumber(cfl) + " cells per step, above the Courant limit " +
+                      core::humanNumber(limits.courant) + ": lower dt or let it adapt (dt_min < dt_max)");
         }
       }
     }
@@ -201,8 +202,9 @@ MfmSetup makeMfmSetup(const json& p) {
       solids += f.get<double>();
     }
     if (solids > packed + 1e-12) {
-      problem(at + "/solids_fractions", "the solids fractions add up to " + std::to_string(solids) +
-                                            ", above the packed solids fraction eps_s,max = " + std::to_string(packed));
+      problem(at + "/solids_fractions",
+              "the solids fractions add up to " + core::humanNumber(solids) +
+                  ", above the packed solids fraction eps_s,max = " + core::humanNumber(packed));
     }
     region.velocities.push_back(vec3(r.at("gas_velocity")));
     for (std::size_t m = 0; m < M; ++m) region.velocities.push_back(vec3(r.at("solids_velocity")));
@@ -220,7 +222,7 @@ MfmSetup makeMfmSetup(const json& p) {
     PressureTap tap{t.at("name").get<std::string>(), t.at("low").get<double>(), t.at("high").get<double>()};
     if (!(tap.low < tap.high) || tap.low < 0.0 || tap.high > height * (1.0 + 1e-9)) {
       problem("/pressure_taps/" + std::to_string(k) + "/high",
-              "the taps must satisfy 0 <= low < high <= " + std::to_string(height) + " m (the domain's height)");
+              "the taps must satisfy 0 <= low < high <= " + core::humanNumber(height) + " m (the domain's height)");
     }
     s.taps.push_back(std::move(tap));
   }
