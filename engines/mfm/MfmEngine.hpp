@@ -51,6 +51,7 @@ class MfmEngine final : public core::engine::SteppedEngine {
   [[nodiscard]] std::string throughputNote() const override;
 
   [[nodiscard]] const MultiFluidEngine& engine() const { return *engine_; }
+  [[nodiscard]] MultiFluidEngine& mutableEngine() { return *engine_; }
   // The current state as a field frame: cell-centred velocities, the algebraic granular
   // temperature of each solids phase.
   [[nodiscard]] core::data::FieldFrame frame() const;

@@ -44,7 +44,16 @@ void MultiFluidEngine::step(double limit) {
       return;
     }
     ++stats_.retries;
-    if (!control_.failed(dt)) {
+    const bool retry = control_.failed(dt);
+    if (retry && onRetry_) {
+      std::ostringstream msg;
+      msg << "t = " << state_->time << " s: the step of " << dt << " s did not converge ("
+          << (r.failure.empty() ? "the " + r.equation + " residual " + std::to_string(r.residual) : r.failure)
+          << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")); retrying with "
+          << control_.current() << " s";
+      onRetry_(msg.str());
+    }
+    if (!retry) {
       std::ostringstream msg;
       msg << "mfm: at t = " << state_->time << " s no step down to the minimum " << control_.limits().minimum
           << " s converged; at dt = " << dt << " s ";

@@ -2,6 +2,7 @@
 // The multi-fluid engine: gas plus M solids continua on a staggered grid (Chapter 3), advanced by
 // the modified SIMPLE step of engines/fluid with the adaptive time step. It owns the grid, the
 // boundary patches, the state and the model; the mfm stage wires it to the engine driver.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,8 @@ class MultiFluidEngine {
   [[nodiscard]] fluid::TimeStepControl& timeStep() { return control_; }
   [[nodiscard]] const fluid::TimeStepControl& timeStep() const { return control_; }
   void restoreStatistics(const StepStatistics& s) { stats_ = s; }
+  // Called with a line saying why a step is retried at a smaller one (the stage logs it).
+  void onRetry(std::function<void(const std::string&)> log) { onRetry_ = std::move(log); }
 
   // Takes one converged step (retrying at smaller steps as needed) without passing `limit`.
   // Throws grainbridge::Error naming the time, the equation, the cell and the residual (or the
@@ -55,6 +58,7 @@ class MultiFluidEngine {
   fluid::SimpleSettings settings_;
   fluid::TimeStepControl control_;
   StepStatistics stats_;
+  std::function<void(const std::string&)> onRetry_;
 };
 
 }  // namespace grainbridge::mfm

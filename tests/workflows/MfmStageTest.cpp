@@ -36,7 +36,7 @@ TEST(MfmStage, GrainSmokeWritesFramesMeanFieldsSeriesAndAveragedPressureDrop) {
   EXPECT_TRUE(fs::exists(bed / "frames/fields_000000000.h5"));
   EXPECT_TRUE(fs::exists(bed / "mean/fields.xmf"));
   const std::string series = readText(bed / "series.csv");
-  EXPECT_EQ(series.substr(0, series.find('\n')), "time,step,dp_bed,mean_height_grain,solids_volume_grain,dt");
+  EXPECT_EQ(series.substr(0, series.find('\n')), "time,step,dp_bed,mean_height_grain,solids_volume_grain,dt,solver_steps,iterations,residual");
 
   const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
   // The bed's weight per unit area, (1 - eps) (rho_s - rho_g) g H, is about 664 Pa; 0.3 s of a
@@ -48,6 +48,10 @@ TEST(MfmStage, GrainSmokeWritesFramesMeanFieldsSeriesAndAveragedPressureDrop) {
   EXPECT_GT(err, 0.0);
   EXPECT_LT(std::abs(summary.at("solids_volume_change").get<double>()), 1e-6);
   EXPECT_EQ(summary.at("retries").get<int>(), 0);
+  // What the curve is read against: the bed's buoyant weight (664 Pa at eps 0.404 less the 2 %
+  // perturbation's share) and the drag law's U_mf (0.797 m/s for C 0.8, D 2.65).
+  EXPECT_NEAR(summary.at("bed_weight").get<double>(), 664.0, 0.03 * 664.0);
+  EXPECT_NEAR(summary.at("drag_umf").get<double>(), 0.797, 0.001);
 }
 
 TEST(MfmStage, DivergingRunNamesTimeCellAndQuantityAndKeepsTheLastGoodFrame) {

@@ -9,7 +9,9 @@ MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup&
   for (const auto& tap : setup.taps) names_.push_back("dp_" + tap.name);
   for (const auto& s : setup.engine.model.solids) names_.push_back("mean_height_" + s.name);
   for (const auto& s : setup.engine.model.solids) names_.push_back("solids_volume_" + s.name);
-  names_.push_back("dt");
+  // The solver's history: its last step, and its step and iteration counts so far (differences
+  // of two rows give the iterations per step over an interval), the last step's worst residual.
+  for (const char* n : {"dt", "solver_steps", "iterations", "residual"}) names_.push_back(n);
 }
 
 void MfmSeriesColumns::sample(driver::SeriesRow& row) {
@@ -23,7 +25,11 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
   const std::size_t M = setup_.engine.model.solids.size();
   for (std::size_t m = 1; m <= M; ++m) values.push_back(mfm::meanParticleHeight(state, vertical, m));
   for (std::size_t m = 1; m <= M; ++m) values.push_back(mfm::solidsVolume(state, m));
-  values.push_back(engine_.engine().statistics().lastDt);
+  const auto& stats = engine_.engine().statistics();
+  values.push_back(stats.lastDt);
+  values.push_back(static_cast<double>(stats.steps));
+  values.push_back(static_cast<double>(stats.iterations));
+  values.push_back(stats.lastResidual);
   for (double v : values) row.add(v);
   // The window: from average_from on (to round-off in the sampling times).
   if (state.time >= setup_.averageFrom - 1e-9 * setup_.engine.interval) {

@@ -2,9 +2,12 @@
 
 #include <cmath>
 
+#include <spdlog/spdlog.h>
 #include "core/Error.hpp"
+
 #include "core/averaging/BlockAverage.hpp"
 #include "core/io/FieldFrameWriter.hpp"
+#include "engines/closures/MinimumFluidization.hpp"
 #include "engines/mfm/BedMeasures.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
@@ -223,14 +226,33 @@ void MfmStage::run(StageContext& ctx) const {
       [&](const std::filesystem::path& state) {
         return mfm::MfmEngine::restore(setup.engine, state, ctx.key(), ctx.outputDir(), stamp);
       });
+  engine->mutableEngine().onRetry([&ctx](const std::string& why) { spdlog::info("{}: {}", ctx.stage(), why); });
   driver::Phase run;
   run.name = "run";
   run.steps = steps;
   run.output = true;
   loop.addPhase(std::move(run));
+  const auto& solids = setup.engine.model.solids;
   auto columns = std::make_unique<MfmSeriesColumns>(*engine, setup);
   MfmSeriesColumns& observed = *columns;
-  const double initialVolume = mfm::solidsVolume(engine->engine().state(), 1);
+  // The initial inventory (of a fresh start, also when this run resumes): solids volume and the
+  // bed's buoyant weight per unit area of the bottom.
+  double initialVolume = 0.0, initialWeight = 0.0;
+  {
+    mfm::MultiFluidEngine fresh(setup.engine.geometry, setup.engine.patches, setup.engine.model, setup.engine.settings,
+                                setup.engine.limits);
+    mfm::initialise(fresh, setup.initial);
+    const auto& g = setup.engine.geometry;
+    const mfm::VerticalAxis vertical = mfm::verticalAxis(setup.engine.settings.gravity);
+    const double bottom = g.spacing.prod() * g.cellCount() /
+                          (g.spacing[vertical.axis] * g.cells[static_cast<std::size_t>(vertical.axis)]);
+    for (std::size_t m = 1; m <= solids.size(); ++m) {
+      const double v = mfm::solidsVolume(fresh.state(), m);
+      if (m == 1) initialVolume = v;
+      initialWeight +=
+          v * (solids[m - 1].density - setup.engine.model.gas.density) * setup.engine.settings.gravity.norm() / bottom;
+    }
+  }
   loop.addColumns(std::move(columns));
   loop.run(*engine);
 
@@ -242,7 +264,6 @@ void MfmStage::run(StageContext& ctx) const {
     addAverage(summary, "dp_" + setup.taps[k].name, window.at("dp_" + setup.taps[k].name));
     if (k == 0) addAverage(summary, "pressure_drop", window.at("dp_" + setup.taps[k].name));
   }
-  const auto& solids = setup.engine.model.solids;
   for (std::size_t m = 0; m < solids.size(); ++m) {
     addAverage(summary, "mean_height_" + solids[m].name, window.at("mean_height_" + solids[m].name));
     if (m == 0) addAverage(summary, "mean_height", window.at("mean_height_" + solids[m].name));
@@ -252,6 +273,25 @@ void MfmStage::run(StageContext& ctx) const {
   summary["retries"] = stats.retries;
   summary["iterations_per_step"] = stats.steps > 0 ? static_cast<double>(stats.iterations) / stats.steps : 0.0;
   summary["window_samples"] = observed.fieldAverage().frames();
+  // What a fluidization curve is read against: the initial bed's buoyant weight per unit area of
+  // the bottom, (1 - eps) (rho_s - rho_g) g H, and the minimum fluidization velocity the drag law
+  // implies at the first region's void fraction (engines/closures/MinimumFluidization).
+  if (!solids.empty()) {
+    summary["bed_weight"] = initialWeight;
+    for (const auto& region : setup.initial.regions) {
+      double solidsFraction = 0.0;
+      for (double f : region.solidsFractions) solidsFraction += f;
+      if (solidsFraction <= 0.0) continue;
+      const closures::PackedBed bed{1.0 - solidsFraction,
+                                    solids[0].diameter,
+                                    solids[0].density,
+                                    setup.engine.model.gas.density,
+                                    setup.engine.model.gas.viscosity,
+                                    setup.engine.settings.gravity.norm()};
+      summary["drag_umf"] = closures::minimumFluidizationVelocity(setup.engine.model.drag, bed);
+      break;
+    }
+  }
   if (!solids.empty() && initialVolume > 0.0) {
     summary["solids_volume_change"] = mfm::solidsVolume(engine->engine().state(), 1) / initialVolume - 1.0;
   }
