@@ -12,6 +12,7 @@ namespace grainbridge::testing {
 struct GrainBedSpec {
   int nx = 2;
   int ny = 16;
+  int nz = 1;  // > 1: a 3D grid, free-slip walls at z too
   int bedCells = 8;
   double cell = 0.009525;               // [m]
   double voidFraction = 0.404;          // the bed's initial eps_g
@@ -30,11 +31,13 @@ inline constexpr double kOutletPressure = 101325.0, kGravity = 9.81;
 
 inline std::unique_ptr<mfm::MultiFluidEngine> makeGrainBed(const GrainBedSpec& s) {
   core::data::GridGeometry g;
-  g.cells = {s.nx, s.ny, 1};
+  g.cells = {s.nx, s.ny, s.nz};
   g.spacing = Vec3(s.cell, s.cell, s.cell);
   g.origin = Vec3::Zero();
   std::vector<fluid::BoundaryPatch> patches;
-  for (int side : {fluid::XLow, fluid::XHigh}) {
+  std::vector<int> walls{fluid::XLow, fluid::XHigh};
+  if (s.nz > 1) walls.insert(walls.end(), {fluid::ZLow, fluid::ZHigh});
+  for (int side : walls) {
     fluid::BoundaryPatch wall;
     wall.kind = fluid::BoundaryKind::FreeSlipWall;
     wall.side = side;
@@ -72,15 +75,15 @@ inline std::unique_ptr<mfm::MultiFluidEngine> makeGrainBed(const GrainBedSpec& s
   const double solids = 1.0 - s.voidFraction;
   unsigned state = 12345u;
   for (int j = s.ny - 1; j >= 0; --j) {
-    for (int i = 0; i < s.nx; ++i) {
-      const std::size_t c = grid.index(i, j, 0);
+    for (int i = 0; i < s.nx * s.nz; ++i) {
+      const std::size_t c = grid.index(i % s.nx, j, i / s.nx);
       const bool bed = j < s.bedCells;
       state = state * 1664525u + 1013904223u;  // a fixed linear congruential sequence
       const double noise = (static_cast<double>(state >> 8) / static_cast<double>(1u << 24)) * 2.0 - 1.0;
       st.phases[1].fraction[c] = bed ? solids * (1.0 - s.perturbation * (0.5 + 0.5 * noise)) : 0.0;
       st.phases[0].fraction[c] = 1.0 - st.phases[1].fraction[c];
       st.phases[0].velocity[1][c] = s.inletAndOutlet ? s.inflow / (bed ? s.voidFraction : 1.0) : 0.0;
-      const double above = j + 1 < s.ny ? st.pressure(i, j + 1, 0) : kOutletPressure;
+      const double above = j + 1 < s.ny ? st.pressure(i % s.nx, j + 1, i / s.nx) : kOutletPressure;
       const double weight = ((bed ? solids * kGrainDensity : 0.0) + kAirDensity) * kGravity * s.cell;
       st.pressure[c] = above + (j + 1 < s.ny ? weight : 0.5 * weight);
     }

@@ -12,9 +12,9 @@
 using namespace grainbridge;
 using namespace grainbridge::testing;
 
-TEST(PackedBed, PressureDropFollowsTheDragLawBelowMinimumFluidization) {
-  GrainBedSpec spec;
-  spec.inflow = 0.4;  // half of U_mf (about 0.80 m/s for C 0.8, D 2.65)
+namespace {
+
+void expectDragLawPressureDrop(const GrainBedSpec& spec) {
   auto bed = makeGrainBed(spec);
   bed->advanceTo(0.3);
   const auto& st = bed->state();
@@ -32,8 +32,23 @@ TEST(PackedBed, PressureDropFollowsTheDragLawBelowMinimumFluidization) {
     fastestSolids = std::max(fastestSolids, std::abs(st.phases[1].velocity[1][f]));
   }
   const double measured = st.pressure(0, 1, 0) - st.pressure(0, 6, 0);
-  std::printf("packed bed at U = %.2f m/s: dp = %.2f Pa against the drag law's %.2f Pa; %ld steps, %ld retries\n",
-              spec.inflow, measured, expected, bed->statistics().steps, bed->statistics().retries);
+  std::printf("packed bed (%dD) at U = %.2f m/s: dp = %.2f Pa against the drag law's %.2f Pa; %ld steps, %ld retries\n",
+              grid.dimensions(), spec.inflow, measured, expected, bed->statistics().steps, bed->statistics().retries);
   EXPECT_NEAR(measured, expected, 0.02 * expected);
   EXPECT_LT(fastestSolids, 1e-3);  // the grains stay put
+}
+
+}  // namespace
+
+TEST(PackedBed, PressureDropFollowsTheDragLawBelowMinimumFluidization) {
+  GrainBedSpec spec;
+  spec.inflow = 0.4;  // half of U_mf (about 0.80 m/s for C 0.8, D 2.65)
+  expectDragLawPressureDrop(spec);
+}
+
+TEST(PackedBed, SoDoesItOnAThreeDimensionalGrid) {
+  GrainBedSpec spec;
+  spec.nz = 2;
+  spec.inflow = 0.4;
+  expectDragLawPressureDrop(spec);
 }
