@@ -13,7 +13,9 @@ class MfmStage final : public StageType {
  public:
   MfmStage();
   [[nodiscard]] std::string name() const override { return "mfm"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  // 2: the summary gains bed_weight and drag_umf, series.csv the solver's step and iteration
+  //    counts and last residual
+  [[nodiscard]] int implVersion() const override { return 2; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

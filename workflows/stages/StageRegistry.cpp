@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "workflows/stages/CompareStage.hpp"
 #include "workflows/stages/DemStage.hpp"
+#include "workflows/stages/FluidizationStage.hpp"
 #include "workflows/stages/MfmStage.hpp"
 #include "workflows/stages/ExtractStage.hpp"
 #include "workflows/stages/ParticleGasStage.hpp"
@@ -22,6 +23,7 @@ const StageRegistry& StageRegistry::builtin() {
     types.push_back(std::make_unique<ExtractStage>());
     types.push_back(std::make_unique<TabulateStage>());
     types.push_back(std::make_unique<CompareStage>());
+    types.push_back(std::make_unique<FluidizationStage>());
     types.push_back(std::make_unique<ReportStage>());
     return StageRegistry(std::move(types));
   }();

@@ -1,0 +1,163 @@
+#include "workflows/stages/FluidizationStage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "core/Files.hpp"
+#include "core/text/NumberText.hpp"
+#include "engines/mfm/FluidizationCurve.hpp"
+#include "workflows/report/Findings.hpp"
+#include "workflows/report/Plot.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using nlohmann::json;
+using params::ParamSpec;
+
+FluidizationStage::FluidizationStage() {
+  schema_
+      .add(ParamSpec::string("inflow")
+               .defaultValue("boundaries/0/gas_inflow")
+               .doc("the swept parameter of the upstream mfm stages that is the superficial inflow"))
+      .add(ParamSpec::string("pressure_drop")
+               .defaultValue("pressure_drop")
+               .doc("the summary value read as the bed's pressure drop (its _err the error)"))
+      .add(ParamSpec::string("title").defaultValue("Fluidization curves").doc("findings title"));
+}
+
+namespace {
+
+struct Curve {
+  std::vector<mfm::CurvePoint> points;
+  double weight = std::numeric_limits<double>::quiet_NaN();   // bed_weight [Pa]
+  double dragUmf = std::numeric_limits<double>::quiet_NaN();  // drag_umf [m/s]
+};
+
+std::string percent(double measured, double reference) {
+  std::ostringstream out;
+  out.setf(std::ios::showpos);
+  out.precision(2);
+  out << std::fixed << 100.0 * (measured - reference) / reference << " %";
+  return out.str();
+}
+
+}  // namespace
+
+void FluidizationStage::run(StageContext& ctx) const {
+  const json& p = ctx.params();
+  const std::string inflow = p.at("inflow"), dpKey = p.at("pressure_drop");
+  std::map<std::string, Curve> curves;  // by upstream stage, in name order
+  for (const auto& up : ctx.inputs()) {
+    const json sweep = up.manifest.value("sweep_point", json::object());
+    const json summary = up.manifest.value("summary", json::object());
+    if (!sweep.contains(inflow) || !sweep[inflow].is_number()) {
+      throw Error("fluidization: upstream " + up.stage + " (" + up.key.substr(0, 12) + ") is not swept over " + inflow);
+    }
+    if (!summary.contains(dpKey)) {
+      throw Error("fluidization: upstream " + up.stage + " (" + up.key.substr(0, 12) + ") has no summary value " +
+                  dpKey + " (give the mfm stage a pressure tap)");
+    }
+    Curve& c = curves[up.stage];
+    c.points.push_back({sweep[inflow].get<double>(), summary[dpKey].get<double>(), summary.value(dpKey + "_err", 0.0)});
+    if (summary.contains("bed_weight")) c.weight = summary["bed_weight"];
+    if (summary.contains("drag_umf")) c.dragUmf = summary["drag_umf"];
+  }
+  if (curves.empty()) throw Error("fluidization: no upstream mfm runs; give it \"from\"");
+
+  report::Findings findings;
+  findings.title = p.at("title");
+  findings.columns = {"stage",        "plateau",       "bed weight",         "plateau − weight",
+                      "fluidization", "drag law U_mf", "fluidization − U_mf"};
+  report::Figure fig;
+  fig.title = "Pressure drop against inflow";
+  fig.x = {"superficial gas velocity U", "m/s"};
+  fig.y = {"time-averaged pressure drop Δp", "Pa"};
+  json summary = {{"curves", curves.size()}};
+  std::ostringstream headline, csv;
+  csv.precision(std::numeric_limits<double>::max_digits10);
+  csv << "stage,inflow,pressure_drop,pressure_drop_err\n";
+  int variant = 0;
+  double highest = 0.0, heaviest = 0.0;
+  for (auto& [stage, c] : curves) {
+    std::sort(c.points.begin(), c.points.end(), [](const auto& a, const auto& b) { return a.inflow < b.inflow; });
+    report::Series s;
+    s.label = stage;
+    s.model = "mfm";
+    s.style = report::Series::Style::PointsWithErrors;
+    s.variant = variant;
+    for (const auto& pt : c.points) {
+      s.x.push_back(pt.inflow);
+      s.y.push_back(pt.pressureDrop);
+      s.yError.push_back(pt.error);
+      csv << stage << ',' << pt.inflow << ',' << pt.pressureDrop << ',' << pt.error << '\n';
+      highest = std::max(highest, pt.inflow);
+    }
+    fig.series.push_back(std::move(s));
+    if (std::isfinite(c.dragUmf)) {
+      report::Series umf;  // the drag law's U_mf, a vertical line
+      umf.label = stage + " U_mf (drag law)";
+      umf.model = "syamlal_obrien";
+      umf.style = report::Series::Style::Line;
+      umf.variant = variant;
+      umf.x = {c.dragUmf, c.dragUmf};
+      umf.y = {0.0, std::isfinite(c.weight) ? 1.1 * c.weight : 0.0};
+      fig.series.push_back(std::move(umf));
+    }
+    if (std::isfinite(c.weight)) heaviest = std::max(heaviest, c.weight);
+    const auto r = mfm::readFluidizationCurve(c.points);
+    std::vector<std::string> row{stage};
+    if (r.found) {
+      row.push_back(core::humanWithError(r.plateau, r.plateauError) + " Pa");
+      summary["plateau_" + stage] = r.plateau;
+      summary["plateau_" + stage + "_err"] = r.plateauError;
+      summary["fluidization_velocity_" + stage] = r.fluidizationVelocity;
+    } else {
+      row.push_back("no plateau");
+    }
+    row.push_back(std::isfinite(c.weight) ? core::humanNumber(c.weight, 4) + " Pa" : "–");
+    row.push_back(r.found && std::isfinite(c.weight) ? percent(r.plateau, c.weight) : "–");
+    row.push_back(r.found ? core::humanNumber(r.fluidizationVelocity, 3) + " m/s" : "–");
+    row.push_back(std::isfinite(c.dragUmf) ? core::humanNumber(c.dragUmf, 3) + " m/s" : "–");
+    row.push_back(r.found && std::isfinite(c.dragUmf) ? percent(r.fluidizationVelocity, c.dragUmf) : "–");
+    findings.rows.push_back(row);
+    if (r.found) {
+      headline << (headline.tellp() > 0 ? " " : "") << stage << ": plateau " << core::humanNumber(r.plateau, 4)
+               << " Pa";
+      if (std::isfinite(c.weight))
+        headline << " against the bed weight " << core::humanNumber(c.weight, 4) << " Pa ("
+                 << percent(r.plateau, c.weight) << ")";
+      headline << ", fluidized at " << core::humanNumber(r.fluidizationVelocity, 3) << " m/s";
+      if (std::isfinite(c.dragUmf))
+        headline << " against the drag law's " << core::humanNumber(c.dragUmf, 3) << " m/s ("
+                 << percent(r.fluidizationVelocity, c.dragUmf) << ")";
+      headline << ".";
+    } else {
+      headline << (headline.tellp() > 0 ? " " : "") << stage << ": the curve reaches no plateau over the inflows run.";
+    }
+    ++variant;
+  }
+  if (heaviest > 0.0) {
+    report::Series weight;
+    weight.label = "bed weight";
+    weight.model = "experiment";
+    weight.style = report::Series::Style::Line;
+    weight.x = {0.0, highest * 1.05};
+    weight.y = {heaviest, heaviest};
+    fig.series.push_back(std::move(weight));
+  }
+  core::writeFileAtomically(ctx.outputDir() / "fluidization.csv", csv.str());
+  ctx.addArtifact("fluidization.csv", "csv");
+  const auto drawn = report::drawFigure(fig, ctx.outputDir(), "fluidization");
+  ctx.addArtifact(drawn.svg, "svg");
+  ctx.addArtifact(drawn.png, "png");
+  findings.figures.push_back({drawn.svg, drawn.png, fig.title});
+  findings.headline = headline.str();
+  ctx.setFindings(findings);
+  ctx.setSummary(summary);
+}
+
+}  // namespace grainbridge::workflows::stages

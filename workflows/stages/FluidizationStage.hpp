@@ -1,0 +1,29 @@
+#pragma once
+// `fluidization`: the pressure-drop curves of mfm runs swept over their inflow, read as Fig. 4.5
+// is read. Per upstream mfm stage (one per drag-law set, say) it takes each instance's
+// time-averaged pressure drop against its swept inflow, finds the plateau and the fluidization
+// velocity (engines/mfm/FluidizationCurve), and sets them against what the stage recorded the
+// bed to weigh and the drag law's own U_mf: a headline, a table and the figure of the curves.
+// It reads summaries and sweep points only, never another stage's parameters.
+#include "workflows/stages/StageType.hpp"
+
+namespace grainbridge::workflows::stages {
+
+class FluidizationStage final : public StageType {
+ public:
+  FluidizationStage();
+  [[nodiscard]] std::string name() const override { return "fluidization"; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"curves", "–"}}; }
+  [[nodiscard]] std::string summary() const override {
+    return "pressure drop against inflow of mfm runs: plateau against the bed weight, fluidization against U_mf";
+  }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
+  void run(StageContext& ctx) const override;
+
+ private:
+  params::ParamSchema schema_;
+};
+
+}  // namespace grainbridge::workflows::stages
