@@ -8,9 +8,14 @@
 namespace grainbridge::fluid {
 
 double massImbalance(const CellField& fraction, const CellField& oldFraction, const CellField& density,
-                     const std::array<FaceField, 3>& flux, double dt, std::size_t c) {
+                     const CellField& oldDensity, const std::array<FaceField, 3>& flux, double dt, std::size_t c) {
   const StaggeredGrid& grid = fraction.grid();
-  double r = dt > 0.0 ? density[c] * (fraction[c] - oldFraction[c]) * grid.cellVolume() / dt : 0.0;
+  // rho (eps - eps0) when the density has not changed (an incompressible phase): the same value
+  // as rho eps - rho0 eps0, rounded once, so incompressible runs do not depend on the form.
+  const double accumulation = density[c] == oldDensity[c]
+                                  ? density[c] * (fraction[c] - oldFraction[c])
+                                  : density[c] * fraction[c] - oldDensity[c] * oldFraction[c];
+  double r = dt > 0.0 ? accumulation * grid.cellVolume() / dt : 0.0;
   for (int a = 0; a < grid.dimensions(); ++a) {
     const FaceField& F = flux[static_cast<std::size_t>(a)];
     r += F[c] - F[grid.neighbour(c, a, -1)];
@@ -19,12 +24,14 @@ double massImbalance(const CellField& fraction, const CellField& oldFraction, co
 }
 
 StencilSystem assemblePressureCorrection(const FlowState& state, const FlowState& old, const FlowProperties& properties,
-                                         const Boundaries& boundaries, const std::array<FaceField, 3>& gasFlux,
+                                         const FlowProperties& oldProperties, const Boundaries& boundaries,
+                                         const std::array<FaceField, 3>& gasFlux,
                                          const std::array<const FaceField*, 3>& d, double dt) {
   const StaggeredGrid& grid = state.grid();
   const PhaseFields& gas = state.phases[0];
   const CellField& rho = properties.phases[0].density;
   StencilSystem system(grid);
+  bool anyCompressible = false;
   for (int k = 0; k < grid.cells(2); ++k) {
     for (int j = 0; j < grid.cells(1); ++j) {
       for (int i = 0; i < grid.cells(0); ++i) {
@@ -41,12 +48,16 @@ StencilSystem assemblePressureCorrection(const FlowState& state, const FlowState
           system.anb(c, 2 * a) = aLow;
           sum += aHigh + aLow;
         }
-        system.ap(c) = sum;
-        system.b(c) = -massImbalance(gas.fraction, old.phases[0].fraction, rho, gasFlux, dt, c);
+        const double compressible =
+            dt > 0.0 ? gas.fraction[c] * grid.cellVolume() / dt * properties.phases[0].compressibility[c] : 0.0;
+        anyCompressible = anyCompressible || compressible > 0.0;
+        system.ap(c) = sum + compressible;
+        system.b(c) =
+            -massImbalance(gas.fraction, old.phases[0].fraction, rho, oldProperties.phases[0].density, gasFlux, dt, c);
       }
     }
   }
-  if (!boundaries.hasOutlet()) {
+  if (!boundaries.hasOutlet() && !anyCompressible) {
     const std::size_t first = grid.index(0, 0, 0);
     system.ap(first) = 1.0;
     for (int nb = 0; nb < 6; ++nb) system.anb(first, nb) = 0.0;
@@ -56,8 +67,9 @@ StencilSystem assemblePressureCorrection(const FlowState& state, const FlowState
 }
 
 StencilSystem assembleFractionCorrection(const FlowState& state, const FlowState& old, const FlowProperties& properties,
-                                         std::size_t m, const std::array<FaceField, 3>& flux,
-                                         const std::array<const FaceField*, 3>& e, double dt) {
+                                         const FlowProperties& oldProperties, std::size_t m,
+                                         const std::array<FaceField, 3>& flux, const std::array<const FaceField*, 3>& e,
+                                         double dt) {
   const StaggeredGrid& grid = state.grid();
   const PhaseFields& phase = state.phases[m];
   const CellField& rho = properties.phases[m].density;
@@ -85,7 +97,8 @@ StencilSystem assembleFractionCorrection(const FlowState& state, const FlowState
           ap += diffHigh + diffLow + outHigh + outLow;
         }
         system.ap(c) = ap;
-        system.b(c) = -massImbalance(phase.fraction, old.phases[m].fraction, rho, flux, dt, c);
+        system.b(c) =
+            -massImbalance(phase.fraction, old.phases[m].fraction, rho, oldProperties.phases[m].density, flux, dt, c);
       }
     }
   }

@@ -28,19 +28,26 @@
 
 namespace grainbridge::fluid {
 
-// R_m at cell c [kg/s], from the phase's face fluxes (MassFlux.hpp). dt = 0: steady, no transient.
+// R_m at cell c [kg/s], from the phase's face fluxes (MassFlux.hpp), its density now and at the
+// last time level. dt = 0: steady, no transient.
 [[nodiscard]] double massImbalance(const CellField& fraction, const CellField& oldFraction, const CellField& density,
-                                   const std::array<FaceField, 3>& flux, double dt, std::size_t c);
+                                   const CellField& oldDensity, const std::array<FaceField, 3>& flux, double dt,
+                                   std::size_t c);
 
-// The gas pressure correction system; `d` the gas's pressure coefficients per axis.
+// The gas pressure correction system; `d` the gas's pressure coefficients per axis. A
+// compressible gas adds eps_g dV/dt d rho/dP to a_P (its density follows the pressure), and
+// then the pressure level is fixed by the mass in the domain, outlet or not.
 [[nodiscard]] StencilSystem assemblePressureCorrection(const FlowState& state, const FlowState& old,
-                                                       const FlowProperties& properties, const Boundaries& boundaries,
+                                                       const FlowProperties& properties,
+                                                       const FlowProperties& oldProperties,
+                                                       const Boundaries& boundaries,
                                                        const std::array<FaceField, 3>& gasFlux,
                                                        const std::array<const FaceField*, 3>& d, double dt);
 
 // The fraction correction system of solids phase m; `e` its solids-pressure coefficients per axis.
 [[nodiscard]] StencilSystem assembleFractionCorrection(const FlowState& state, const FlowState& old,
-                                                       const FlowProperties& properties, std::size_t m,
+                                                       const FlowProperties& properties,
+                                                       const FlowProperties& oldProperties, std::size_t m,
                                                        const std::array<FaceField, 3>& flux,
                                                        const std::array<const FaceField*, 3>& e, double dt);
 

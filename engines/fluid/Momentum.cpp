@@ -123,7 +123,10 @@ StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, c
       const CellField& lambda = props.bulkViscosity;
       b += (lambda[E] * divergence(grid, phase, E) - lambda[P] * divergence(grid, phase, P)) * grid.faceArea(a);
     }
-    const double a0 = in.dt > 0.0 ? meanOnFace(props.density, a, f) * meanOnFace(old.fraction, a, f) * V / in.dt : 0.0;
+    // (rho eps)^0 of the control volume: the continuity-subtracted transient.
+    const double a0 =
+        in.dt > 0.0 ? meanOnFace(in.oldProperties->phases[m].density, a, f) * meanOnFace(old.fraction, a, f) * V / in.dt
+                    : 0.0;
     system.ap(f) = sumNb + a0;
     b += a0 * old.velocity[static_cast<std::size_t>(a)][f];
     b -= eps * (state.pressure[E] - state.pressure[P]) * grid.faceArea(a);

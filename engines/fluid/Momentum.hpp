@@ -30,6 +30,7 @@ struct MomentumInputs {
   const FlowState* state = nullptr;  // the current iterate
   const FlowState* old = nullptr;    // the last time level
   const FlowProperties* properties = nullptr;
+  const FlowProperties* oldProperties = nullptr;  // at the last time level (its density)
   const Boundaries* boundaries = nullptr;
   Vec3 gravity = Vec3::Zero();   // [m/s^2]
   double dt = 0.0;               // [s]; 0 for a steady solve (no transient term)

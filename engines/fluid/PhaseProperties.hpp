@@ -13,8 +13,14 @@ namespace grainbridge::fluid {
 
 struct PhaseProperties {
   explicit PhaseProperties(const StaggeredGrid& grid)
-      : density(grid), shearViscosity(grid), bulkViscosity(grid), solidsPressure(grid), solidsPressureSlope(grid) {}
+      : density(grid),
+        compressibility(grid),
+        shearViscosity(grid),
+        bulkViscosity(grid),
+        solidsPressure(grid),
+        solidsPressureSlope(grid) {}
   CellField density;              // rho_m [kg/m^3]
+  CellField compressibility;      // d rho_m / d P_g [s^2/m^2]: M / (R T) for an ideal gas, 0 if incompressible
   CellField shearViscosity;       // mu_m of tau_m [Pa s]
   CellField bulkViscosity;        // lambda_m of tau_m [Pa s]
   CellField solidsPressure;       // P_sm, kinetic plus plastic [Pa]; zero for the gas

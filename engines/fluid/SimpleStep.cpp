@@ -26,8 +26,8 @@ FlowProperties propertiesFor(const StaggeredGrid& grid, std::size_t phases) {
 
 void copyPropertiesToGhosts(FlowProperties& p, const Boundaries& boundaries) {
   for (PhaseProperties& phase : p.phases) {
-    for (CellField* f : {&phase.density, &phase.shearViscosity, &phase.bulkViscosity, &phase.solidsPressure,
-                         &phase.solidsPressureSlope}) {
+    for (CellField* f : {&phase.density, &phase.compressibility, &phase.shearViscosity, &phase.bulkViscosity,
+                         &phase.solidsPressure, &phase.solidsPressureSlope}) {
       boundaries.copyToGhosts(*f);
     }
   }
@@ -51,7 +51,8 @@ struct Worst {
 // The continuity residual of a phase: transient, the largest volume-fraction error a cell makes
 // over the step, |R| dt / (rho dV); steady, sum |R| over the total throughput.
 void offerContinuity(Worst& worst, const std::string& name, const CellField& fraction, const CellField& oldFraction,
-                     const CellField& density, const std::array<FaceField, 3>& flux, double dt) {
+                     const CellField& density, const CellField& oldDensity, const std::array<FaceField, 3>& flux,
+                     double dt) {
   const StaggeredGrid& grid = fraction.grid();
   double sum = 0.0, throughput = 0.0, largest = -1.0;
   std::size_t at = 0;
@@ -59,7 +60,7 @@ void offerContinuity(Worst& worst, const std::string& name, const CellField& fra
     for (int j = 0; j < grid.cells(1); ++j) {
       for (int i = 0; i < grid.cells(0); ++i) {
         const std::size_t c = grid.index(i, j, k);
-        const double r = std::abs(massImbalance(fraction, oldFraction, density, flux, dt, c));
+        const double r = std::abs(massImbalance(fraction, oldFraction, density, oldDensity, flux, dt, c));
         const double measure = dt > 0.0 ? r * dt / (density[c] * grid.cellVolume()) : r;
         if (measure > largest) {
           largest = measure;
@@ -111,10 +112,15 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
   const std::size_t M = state.phases.size();
   const int dims = grid.dimensions();
   FlowProperties props = propertiesFor(grid, M);
+  // The last time level's properties (its densities, for the transient terms), evaluated once.
+  FlowProperties oldProps = propertiesFor(grid, M);
+  model.evaluate(old, oldProps);
+  copyPropertiesToGhosts(oldProps, boundaries);
   MomentumInputs in;
   in.state = &state;
   in.old = &old;
   in.properties = &props;
+  in.oldProperties = &oldProps;
   in.boundaries = &boundaries;
   in.gravity = settings.gravity;
   in.dt = dt;
@@ -157,12 +163,13 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
 
     // 3. Gas pressure correction.
     const auto gasFlux = massFluxes(state.phases[0], props.phases[0].density, boundaries);
-    offerContinuity(worst, "gas", state.phases[0].fraction, old.phases[0].fraction, props.phases[0].density, gasFlux,
-                    dt);
+    offerContinuity(worst, "gas", state.phases[0].fraction, old.phases[0].fraction, props.phases[0].density,
+                    oldProps.phases[0].density, gasFlux, dt);
     std::array<const FaceField*, 3> d{nullptr, nullptr, nullptr};
     for (int a = 0; a < dims; ++a)
       d[static_cast<std::size_t>(a)] = &corrections[static_cast<std::size_t>(a)].pressure[0];
-    const StencilSystem pressureSystem = assemblePressureCorrection(state, old, props, boundaries, gasFlux, d, dt);
+    const StencilSystem pressureSystem =
+        assemblePressureCorrection(state, old, props, oldProps, boundaries, gasFlux, d, dt);
     CellField pressureCorrection(grid, 0.0);
     pressureSystem.solve(pressureCorrection);
     for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
@@ -184,12 +191,13 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       boundaries.apply(state);
       PhaseFields& phase = state.phases[m];
       const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries);
-      offerContinuity(worst, phaseName(m), phase.fraction, old.phases[m].fraction, props.phases[m].density, solidsFlux,
-                      dt);
+      offerContinuity(worst, phaseName(m), phase.fraction, old.phases[m].fraction, props.phases[m].density,
+                      oldProps.phases[m].density, solidsFlux, dt);
       std::array<const FaceField*, 3> e{nullptr, nullptr, nullptr};
       for (int a = 0; a < dims; ++a)
         e[static_cast<std::size_t>(a)] = &corrections[static_cast<std::size_t>(a)].solidsPressure[m];
-      const StencilSystem fractionSystem = assembleFractionCorrection(state, old, props, m, solidsFlux, e, dt);
+      const StencilSystem fractionSystem =
+          assembleFractionCorrection(state, old, props, oldProps, m, solidsFlux, e, dt);
       CellField fractionCorrection(grid, 0.0);
       fractionSystem.solve(fractionCorrection);
       // The correction conserves the phase's mass exactly (its fluxes telescope); Eq. 3.68's

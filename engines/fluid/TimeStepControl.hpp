@@ -9,10 +9,10 @@
 namespace grainbridge::fluid {
 
 struct TimeStepLimits {
-  double initial = 1e-4;    // [s]
-  double minimum = 1e-7;    // [s]: below this a non-converging step stops the run
-  double maximum = 1e-3;    // [s] (MFiX DT_MAX of VALIDATION.md's Goldschmidt runs)
-  double courant = 0.5;     // largest |v| dt / dx of any phase on any face
+  double initial = 1e-4;  // [s]
+  double minimum = 1e-7;  // [s]: below this a non-converging step stops the run
+  double maximum = 1e-3;  // [s] (MFiX DT_MAX of VALIDATION.md's Goldschmidt runs)
+  double courant = 0.5;   // largest |v| dt / dx of any phase on any face
   // The iteration band: measured on the grain bed at the solver's default tolerance, a fixed step
   // of 1e-4 s converges in 13.8 iterations, 3e-4 s in 17.1, 6e-4 s in 20 (3.2 times less work
   // per simulated second than 1e-4 s), and 1e-3 s stalls on the packed cells.

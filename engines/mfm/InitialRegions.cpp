@@ -63,7 +63,7 @@ void initialise(MultiFluidEngine& engine, const InitialState& init) {
         for (int b = n - 1; b >= 0; --b) {  // b counts rows from the bottom
           at[static_cast<std::size_t>(v.axis)] = v.up > 0.0 ? b : n - 1 - b;
           const std::size_t c = grid.index(at[0], at[1], at[2]);
-          double density = st.phases[0].fraction[c] * model.gas.density;
+          double density = st.phases[0].fraction[c] * model.gas.densityAt(p);
           for (std::size_t m = 1; m < M; ++m) density += st.phases[m].fraction[c] * model.solids[m - 1].density;
           const double weight = density * g * h;
           p += 0.5 * (weightAbove + weight);

@@ -28,7 +28,9 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
         // The closures want fractions in range; round-off may leave eps_s a hair below zero,
         // which the state keeps (no clipping) and the closures see as zero.
         const double epsG = std::clamp(gas.fraction[c], 1e-12, 1.0);
-        p.phases[0].density[c] = params_.gas.density;
+        const double rhoG = params_.gas.densityAt(state.pressure[c]);
+        p.phases[0].density[c] = rhoG;
+        p.phases[0].compressibility[c] = params_.gas.compressibility();
         p.phases[0].shearViscosity[c] = epsG * params_.gas.viscosity;
         p.phases[0].bulkViscosity[c] = -2.0 / 3.0 * epsG * params_.gas.viscosity;
         for (std::size_t m = 1; m < state.phases.size(); ++m) {
@@ -62,8 +64,7 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
             const double s = 0.5 * (vg[c] + vg[low]) - 0.5 * (vs[c] + vs[low]);
             slip2 += s * s;
           }
-          const closures::DragState ds{
-              epsG, eps, solids.diameter, params_.gas.density, params_.gas.viscosity, std::sqrt(slip2)};
+          const closures::DragState ds{epsG, eps, solids.diameter, rhoG, params_.gas.viscosity, std::sqrt(slip2)};
           p.dragCoefficient[m][c] = params_.drag.evaluate(ds).beta;
         }
       }

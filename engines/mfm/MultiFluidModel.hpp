@@ -23,9 +23,21 @@
 
 namespace grainbridge::mfm {
 
+// Incompressible (rho_g fixed) or an ideal gas, rho_g = P_g M / (R T) at a fixed temperature
+// (the reference's 101325 Pa outlet suggests one, VALIDATION.md; the energy equation is not
+// solved). The pressure is then absolute.
 struct GasPhase {
-  double density = 1.2;       // rho_g [kg/m^3]
+  double density = 1.2;       // rho_g of an incompressible gas [kg/m^3]
   double viscosity = 1.8e-5;  // mu_g [Pa s]
+  bool ideal = false;
+  double molarMass = 0.028964;                         // M [kg/mol] (air)
+  double temperature = 293.15;                         // T [K]
+  static constexpr double kGasConstant = 8.314462618;  // R [J/(mol K)]
+  // rho_g at pressure P, and d rho_g / dP.
+  [[nodiscard]] double densityAt(double pressure) const {
+    return ideal ? pressure * molarMass / (kGasConstant * temperature) : density;
+  }
+  [[nodiscard]] double compressibility() const { return ideal ? molarMass / (kGasConstant * temperature) : 0.0; }
 };
 
 struct SolidsPhase {

@@ -52,7 +52,11 @@ MfmSetup makeMfmSetup(const json& p) {
 
   // The phases and their closures.
   auto& model = s.engine.model;
-  model.gas = {p.at("gas_density").get<double>(), p.at("gas_viscosity").get<double>()};
+  model.gas.density = p.at("gas_density");
+  model.gas.viscosity = p.at("gas_viscosity");
+  model.gas.ideal = p.at("gas_model").get<std::string>() == "ideal";
+  model.gas.molarMass = p.at("gas_molar_mass");
+  model.gas.temperature = p.at("gas_temperature");
   for (const auto& sp : p.at("solids")) {
     model.solids.push_back({sp.at("name").get<std::string>(), sp.at("diameter").get<double>(),
                             sp.at("density").get<double>(), sp.at("restitution").get<double>()});

@@ -113,6 +113,12 @@ MfmStage::MfmStage() {
                .defaultValue("1.2 kg/m3")
                .positive()
                .doc("gas density rho_g (incompressible gas)"))
+      .add(ParamSpec::string("gas_model")
+               .defaultValue("incompressible")
+               .options({"incompressible", "ideal"})
+               .doc("incompressible (gas_density), or an ideal gas rho_g = P M / (R T) with absolute pressures"))
+      .add(ParamSpec::number("gas_molar_mass").defaultValue(0.028964).positive().doc("ideal gas: M in kg/mol (air)"))
+      .add(ParamSpec::number("gas_temperature").defaultValue(293.15).positive().doc("ideal gas: T in K"))
       .add(ParamSpec::quantity("gas_viscosity", Dimension::viscosity())
                .defaultValue("1.8e-5 Pa s")
                .positive()
@@ -249,8 +255,8 @@ void MfmStage::run(StageContext& ctx) const {
     for (std::size_t m = 1; m <= solids.size(); ++m) {
       const double v = mfm::solidsVolume(fresh.state(), m);
       if (m == 1) initialVolume = v;
-      initialWeight +=
-          v * (solids[m - 1].density - setup.engine.model.gas.density) * setup.engine.settings.gravity.norm() / bottom;
+      initialWeight += v * (solids[m - 1].density - setup.engine.model.gas.densityAt(setup.initial.referencePressure)) *
+                       setup.engine.settings.gravity.norm() / bottom;
     }
   }
   loop.addColumns(std::move(columns));
@@ -285,7 +291,7 @@ void MfmStage::run(StageContext& ctx) const {
       const closures::PackedBed bed{1.0 - solidsFraction,
                                     solids[0].diameter,
                                     solids[0].density,
-                                    setup.engine.model.gas.density,
+                                    setup.engine.model.gas.densityAt(setup.initial.referencePressure),
                                     setup.engine.model.gas.viscosity,
                                     setup.engine.settings.gravity.norm()};
       summary["drag_umf"] = closures::minimumFluidizationVelocity(setup.engine.model.drag, bed);
