@@ -62,6 +62,7 @@ void StencilSystem::solve(std::vector<double>& phi) const {
   for (std::size_t c = 0; c < n; ++c) {
     if (active_[c] != 0) row[c] = unknowns++;
   }
+  if (unknowns == 0) return;  // no unknown (a velocity component across a single cell): nothing to solve
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(static_cast<std::size_t>(unknowns) * 7);
   Eigen::VectorXd rhs(unknowns);

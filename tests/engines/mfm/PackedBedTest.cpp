@@ -52,3 +52,12 @@ TEST(PackedBed, SoDoesItOnAThreeDimensionalGrid) {
   spec.inflow = 0.4;
   expectDragLawPressureDrop(spec);
 }
+
+TEST(PackedBed, AndOnASingleColumnOfCells) {
+  // One cell across: the x momentum has no unknown face (both are walls), which the sparse solve
+  // must take in its stride (Eigen's LU divides by zero on an empty matrix).
+  GrainBedSpec spec;
+  spec.nx = 1;
+  spec.inflow = 0.4;
+  expectDragLawPressureDrop(spec);
+}
