@@ -1,11 +1,14 @@
 #include "workflows/stages/MfmSeriesColumns.hpp"
 
+#include <spdlog/spdlog.h>
+
+#include "core/text/NumberText.hpp"
 #include "engines/mfm/BedMeasures.hpp"
 
 namespace grainbridge::workflows::stages {
 
-MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup& setup)
-    : engine_(engine), setup_(setup) {
+MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup& setup, std::string stage)
+    : engine_(engine), setup_(setup), stage_(std::move(stage)) {
   for (const auto& tap : setup.taps) names_.push_back("dp_" + tap.name);
   for (const auto& s : setup.engine.model.solids) names_.push_back("mean_height_" + s.name);
   for (const auto& s : setup.engine.model.solids) names_.push_back("solids_volume_" + s.name);
@@ -31,6 +34,21 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
   values.push_back(static_cast<double>(stats.iterations));
   values.push_back(stats.lastResidual);
   for (double v : values) row.add(v);
+  // The residual history in the log, ten lines over the run: what the solver needed since the
+  // last line (steps, iterations per step, retries) and where it stands.
+  if (state.time >= nextLog_ - 1e-9 * setup_.engine.interval) {
+    const long steps = stats.steps - lastSteps_, iterations = stats.iterations - lastIterations_;
+    spdlog::info(
+        "{}: t = {} s, dt = {} s, {} steps since the last line at {} iterations per step, {} retried, last "
+        "residual {}",
+        stage_, core::humanNumber(state.time), core::humanNumber(stats.lastDt, 3), steps,
+        core::humanNumber(steps > 0 ? static_cast<double>(iterations) / steps : 0.0, 3), stats.retries - lastRetries_,
+        core::humanNumber(stats.lastResidual, 2));
+    lastSteps_ = stats.steps;
+    lastIterations_ = stats.iterations;
+    lastRetries_ = stats.retries;
+    nextLog_ = state.time + 0.1 * setup_.duration;
+  }
   // The window: from average_from on (to round-off in the sampling times).
   if (state.time >= setup_.averageFrom - 1e-9 * setup_.engine.interval) {
     for (std::size_t k = 0; k < names_.size(); ++k) window_[names_[k]].push_back(values[k]);

@@ -16,7 +16,8 @@ namespace grainbridge::workflows::stages {
 
 class MfmSeriesColumns final : public driver::SeriesColumns {
  public:
-  MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup& setup);
+  // `stage` names the log lines: ten times over the run, the solver's state (the residual history).
+  MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup& setup, std::string stage);
   [[nodiscard]] std::vector<std::string> names() const override { return names_; }
   void sample(driver::SeriesRow& row) override;
 
@@ -28,6 +29,9 @@ class MfmSeriesColumns final : public driver::SeriesColumns {
   const mfm::MfmEngine& engine_;
   const MfmSetup& setup_;
   std::vector<std::string> names_;
+  std::string stage_;
+  long lastSteps_ = 0, lastIterations_ = 0, lastRetries_ = 0;
+  double nextLog_ = 0.0;
   std::map<std::string, std::vector<double>> window_;
   core::averaging::FieldTimeAverage fields_;
 };

@@ -239,7 +239,7 @@ void MfmStage::run(StageContext& ctx) const {
   run.output = true;
   loop.addPhase(std::move(run));
   const auto& solids = setup.engine.model.solids;
-  auto columns = std::make_unique<MfmSeriesColumns>(*engine, setup);
+  auto columns = std::make_unique<MfmSeriesColumns>(*engine, setup, ctx.stage());
   MfmSeriesColumns& observed = *columns;
   // The initial inventory (of a fresh start, also when this run resumes): solids volume and the
   // bed's buoyant weight per unit area of the bottom.
