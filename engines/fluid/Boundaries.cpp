@@ -14,12 +14,11 @@ const char* sideName(int side) {
   return side >= 0 && side < 6 ? names[side] : "unknown";
 }
 
-// The two tangential axes of a side's normal axis, in x, y, z order.
+}  // namespace
+
 std::array<int, 2> tangentialAxes(int axis) {
   return axis == 0 ? std::array<int, 2>{1, 2} : axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
 }
-
-}  // namespace
 
 Boundaries::Boundaries(const StaggeredGrid& grid, std::vector<BoundaryPatch> patches, std::size_t phaseCount)
     : grid_(&grid),
@@ -86,6 +85,18 @@ Boundaries::Boundaries(const StaggeredGrid& grid, std::vector<BoundaryPatch> pat
       kind_[ghost.cell] = patch.kind;
     }
   }
+  // Which faces carry unknowns and which let mass through, once: every assembly asks per face.
+  for (int axis = 0; axis < 3; ++axis) {
+    auto& solved = solved_[static_cast<std::size_t>(axis)];
+    auto& open = open_[static_cast<std::size_t>(axis)];
+    solved.assign(grid.paddedCount(), 0);
+    open.assign(grid.paddedCount(), 0);
+    if (!grid.active(axis)) continue;
+    for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+      solved[f] = faceIsSolved(axis, f) ? 1 : 0;
+      open[f] = faceIsOpen(axis, f) ? 1 : 0;
+    }
+  }
 }
 
 bool Boundaries::hasOutlet() const {
@@ -93,7 +104,7 @@ bool Boundaries::hasOutlet() const {
                      [](const BoundaryPatch& p) { return p.kind == BoundaryKind::PressureOutlet; });
 }
 
-bool Boundaries::solvedFace(int axis, std::size_t face) const {
+bool Boundaries::faceIsSolved(int axis, std::size_t face) const {
   const auto at = grid_->coordinates(face);
   for (int b = 0; b < 3; ++b) {
     if (b != axis && (at[static_cast<std::size_t>(b)] < 0 || at[static_cast<std::size_t>(b)] >= grid_->cells(b)))
@@ -106,7 +117,7 @@ bool Boundaries::solvedFace(int axis, std::size_t face) const {
   return false;
 }
 
-bool Boundaries::openFace(int axis, std::size_t face) const {
+bool Boundaries::faceIsOpen(int axis, std::size_t face) const {
   const auto at = grid_->coordinates(face);
   const int i = at[static_cast<std::size_t>(axis)], n = grid_->cells(axis);
   if (i < -1 || i > n - 1) return false;

@@ -27,6 +27,9 @@ enum class BoundaryKind : unsigned char { Interior, NoSlipWall, FreeSlipWall, Ve
 // The six sides of the domain: 2 * axis for the low side, 2 * axis + 1 for the high side.
 enum Side : int { XLow = 0, XHigh = 1, YLow = 2, YHigh = 3, ZLow = 4, ZHigh = 5 };
 
+// The two axes along a side normal to `axis`, in x, y, z order: the order of a patch's ranges.
+[[nodiscard]] std::array<int, 2> tangentialAxes(int axis);
+
 struct PhaseInflow {
   double fraction = 0.0;         // eps_m [-]
   Vec3 velocity = Vec3::Zero();  // v_m [m/s]
@@ -59,9 +62,13 @@ class Boundaries {
 
   // Whether the face (axis, face) carries an unknown of the momentum equation of `axis`: an
   // interior face, or the face of a pressure outlet.
-  [[nodiscard]] bool solvedFace(int axis, std::size_t face) const;
+  [[nodiscard]] bool solvedFace(int axis, std::size_t face) const {
+    return solved_[static_cast<std::size_t>(axis)][face] != 0;
+  }
   // Whether the face (axis, face) lets mass through: not a wall face.
-  [[nodiscard]] bool openFace(int axis, std::size_t face) const;
+  [[nodiscard]] bool openFace(int axis, std::size_t face) const {
+    return open_[static_cast<std::size_t>(axis)][face] != 0;
+  }
 
   // Writes the ghost values of `state`: fractions and pressure in ghost cells, the normal velocity
   // on wall and inlet faces, the tangential ghost velocities, and past an outlet face the
@@ -83,6 +90,9 @@ class Boundaries {
     int direction;      // -1 on the low side, +1 on the high side
   };
   std::vector<Ghost> ghosts_;
+  [[nodiscard]] bool faceIsSolved(int axis, std::size_t face) const;
+  [[nodiscard]] bool faceIsOpen(int axis, std::size_t face) const;
+  std::array<std::vector<char>, 3> solved_, open_;  // per axis and padded face, from the two above
 };
 
 }  // namespace grainbridge::fluid

@@ -12,9 +12,8 @@ double massImbalance(const CellField& fraction, const CellField& oldFraction, co
   const StaggeredGrid& grid = fraction.grid();
   // rho (eps - eps0) when the density has not changed (an incompressible phase): the same value
   // as rho eps - rho0 eps0, rounded once, so incompressible runs do not depend on the form.
-  const double accumulation = density[c] == oldDensity[c]
-                                  ? density[c] * (fraction[c] - oldFraction[c])
-                                  : density[c] * fraction[c] - oldDensity[c] * oldFraction[c];
+  const double accumulation = density[c] == oldDensity[c] ? density[c] * (fraction[c] - oldFraction[c])
+                                                          : density[c] * fraction[c] - oldDensity[c] * oldFraction[c];
   double r = dt > 0.0 ? accumulation * grid.cellVolume() / dt : 0.0;
   for (int a = 0; a < grid.dimensions(); ++a) {
     const FaceField& F = flux[static_cast<std::size_t>(a)];

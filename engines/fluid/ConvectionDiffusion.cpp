@@ -2,24 +2,16 @@
 
 #include <algorithm>
 
-#include "engines/fluid/Superbee.hpp"
+#include "engines/fluid/SuperbeeOnGrid.hpp"
 
 namespace grainbridge::fluid {
 
 namespace {
 
-// Superbee minus upwind value at the high face of cell c along `axis` (velocity u there).
+// Superbee minus upwind value at the high face of cell c along `axis` (velocity u there), c at
+// `position` along it.
 double correctionAt(const StaggeredGrid& grid, const CellField& phi, std::size_t c, int axis, int position, double u) {
-  const std::size_t e = grid.neighbour(c, axis, +1);
-  const int n = grid.cells(axis);
-  if (u >= 0.0) {
-    if (position < 0) return 0.0;  // c is the low ghost: no far-upwind cell
-    const std::size_t w = grid.neighbour(c, axis, -1);
-    return superbeeFaceValue(u, phi[w], phi[c], phi[e], phi[e]) - phi[c];
-  }
-  if (position + 2 > n) return 0.0;  // e is the high ghost: no far-upwind cell
-  const std::size_t ee = grid.neighbour(e, axis, +1);
-  return superbeeFaceValue(u, phi[c], phi[c], phi[e], phi[ee]) - phi[e];
+  return superbeeOnGrid(grid, phi, c, axis, position, u) - upwindOnGrid(grid, phi, c, axis, u);
 }
 
 }  // namespace

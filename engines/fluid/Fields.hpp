@@ -10,9 +10,9 @@
 
 namespace grainbridge::fluid {
 
-class CellField {
+// The storage and indexing both field kinds share: one value per padded grid position.
+class PaddedValues {
  public:
-  explicit CellField(const StaggeredGrid& grid, double value = 0.0) : grid_(&grid), v_(grid.paddedCount(), value) {}
   [[nodiscard]] double& operator()(int i, int j, int k) { return v_[grid_->index(i, j, k)]; }
   [[nodiscard]] double operator()(int i, int j, int k) const { return v_[grid_->index(i, j, k)]; }
   [[nodiscard]] double& operator[](std::size_t c) { return v_[c]; }
@@ -20,30 +20,28 @@ class CellField {
   [[nodiscard]] const std::vector<double>& values() const { return v_; }
   [[nodiscard]] std::vector<double>& values() { return v_; }
   [[nodiscard]] const StaggeredGrid& grid() const { return *grid_; }
+
+ protected:
+  PaddedValues(const StaggeredGrid& grid, double value) : grid_(&grid), v_(grid.paddedCount(), value) {}
 
  private:
   const StaggeredGrid* grid_;
   std::vector<double> v_;
 };
 
-// Values on the faces normal to `axis`; entry (i, j, k) is the high face of cell (i, j, k).
-class FaceField {
+class CellField : public PaddedValues {
  public:
-  FaceField(const StaggeredGrid& grid, int axis, double value = 0.0)
-      : grid_(&grid), axis_(axis), v_(grid.paddedCount(), value) {}
+  explicit CellField(const StaggeredGrid& grid, double value = 0.0) : PaddedValues(grid, value) {}
+};
+
+// Values on the faces normal to `axis`; entry (i, j, k) is the high face of cell (i, j, k).
+class FaceField : public PaddedValues {
+ public:
+  FaceField(const StaggeredGrid& grid, int axis, double value = 0.0) : PaddedValues(grid, value), axis_(axis) {}
   [[nodiscard]] int axis() const { return axis_; }
-  [[nodiscard]] double& operator()(int i, int j, int k) { return v_[grid_->index(i, j, k)]; }
-  [[nodiscard]] double operator()(int i, int j, int k) const { return v_[grid_->index(i, j, k)]; }
-  [[nodiscard]] double& operator[](std::size_t c) { return v_[c]; }
-  [[nodiscard]] double operator[](std::size_t c) const { return v_[c]; }
-  [[nodiscard]] const std::vector<double>& values() const { return v_; }
-  [[nodiscard]] std::vector<double>& values() { return v_; }
-  [[nodiscard]] const StaggeredGrid& grid() const { return *grid_; }
 
  private:
-  const StaggeredGrid* grid_;
   int axis_;
-  std::vector<double> v_;
 };
 
 }  // namespace grainbridge::fluid

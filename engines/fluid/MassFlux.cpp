@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "engines/fluid/Superbee.hpp"
+#include "engines/fluid/SuperbeeOnGrid.hpp"
 
 namespace grainbridge::fluid {
 
@@ -11,16 +11,8 @@ namespace {
 double superbeeFraction(const CellField& fraction, int axis, std::size_t face, double u) {
   const StaggeredGrid& grid = fraction.grid();
   const int position = grid.coordinates(face)[static_cast<std::size_t>(axis)];
-  const int n = grid.cells(axis);
-  if (position >= n) return fraction[face];  // past the last ghost: nothing downstream
-  const std::size_t e = grid.neighbour(face, axis, +1);
-  // Superbee needs the far-upwind cell; at the ghost layer's edge the face takes the upwind value.
-  if (u >= 0.0) {
-    if (position - 1 < -1) return fraction[face];
-    return superbeeFaceValue(u, fraction[grid.neighbour(face, axis, -1)], fraction[face], fraction[e], fraction[e]);
-  }
-  if (position + 2 > n) return fraction[e];
-  return superbeeFaceValue(u, fraction[face], fraction[face], fraction[e], fraction[grid.neighbour(e, axis, +1)]);
+  if (position >= grid.cells(axis)) return fraction[face];  // past the last ghost: nothing downstream
+  return superbeeOnGrid(grid, fraction, face, axis, position, u);
 }
 
 }  // namespace

@@ -2,24 +2,16 @@
 
 #include <algorithm>
 
-#include "engines/fluid/Superbee.hpp"
+#include "engines/fluid/SuperbeeOnGrid.hpp"
 
 namespace grainbridge::fluid {
 
 namespace {
 
 // Superbee minus upwind value of the transported component `u` on the control-volume face
-// between the faces `f` and `f + e_b` (f at `position` along b), for the flux F through it. A
-// value beyond the padded range (a far-upwind face past the ghosts) takes the upwind value.
-double correction(const StaggeredGrid& grid, const FaceField& u, std::size_t f, int b, int position, double F,
-                  int lastPosition) {
-  const std::size_t e = grid.neighbour(f, b, +1);
-  if (F >= 0.0) {
-    if (position - 1 < -1) return 0.0;
-    return superbeeFaceValue(F, u[grid.neighbour(f, b, -1)], u[f], u[e], u[e]) - u[f];
-  }
-  if (position + 2 > lastPosition) return 0.0;
-  return superbeeFaceValue(F, u[f], u[f], u[e], u[grid.neighbour(e, b, +1)]) - u[e];
+// between the faces `f` and `f + e_b` (f at `position` along b), for the flux F through it.
+double correction(const StaggeredGrid& grid, const FaceField& u, std::size_t f, int b, int position, double F) {
+  return superbeeOnGrid(grid, u, f, b, position, F) - upwindOnGrid(grid, u, f, b, F);
 }
 
 // div(v) of a phase at cell c from its face velocities.
@@ -115,9 +107,8 @@ StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, c
         system.anb(f, 2 * d) = aLo;
         sumNb += aHi + aLo;
         const int position = at[static_cast<std::size_t>(d)];
-        const int last = grid.cells(d);
-        b -= Fhi * correction(grid, u, f, d, position, Fhi, last) -
-             Flo * correction(grid, u, grid.neighbour(f, d, -1), d, position - 1, Flo, last);
+        b -= Fhi * correction(grid, u, f, d, position, Fhi) -
+             Flo * correction(grid, u, grid.neighbour(f, d, -1), d, position - 1, Flo);
         b += transposed;
       }
       const CellField& lambda = props.bulkViscosity;

@@ -25,9 +25,7 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
     for (int j = 0; j < grid.cells(1); ++j) {
       for (int i = 0; i < grid.cells(0); ++i) {
         const std::size_t c = grid.index(i, j, k);
-        // The closures want fractions in range; round-off may leave eps_s a hair below zero,
-        // which the state keeps (no clipping) and the closures see as zero.
-        const double epsG = std::clamp(gas.fraction[c], 1e-12, 1.0);
+        const double epsG = std::clamp(gas.fraction[c], 1e-12, 1.0);  // as solidsState sees it
         const double rhoG = params_.gas.densityAt(state.pressure[c]);
         p.phases[0].density[c] = rhoG;
         p.phases[0].compressibility[c] = params_.gas.compressibility();
@@ -36,15 +34,12 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
         for (std::size_t m = 1; m < state.phases.size(); ++m) {
           const SolidsPhase& solids = params_.solids[m - 1];
           const fluid::PhaseFields& phase = state.phases[m];
-          const double eps = std::clamp(phase.fraction[c], 0.0, 1.0 - epsG);
           fluid::PhaseProperties& out = p.phases[m];
           out.density[c] = solids.density;
-
-          const closures::KineticState ks{eps, 0.0, solids.diameter, solids.density, solids.restitution, 0.0};
-          const closures::SyamlalCoefficients kc = params_.kinetic.coefficients(ks);
-          const fluid::StrainRate D = fluid::strainRate(phase, c);
-          const double theta = algebraicGranularTemperature(kc, eps, D.trace(), D.doubleDot());
-          const closures::PlasticRegime::Result pl = params_.plastic.evaluate(epsG, eps, D.deviatorInvariant());
+          const SolidsState now = solidsState(state, m, c);
+          const double eps = now.solidFraction, theta = now.theta;
+          const closures::SyamlalCoefficients& kc = now.coefficients;
+          const closures::PlasticRegime::Result pl = params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant());
           out.solidsPressure[c] = kc.k1 * eps * eps * theta + pl.pressure;  // Eqs. 3.21 + 3.26
           out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + pl.viscosity;
           out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
@@ -72,13 +67,21 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
   }
 }
 
-double MultiFluidModel::granularTemperature(const fluid::FlowState& state, std::size_t m, std::size_t c) const {
+MultiFluidModel::SolidsState MultiFluidModel::solidsState(const fluid::FlowState& state, std::size_t m,
+                                                          std::size_t c) const {
   const SolidsPhase& solids = params_.solids[m - 1];
+  // The closures want fractions in range; round-off may leave eps_s a hair below zero, which the
+  // state keeps (no clipping) and the closures see as zero.
   const double epsG = std::clamp(state.phases[0].fraction[c], 1e-12, 1.0);
   const double eps = std::clamp(state.phases[m].fraction[c], 0.0, 1.0 - epsG);
   const closures::KineticState ks{eps, 0.0, solids.diameter, solids.density, solids.restitution, 0.0};
+  const closures::SyamlalCoefficients kc = params_.kinetic.coefficients(ks);
   const fluid::StrainRate D = fluid::strainRate(state.phases[m], c);
-  return algebraicGranularTemperature(params_.kinetic.coefficients(ks), eps, D.trace(), D.doubleDot());
+  return {epsG, eps, kc, D, algebraicGranularTemperature(kc, eps, D.trace(), D.doubleDot())};
+}
+
+double MultiFluidModel::granularTemperature(const fluid::FlowState& state, std::size_t m, std::size_t c) const {
+  return solidsState(state, m, c).theta;
 }
 
 }  // namespace grainbridge::mfm

@@ -20,6 +20,7 @@
 #include "engines/closures/PlasticRegime.hpp"
 #include "engines/closures/SyamlalAlgebraic.hpp"
 #include "engines/fluid/SimpleStep.hpp"
+#include "engines/fluid/StrainRate.hpp"
 
 namespace grainbridge::mfm {
 
@@ -64,6 +65,17 @@ class MultiFluidModel final : public fluid::FlowModel {
   [[nodiscard]] double granularTemperature(const fluid::FlowState& state, std::size_t m, std::size_t c) const;
 
  private:
+  // What the solids stress of phase m at cell c is built from: the fractions the closures see
+  // (clamped into range, the state itself is not), Eqs. 3.23-3.25's coefficients, the strain
+  // rate and the algebraic temperature.
+  struct SolidsState {
+    double voidFraction, solidFraction;
+    closures::SyamlalCoefficients coefficients;
+    fluid::StrainRate strain;
+    double theta;
+  };
+  [[nodiscard]] SolidsState solidsState(const fluid::FlowState& state, std::size_t m, std::size_t c) const;
+
   MultiFluidParams params_;
 };
 

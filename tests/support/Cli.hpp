@@ -13,6 +13,8 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/TempDir.hpp"
+
 namespace grainbridge::testing {
 
 struct CommandResult {
@@ -38,26 +40,6 @@ inline CommandResult runCommand(const std::string& command) {
 
 inline std::string grainbridgeBinary() { return GRAINBRIDGE_BINARY; }
 inline std::filesystem::path sourceDir() { return GRAINBRIDGE_SOURCE_DIR; }
-
-// A fresh folder under the system temp dir, removed when the object goes out of scope.
-class TempDir {
- public:
-  explicit TempDir(const std::string& prefix = "gb-test") {
-    std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
-    if (::mkdtemp(pattern.data()) == nullptr) std::abort();
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 inline void writeText(const std::filesystem::path& p, const std::string& text) {
   std::filesystem::create_directories(p.parent_path());

@@ -47,6 +47,24 @@ std::string percent(double measured, double reference) {
 
 }  // namespace
 
+void FluidizationStage::checkAgainstUpstream(const json& p, const std::string& ptr,
+                                             const std::vector<UpstreamPlan>& upstream,
+                                             core::json::Diagnostics& d) const {
+  const std::string inflow = p.at("inflow"), dpKey = p.at("pressure_drop");
+  for (const auto& up : upstream) {
+    if (!up.sweepPoint.contains(inflow) || !up.sweepPoint[inflow].is_number()) {
+      d.add(ptr + "/inflow", "upstream stage " + up.stage + " is not swept over \"" + inflow + "\"");
+      return;
+    }
+    const auto& keys = up.output.summaryKeys;
+    if (std::find(keys.begin(), keys.end(), dpKey) == keys.end()) {
+      d.add(ptr + "/pressure_drop",
+            "upstream stage " + up.stage + " records no \"" + dpKey + "\" (give it a pressure tap, pressure_taps)");
+      return;
+    }
+  }
+}
+
 void FluidizationStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
   const std::string inflow = p.at("inflow"), dpKey = p.at("pressure_drop");

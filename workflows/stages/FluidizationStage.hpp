@@ -20,6 +20,11 @@ class FluidizationStage final : public StageType {
   }
   [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
   [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
+  // Before any upstream run: every upstream instance is swept over `inflow` and will record the
+  // summary value `pressure_drop` names.
+  void checkAgainstUpstream(const nlohmann::json& resolved, const std::string& pointer,
+                            const std::vector<UpstreamPlan>& upstream,
+                            core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
 
  private:

@@ -111,9 +111,7 @@ MfmSetup makeMfmSetup(const json& p) {
       problem(at + "/side", "the grid is 2D (cells along z is 1): it has no z sides");
       continue;
     }
-    const std::array<int, 2> tangential = axis == 0   ? std::array<int, 2>{1, 2}
-                                          : axis == 1 ? std::array<int, 2>{0, 2}
-                                                      : std::array<int, 2>{0, 1};
+    const std::array<int, 2> tangential = fluid::tangentialAxes(axis);
     if (b.contains("from") != b.contains("to")) problem(at, "give both from and to, or neither (the whole side)");
     if (b.contains("from") && b.contains("to")) {
       for (int q = 0; q < 2; ++q) {
@@ -188,8 +186,9 @@ MfmSetup makeMfmSetup(const json& p) {
   }
 
   // Initial regions.
-  for (std::size_t k = 0; k < p.at("regions").size(); ++k) {
-    const json& r = p["regions"][k];
+  const json regions = p.value("regions", json::array());
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    const json& r = regions[k];
     const std::string at = "/regions/" + std::to_string(k);
     mfm::InitialRegion region;
     region.lo = vec3(r.at("lo"));
@@ -221,8 +220,9 @@ MfmSetup makeMfmSetup(const json& p) {
   // Pressure taps, heights along gravity.
   const mfm::VerticalAxis vertical = mfm::verticalAxis(settings.gravity);
   const double height = lengths[vertical.axis];
-  for (std::size_t k = 0; k < p.at("pressure_taps").size(); ++k) {
-    const json& t = p["pressure_taps"][k];
+  const json taps = p.value("pressure_taps", json::array());  // optional lists: absent when not given
+  for (std::size_t k = 0; k < taps.size(); ++k) {
+    const json& t = taps[k];
     PressureTap tap{t.at("name").get<std::string>(), t.at("low").get<double>(), t.at("high").get<double>()};
     if (!(tap.low < tap.high) || tap.low < 0.0 || tap.high > height * (1.0 + 1e-9)) {
       problem("/pressure_taps/" + std::to_string(k) + "/high",

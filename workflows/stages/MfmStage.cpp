@@ -310,4 +310,13 @@ void MfmStage::run(StageContext& ctx) const {
   ctx.setSummary(summary);
 }
 
+std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
+  PlannedOutput out;
+  for (const auto& tap : p.value("pressure_taps", json::array())) {
+    if (out.summaryKeys.empty()) out.summaryKeys.push_back("pressure_drop");
+    out.summaryKeys.push_back("dp_" + tap.at("name").get<std::string>());
+  }
+  return out;
+}
+
 }  // namespace grainbridge::workflows::stages

@@ -27,6 +27,9 @@ class MfmStage final : public StageType {
   void checkParams(const nlohmann::json& resolved, const std::string& pointer,
                    core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
+  // The summary's pressure drops (one per tap, the first also as pressure_drop), for the checks
+  // of the stages that read them (fluidization).
+  [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override;
 
  private:
   params::ParamSchema schema_;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace grainbridge::workflows::stages {
 
@@ -16,6 +17,7 @@ struct PlannedOutput {
   std::optional<double> lastFrameTime;         // s; particle frames span [0, lastFrameTime]
   std::optional<double> leesEdwardsShearRate;  // 1/s; 0 when the run is not sheared
   std::optional<std::int64_t> particleCount;   // particles with ids 0..count-1 (none read from a file)
+  std::vector<std::string> summaryKeys;        // summary values it will record that downstream checks read
 };
 
 // One upstream instance as the config loader hands it to a downstream stage's check.

@@ -7,66 +7,33 @@
 #include <cmath>
 #include <limits>
 
-#include <cstdlib>
-#include <filesystem>
 #include "engines/mfm/MfmEngine.hpp"
 #include "tests/engines/mfm/GrainBed.hpp"
+#include "tests/support/TempDir.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::testing;
 
 namespace {
 
-// A fresh folder, removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "gb-mfm-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) std::abort();
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
-mfm::MultiFluidSetup bedSetup(const mfm::MultiFluidEngine& like, double interval) {
-  (void)like;
+// The 4-wide fluidized grain bed as the driver runs it, output every 10 ms.
+mfm::MultiFluidSetup fluidizedSetup() {
   GrainBedSpec spec;
   spec.nx = 4;
   spec.inflow = 1.2;
   spec.perturbation = 0.02;
-  auto bed = makeGrainBed(spec);  // for its patches and settings
-  mfm::MultiFluidSetup setup;
-  setup.geometry = bed->grid().geometry();
-  setup.patches = bed->boundaries().patches();
-  setup.model = bed->model().params();
-  setup.settings = bed->settings();
-  setup.limits = bed->timeStep().limits();
-  setup.interval = interval;
+  mfm::MultiFluidSetup setup = grainBed(spec).setup;
+  setup.interval = 0.01;
   return setup;
 }
 
-// Copies the fixture's initial state into a fresh engine.
-std::function<void(mfm::MultiFluidEngine&)> bedInitial() {
+std::function<void(mfm::MultiFluidEngine&)> fluidizedInitial() {
   return [](mfm::MultiFluidEngine& e) {
     GrainBedSpec spec;
     spec.nx = 4;
     spec.inflow = 1.2;
     spec.perturbation = 0.02;
-    auto bed = makeGrainBed(spec);
-    auto& st = e.state();
-    const auto& from = bed->state();
-    st.pressure.values() = from.pressure.values();
-    for (std::size_t m = 0; m < st.phases.size(); ++m) {
-      st.phases[m].fraction.values() = from.phases[m].fraction.values();
-      for (std::size_t a = 0; a < 3; ++a) st.phases[m].velocity[a].values() = from.phases[m].velocity[a].values();
-    }
+    mfm::initialise(e, grainBed(spec).initial);
   };
 }
 
@@ -84,16 +51,13 @@ void expectSameState(const fluid::FlowState& a, const fluid::FlowState& b) {
 
 TEST(MfmEngine, ResumedRunRepeatsTheUninterruptedOneBitForBit) {
   TempDir dir;
-  GrainBedSpec spec;
-  spec.nx = 4;
-  auto like = makeGrainBed(spec);
-  const auto setup = bedSetup(*like, 0.01);
+  const auto setup = fluidizedSetup();
   const core::io::ArtifactStamp stamp{"test"};
 
-  mfm::MfmEngine straight(setup, bedInitial(), dir.path() / "a", stamp);
+  mfm::MfmEngine straight(setup, fluidizedInitial(), dir.path() / "a", stamp);
   for (int s = 0; s < 20; ++s) straight.advance(false);
 
-  mfm::MfmEngine first(setup, bedInitial(), dir.path() / "b", stamp);
+  mfm::MfmEngine first(setup, fluidizedInitial(), dir.path() / "b", stamp);
   for (int s = 0; s < 10; ++s) first.advance(false);
   first.saveState(dir.path() / "state.h5", "key");
   auto resumed = mfm::MfmEngine::restore(setup, dir.path() / "state.h5", "key", dir.path() / "c", stamp);
