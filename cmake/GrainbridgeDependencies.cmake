@@ -8,6 +8,8 @@ find_package(CLI11 REQUIRED)
 find_package(spdlog REQUIRED)
 find_package(OpenSSL REQUIRED COMPONENTS Crypto)
 find_package(Threads REQUIRED)
+# LAPACK's banded LU (dgbsv) solves the fluid engine's systems on grids narrow in one direction.
+find_package(LAPACK REQUIRED)
 
 # udunits2 (Unidata) parses and converts unit strings ("2.5 mm", "39 m/s", "1.2 g/cm3");
 # Debian ships no CMake config for it.

@@ -10,7 +10,7 @@ packages=(
   g++ cmake make pkg-config git ca-certificates
   libeigen3-dev libhdf5-dev libsqlite3-dev sqlite3 nlohmann-json3-dev
   libopenmpi-dev openmpi-bin libcli11-dev libspdlog-dev libssl-dev
-  libudunits2-dev gnuplot-nox fonts-dejavu-core
+  libudunits2-dev gnuplot-nox fonts-dejavu-core liblapack-dev
   libgtest-dev libgmock-dev
 )
 if [[ "${1:-}" == "--tests" ]]; then

@@ -130,7 +130,30 @@ bool Boundaries::faceIsOpen(int axis, std::size_t face) const {
   return k == BoundaryKind::VelocityInlet || k == BoundaryKind::PressureOutlet;
 }
 
-void Boundaries::apply(FlowState& state) const {
+namespace {
+
+// The ratio r = v_ghost / v_interior that gives a tangential face at a wall the traction
+// -c v_wall, v_wall = (v_ghost + v_interior) / 2, against the viscous flux
+// mu (v_ghost - v_interior) / h the momentum stencil takes through the wall:
+//   r = (mu / h - c / 2) / (mu / h + c / 2),
+// -1 (no slip) as c -> infinity, +1 (free slip) at c = 0. mu and c are the means over the face's
+// two cells inside the domain (its control volume's).
+double partialSlipRatio(const StaggeredGrid& grid, const PhaseProperties& props, std::size_t interiorFace, int axis,
+                        int along) {
+  const std::size_t other = grid.neighbour(interiorFace, along, +1);
+  const bool both = grid.interior(other);
+  const double mu = both ? 0.5 * (props.shearViscosity[interiorFace] + props.shearViscosity[other])
+                         : props.shearViscosity[interiorFace];
+  const double c = both ? 0.5 * (props.wallSlipCoefficient[interiorFace] + props.wallSlipCoefficient[other])
+                        : props.wallSlipCoefficient[interiorFace];
+  const double conductance = mu / grid.spacing(axis);
+  if (!(conductance + 0.5 * c > 0.0)) return 1.0;  // nothing to transmit a traction: free slip
+  return (conductance - 0.5 * c) / (conductance + 0.5 * c);
+}
+
+}  // namespace
+
+void Boundaries::apply(FlowState& state, const FlowProperties* properties) const {
   const std::size_t phaseCount = state.phases.size();
   for (const Ghost& ghost : ghosts_) {
     const std::size_t g = ghost.cell, in = ghost.inner;
@@ -142,7 +165,11 @@ void Boundaries::apply(FlowState& state) const {
     const bool gasLeaves = state.phases[0].velocity[static_cast<std::size_t>(a)][face] * ghost.direction >= 0.0;
     for (std::size_t m = 0; m < phaseCount; ++m) {
       PhaseFields& phase = state.phases[m];
+      phase.granularTemperature[g] = phase.granularTemperature[in];
       FaceField& normal = phase.velocity[static_cast<std::size_t>(a)];
+      const PhaseProperties* slip = properties != nullptr && properties->phases[m].partialSlipWalls
+                                        ? &properties->phases[m]
+                                        : nullptr;
       switch (k) {
         case BoundaryKind::VelocityInlet:
           phase.fraction[g] = patch->phases[m].fraction;
@@ -169,7 +196,11 @@ void Boundaries::apply(FlowState& state) const {
           const std::size_t fin = grid_->neighbour(f, a, -ghost.direction);
           switch (k) {
             case BoundaryKind::NoSlipWall:
-              tangential[f] = -tangential[fin];
+              if (slip != nullptr && grid_->interior(fin)) {
+                tangential[f] = partialSlipRatio(*grid_, *slip, fin, a, b) * tangential[fin];
+              } else {
+                tangential[f] = -tangential[fin];
+              }
               break;
             case BoundaryKind::VelocityInlet:
               tangential[f] = 2.0 * patch->phases[m].velocity[b] - tangential[fin];

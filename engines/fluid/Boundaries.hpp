@@ -11,7 +11,11 @@
 //   pressure outlet the ghost holds the outlet pressure; the normal velocity on the outlet face is
 //                  solved from momentum; a phase leaving takes the interior's fraction, a phase
 //                  flowing back in brings the patch's backflow state's.
-// Sides no patch covers are no-slip walls.
+// Sides no patch covers are no-slip walls. A phase whose properties ask for partial slip
+// (PhaseProperties::partialSlipWalls, Johnson-Jackson) has at no-slip wall patches the Robin
+// ghost value that gives the wall traction -c v_slip (Eq. 5.8). A granular temperature's ghosts
+// repeat the interior (no conduction through the side); the wall's energy flux (Eq. 5.9) is the
+// granular-energy equation's own boundary term.
 #include <array>
 #include <cstddef>
 #include <string>
@@ -19,6 +23,7 @@
 
 #include "core/Types.hpp"
 #include "engines/fluid/FlowState.hpp"
+#include "engines/fluid/PhaseProperties.hpp"
 
 namespace grainbridge::fluid {
 
@@ -72,8 +77,9 @@ class Boundaries {
 
   // Writes the ghost values of `state`: fractions and pressure in ghost cells, the normal velocity
   // on wall and inlet faces, the tangential ghost velocities, and past an outlet face the
-  // zero-gradient continuation of its velocity.
-  void apply(FlowState& state) const;
+  // zero-gradient continuation of its velocity. `properties`, when given, supply the partial-slip
+  // walls' coefficients (their viscosity and wallSlipCoefficient, ghosts copied).
+  void apply(FlowState& state, const FlowProperties* properties = nullptr) const;
   // Copies each ghost cell's interior neighbour into it: a cell property (viscosity, density)
   // that the stencils read on the boundary.
   void copyToGhosts(CellField& field) const;

@@ -2,7 +2,9 @@
 // The state the multiphase solver advances: the gas pressure P_g and, per phase m (0 the gas,
 // 1..M the solids phases of a multi-fluid model or the particle phase of TF-DEM), its volume
 // fraction eps_m and velocity v_m, the velocity's components on the staggered faces
-// (StaggeredGrid.hpp). The fractions sum to one in every cell (eps_g = 1 - sum eps_s): the solver
+// (StaggeredGrid.hpp), and for a solids phase of a kinetic-theory model its granular temperature
+// theta (Eq. 5.6), a cell field the model's own transport equation advances (FlowModel::
+// solveTransport); zero where nothing solves for it. The fractions sum to one in every cell (eps_g = 1 - sum eps_s): the solver
 // keeps them so and never clips one (clipping would break mass conservation).
 #include <array>
 #include <cstddef>
@@ -14,9 +16,12 @@ namespace grainbridge::fluid {
 
 struct PhaseFields {
   explicit PhaseFields(const StaggeredGrid& grid)
-      : fraction(grid), velocity{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)} {}
+      : fraction(grid),
+        velocity{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)},
+        granularTemperature(grid) {}
   CellField fraction;                 // eps_m [-]
   std::array<FaceField, 3> velocity;  // v_m on the faces of each axis [m/s]
+  CellField granularTemperature;      // theta_m [m^2/s^2]; ghosts zero-gradient (Boundaries::apply)
 };
 
 struct FlowState {

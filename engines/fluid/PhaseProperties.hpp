@@ -18,13 +18,20 @@ struct PhaseProperties {
         shearViscosity(grid),
         bulkViscosity(grid),
         solidsPressure(grid),
-        solidsPressureSlope(grid) {}
+        solidsPressureSlope(grid),
+        wallSlipCoefficient(grid) {}
   CellField density;              // rho_m [kg/m^3]
   CellField compressibility;      // d rho_m / d P_g [s^2/m^2]: M / (R T) for an ideal gas, 0 if incompressible
   CellField shearViscosity;       // mu_m of tau_m [Pa s]
   CellField bulkViscosity;        // lambda_m of tau_m [Pa s]
   CellField solidsPressure;       // P_sm, kinetic plus plastic [Pa]; zero for the gas
   CellField solidsPressureSlope;  // dP_sm / d eps_sm [Pa]: what lets the eps_s correction see packing
+  // Partial slip at no-slip wall patches (Johnson-Jackson, Eq. 5.8): when set, the phase's
+  // tangential velocity at such a wall is not zero but takes the traction -c v_slip, with c
+  // the cell's wallSlipCoefficient [kg/(m^2 s)]; Boundaries::apply turns it into the ghost
+  // value. Unset (the gas, or solids without it), the patch's own rule holds.
+  bool partialSlipWalls = false;
+  CellField wallSlipCoefficient;
 };
 
 struct FlowProperties {

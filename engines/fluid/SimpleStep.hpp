@@ -13,6 +13,7 @@
 // retry with a smaller step.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/Types.hpp"
 #include "engines/fluid/Boundaries.hpp"
@@ -21,11 +22,29 @@
 
 namespace grainbridge::fluid {
 
+// The largest normalised residual of a transport equation a model solves itself, with its name
+// ("solids 1 granular energy") and the padded cell where it is largest.
+struct TransportResidual {
+  double value = 0.0;
+  std::string equation;
+  std::size_t cell = 0;
+};
+
 // The model side: fills `properties` (sized for the grid and the phase count) at `state`.
 class FlowModel {
  public:
   virtual ~FlowModel() = default;
   virtual void evaluate(const FlowState& state, FlowProperties& properties) const = 0;
+  // Equations of the model's own beyond mass and momentum (a kinetic-theory model's granular
+  // energy, Eq. 3.34), solved once per outer iteration after the continuity corrections, at the
+  // iterate's velocities and fractions and the `properties` evaluated at its start. Each returns
+  // its residual before the solve, which the step's convergence test reads with the others.
+  virtual std::vector<TransportResidual> solveTransport(FlowState& /*state*/, const FlowState& /*old*/,
+                                                        const FlowProperties& /*properties*/,
+                                                        const FlowProperties& /*oldProperties*/,
+                                                        const Boundaries& /*boundaries*/, double /*dt*/) const {
+    return {};
+  }
 };
 
 struct SimpleSettings {
