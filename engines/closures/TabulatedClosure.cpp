@@ -54,6 +54,16 @@ TabulatedClosure::TabulatedClosure(const TabulatedClosure& other)
       quantity_(other.quantity_),
       outOfRange_(other.outOfRangeCount()) {}
 
+TabulatedClosure& TabulatedClosure::operator=(const TabulatedClosure& other) {
+  if (this == &other) return *this;
+  table_ = other.table_;
+  policy_ = other.policy_;
+  fallback_ = other.fallback_;
+  quantity_ = other.quantity_;
+  outOfRange_.store(other.outOfRangeCount(), std::memory_order_relaxed);
+  return *this;
+}
+
 ClosureValue TabulatedClosure::evaluate(const KineticState& state) const {
   validate(state);
   const auto lookup = table_(state.solidFraction, state.restitution);

@@ -41,6 +41,7 @@ class TabulatedClosure {
   // any) restitution; otherwise grainbridge::Error says what is supported.
   TabulatedClosure(core::ClosureTable table, OutOfRangePolicy policy, KineticModelName fallback = kDefaultKineticModel);
   TabulatedClosure(const TabulatedClosure& other);
+  TabulatedClosure& operator=(const TabulatedClosure& other);
 
   [[nodiscard]] ClosureValue evaluate(const KineticState& state) const;
 

@@ -29,6 +29,7 @@ void initialise(MultiFluidEngine& engine, const InitialState& init) {
           double eps = region != nullptr ? region->solidsFractions[m - 1] : 0.0;
           eps *= 1.0 - init.perturbation * noise;
           st.phases[m].fraction[c] = eps;
+          st.phases[m].granularTemperature[c] = region != nullptr ? region->granularTemperature : 0.0;
           solids += eps;
         }
         st.phases[0].fraction[c] = 1.0 - solids;

@@ -18,6 +18,7 @@ struct InitialRegion {
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // [m]
   std::vector<double> solidsFractions;        // per solids phase
   std::vector<Vec3> velocities;               // per phase, the gas first [m/s]
+  double granularTemperature = 0.0;           // theta of every solids phase [m^2/s^2]
 };
 
 struct InitialState {

@@ -124,6 +124,7 @@ void MfmEngine::saveState(const fs::path& path, const std::string& fingerprint) 
     for (std::size_t m = 0; m < st.phases.size(); ++m) {
       const std::string p = "phase_" + std::to_string(m);
       f.writeDataset(p + "_fraction", st.phases[m].fraction.values());
+      f.writeDataset(p + "_granular_temperature", st.phases[m].granularTemperature.values());
       for (int a = 0; a < 3; ++a)
         f.writeDataset(p + "_velocity_" + std::to_string(a),
                        st.phases[m].velocity[static_cast<std::size_t>(a)].values());
@@ -158,6 +159,7 @@ std::unique_ptr<MfmEngine> MfmEngine::restore(const MultiFluidSetup& setup, cons
   for (std::size_t m = 0; m < st.phases.size(); ++m) {
     const std::string p = "phase_" + std::to_string(m);
     st.phases[m].fraction.values() = f.readDoubles(p + "_fraction", {n});
+    st.phases[m].granularTemperature.values() = f.readDoubles(p + "_granular_temperature", {n});
     for (int a = 0; a < 3; ++a)
       st.phases[m].velocity[static_cast<std::size_t>(a)].values() =
           f.readDoubles(p + "_velocity_" + std::to_string(a), {n});

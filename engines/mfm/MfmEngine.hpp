@@ -27,7 +27,8 @@ struct MultiFluidSetup {
   double interval = 0.01;  // the driver's step [s]
 };
 
-inline constexpr int kCheckpointFormatVersion = 1;
+// 2: each phase's granular temperature too.
+inline constexpr int kCheckpointFormatVersion = 2;
 
 class MfmEngine final : public core::engine::SteppedEngine {
  public:
@@ -52,8 +53,8 @@ class MfmEngine final : public core::engine::SteppedEngine {
 
   [[nodiscard]] const MultiFluidEngine& engine() const { return *engine_; }
   [[nodiscard]] MultiFluidEngine& mutableEngine() { return *engine_; }
-  // The current state as a field frame: cell-centred velocities, the algebraic granular
-  // temperature of each solids phase.
+  // The current state as a field frame: cell-centred velocities, the granular temperature of
+  // each solids phase (the granular-energy equation's, or the algebraic one).
   [[nodiscard]] core::data::FieldFrame frame() const;
 
  private:

@@ -3,7 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Error.hpp"
+#include "engines/closures/EffectiveRestitution.hpp"
+#include "engines/closures/GranularEnergyGasTerms.hpp"
+#include "engines/closures/RadialDistribution.hpp"
+#include "engines/fluid/MassFlux.hpp"
 #include "engines/fluid/StrainRate.hpp"
+#include "engines/mfm/GranularEnergy.hpp"
 
 namespace grainbridge::mfm {
 
@@ -17,15 +23,83 @@ double algebraicGranularTemperature(const closures::SyamlalCoefficients& k, doub
   return root * root;
 }
 
+namespace {
+
+// The fractions the closures see: round-off may leave eps_s a hair below zero, which the state
+// keeps (no clipping) and the closures see as zero.
+double closureVoidFraction(const fluid::FlowState& state, std::size_t c) {
+  return std::clamp(state.phases[0].fraction[c], 1e-12, 1.0);
+}
+double closureSolidFraction(const fluid::FlowState& state, std::size_t m, std::size_t c) {
+  return std::clamp(state.phases[m].fraction[c], 0.0, 1.0 - closureVoidFraction(state, c));
+}
+
+// The cell-centred velocity of a phase.
+Vec3 centredVelocity(const fluid::PhaseFields& phase, std::size_t c) {
+  const fluid::StaggeredGrid& grid = phase.fraction.grid();
+  Vec3 v = Vec3::Zero();
+  for (int a = 0; a < grid.dimensions(); ++a) {
+    const auto& u = phase.velocity[static_cast<std::size_t>(a)];
+    v[a] = 0.5 * (u[c] + u[grid.neighbour(c, a, -1)]);
+  }
+  return v;
+}
+
+// |v_g - v_s| at the cell centre, component by component as the drag has always read it.
+double slipSpeed(const fluid::PhaseFields& gas, const fluid::PhaseFields& solids, std::size_t c) {
+  const fluid::StaggeredGrid& grid = gas.fraction.grid();
+  double slip2 = 0.0;
+  for (int a = 0; a < grid.dimensions(); ++a) {
+    const auto& vg = gas.velocity[static_cast<std::size_t>(a)];
+    const auto& vs = solids.velocity[static_cast<std::size_t>(a)];
+    const std::size_t low = grid.neighbour(c, a, -1);
+    const double s = 0.5 * (vg[c] + vg[low]) - 0.5 * (vs[c] + vs[low]);
+    slip2 += s * s;
+  }
+  return std::sqrt(slip2);
+}
+
+}  // namespace
+
+MultiFluidModel::MultiFluidModel(MultiFluidParams params)
+    : params_(std::move(params)),
+      dissipationScale_(params_.solids.size() + 1, 1.0),
+      wallEffective_(params_.solids.size() + 1) {
+  if (params_.granularEnergy == GranularEnergyForm::Algebraic && (params_.rotation || params_.wall)) {
+    throw Error(
+        "multi-fluid model: the rotation model and Johnson-Jackson walls need the granular-energy equation "
+        "(granular_energy pde)");
+  }
+  if (!params_.rotation) return;
+  for (std::size_t m = 1; m <= params_.solids.size(); ++m) {
+    const SolidsPhase& s = params_.solids[m - 1];
+    const auto particle = closures::EffectiveRestitution{{s.friction, s.tangentialRestitution}}.evaluate(s.restitution);
+    const double elastic = 1.0 - s.restitution * s.restitution;
+    // Eq. 5.20 over Eq. 5.7. Elastic grains (e = 1) have no (1 - e^2) to scale: the closures'
+    // dissipation is zero there and stays zero, the reference's model being about e < 1.
+    dissipationScale_[m] = elastic > 0.0 ? particle.dissipationFactor / elastic : 1.0;
+    wallEffective_[m] = closures::EffectiveRestitution{{s.wallFriction, s.tangentialRestitution}}
+                            .evaluate(s.wallRestitution)
+                            .effectiveRestitution;
+  }
+}
+
+closures::JohnsonJackson MultiFluidModel::wallFor(std::size_t m) const {
+  closures::JohnsonJackson jj{*params_.wall};
+  jj.params.wallRestitution = params_.solids[m - 1].wallRestitution;
+  jj.params.wallEffectiveRestitution = wallEffective_[m];
+  return jj;
+}
+
 void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowProperties& p) const {
   const fluid::StaggeredGrid& grid = state.grid();
   const fluid::PhaseFields& gas = state.phases[0];
-  const auto& plastic = params_.plastic.params;
+  for (std::size_t m = 1; m < state.phases.size(); ++m) p.phases[m].partialSlipWalls = params_.wall.has_value();
   for (int k = 0; k < grid.cells(2); ++k) {
     for (int j = 0; j < grid.cells(1); ++j) {
       for (int i = 0; i < grid.cells(0); ++i) {
         const std::size_t c = grid.index(i, j, k);
-        const double epsG = std::clamp(gas.fraction[c], 1e-12, 1.0);  // as solidsState sees it
+        const double epsG = closureVoidFraction(state, c);
         const double rhoG = params_.gas.densityAt(state.pressure[c]);
         p.phases[0].density[c] = rhoG;
         p.phases[0].compressibility[c] = params_.gas.compressibility();
@@ -33,47 +107,180 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
         p.phases[0].bulkViscosity[c] = -2.0 / 3.0 * epsG * params_.gas.viscosity;
         for (std::size_t m = 1; m < state.phases.size(); ++m) {
           const SolidsPhase& solids = params_.solids[m - 1];
-          const fluid::PhaseFields& phase = state.phases[m];
-          fluid::PhaseProperties& out = p.phases[m];
-          out.density[c] = solids.density;
-          const SolidsState now = solidsState(state, m, c);
-          const double eps = now.solidFraction, theta = now.theta;
-          const closures::SyamlalCoefficients& kc = now.coefficients;
-          const closures::PlasticRegime::Result pl = params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant());
-          out.solidsPressure[c] = kc.k1 * eps * eps * theta + pl.pressure;  // Eqs. 3.21 + 3.26
-          out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + pl.viscosity;
-          out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
-          double slope = 2.0 * kc.k1 * eps * theta;
-          if (pl.plastic) {
-            slope += pl.pStar + eps * plastic.exponent * plastic.coefficient *
-                                    std::pow(plastic.criticalVoidFraction - epsG, plastic.exponent - 1.0);
-          }
-          out.solidsPressureSlope[c] = slope;
-
-          // Drag at the cell-centred slip.
-          double slip2 = 0.0;
-          for (int a = 0; a < grid.dimensions(); ++a) {
-            const auto& vg = gas.velocity[static_cast<std::size_t>(a)];
-            const auto& vs = phase.velocity[static_cast<std::size_t>(a)];
-            const std::size_t low = grid.neighbour(c, a, -1);
-            const double s = 0.5 * (vg[c] + vg[low]) - 0.5 * (vs[c] + vs[low]);
-            slip2 += s * s;
-          }
-          const closures::DragState ds{epsG, eps, solids.diameter, rhoG, params_.gas.viscosity, std::sqrt(slip2)};
+          p.phases[m].density[c] = solids.density;
+          // Drag first: Lun et al.'s viscosity and conductivity read it (Ma-Ahmadi).
+          const double slip = slipSpeed(gas, state.phases[m], c);
+          const closures::DragState ds{epsG, closureSolidFraction(state, m, c), solids.diameter,
+                                       rhoG,  params_.gas.viscosity,            slip};
           p.dragCoefficient[m][c] = params_.drag.evaluate(ds).beta;
+          if (params_.granularEnergy == GranularEnergyForm::Algebraic) {
+            evaluateAlgebraic(state, p, m, c, epsG);
+          } else {
+            evaluatePde(state, p, m, c, epsG);
+          }
         }
       }
     }
   }
 }
 
+void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m,
+                                        std::size_t c, double epsG) const {
+  const auto& plastic = params_.plastic.params;
+  fluid::PhaseProperties& out = p.phases[m];
+  const SolidsState now = solidsState(state, m, c);
+  const double eps = now.solidFraction, theta = now.theta;
+  const closures::SyamlalCoefficients& kc = now.coefficients;
+  const closures::PlasticRegime::Result pl = params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant());
+  out.solidsPressure[c] = kc.k1 * eps * eps * theta + pl.pressure;  // Eqs. 3.21 + 3.26
+  out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + pl.viscosity;
+  out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
+  double slope = 2.0 * kc.k1 * eps * theta;
+  if (pl.plastic) {
+    slope += pl.pStar +
+             eps * plastic.exponent * plastic.coefficient * std::pow(plastic.criticalVoidFraction - epsG, plastic.exponent - 1.0);
+  }
+  out.solidsPressureSlope[c] = slope;
+}
+
+MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState& state,
+                                                          const fluid::FlowProperties& properties, std::size_t m,
+                                                          std::size_t c) const {
+  const SolidsPhase& solids = params_.solids[m - 1];
+  KineticCell k;
+  k.state.solidFraction = closureSolidFraction(state, m, c);
+  k.state.granularTemperature = std::max(state.phases[m].granularTemperature[c], 0.0);
+  k.state.diameter = solids.diameter;
+  k.state.density = solids.density;
+  k.state.restitution = solids.restitution;
+  k.state.gasDragCoefficient = params_.granularGasCoupling ? properties.dragCoefficient[m][c] : 0.0;
+  k.transport = params_.closure.evaluate(k.state);
+  k.transport.dissipationRate *= dissipationScale_[m];  // Eq. 5.20 with the rotation model
+  k.g0 = closures::carnahanStarlingG0(k.state.solidFraction);
+  return k;
+}
+
+void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m,
+                                  std::size_t c, double epsG) const {
+  const auto& plastic = params_.plastic.params;
+  fluid::PhaseProperties& out = p.phases[m];
+  const KineticCell kin = kineticCell(state, p, m, c);
+  const double eps = kin.state.solidFraction;
+  const closures::PlasticRegime::Result pl =
+      params_.plastic.evaluate(epsG, eps, fluid::strainRate(state.phases[m], c).deviatorInvariant());
+  out.solidsPressure[c] = kin.transport.pressure + pl.pressure;  // kinetic + Eq. 3.26
+  out.shearViscosity[c] = kin.transport.shearViscosity + pl.viscosity;
+  out.bulkViscosity[c] = kin.transport.secondViscosity();  // lambda_s; the plastic regime has none
+  // The kinetic slope at the cell's theta, by a one-sided difference of the kinetic-theory
+  // model's pressure (never the table's: the slope only steers the fraction correction, and the
+  // table's out-of-range count must count the solution's lookups alone).
+  closures::KineticState shifted = kin.state;
+  const double step = 1e-7;
+  shifted.solidFraction = std::min(eps + step, 1.0 - 1e-12);
+  const double p0 = closures::evaluate(params_.closure.kineticModel(), kin.state).pressure;
+  const double p1 = closures::evaluate(params_.closure.kineticModel(), shifted).pressure;
+  double slope = std::max((p1 - p0) / (shifted.solidFraction - eps), 0.0);
+  if (pl.plastic) {
+    slope += pl.pStar +
+             eps * plastic.exponent * plastic.coefficient * std::pow(plastic.criticalVoidFraction - epsG, plastic.exponent - 1.0);
+  }
+  out.solidsPressureSlope[c] = slope;
+  if (params_.wall) {
+    const closures::JohnsonJackson::State ws{eps, kin.state.density, kin.g0, kin.state.granularTemperature, 0.0};
+    out.wallSlipCoefficient[c] = wallFor(m).evaluate(ws).slipCoefficient;
+  }
+}
+
+std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::FlowState& state,
+                                                                      const fluid::FlowState& old,
+                                                                      const fluid::FlowProperties& props,
+                                                                      const fluid::FlowProperties& oldProps,
+                                                                      const fluid::Boundaries& boundaries,
+                                                                      double dt) const {
+  std::vector<fluid::TransportResidual> residuals;
+  if (params_.granularEnergy != GranularEnergyForm::Pde) return residuals;
+  const fluid::StaggeredGrid& grid = state.grid();
+  const int dims = grid.dimensions();
+  const closures::GranularEnergyGasTerms gasTerms;
+  for (std::size_t m = 1; m < state.phases.size(); ++m) {
+    fluid::PhaseFields& phase = state.phases[m];
+    const SolidsPhase& solids = params_.solids[m - 1];
+    GranularEnergyTerms terms(grid);
+    double scale = 1e-6;  // the residual's theta scale: the phase's largest, or this floor [m^2/s^2]
+    for (int k = 0; k < grid.cells(2); ++k) {
+      for (int j = 0; j < grid.cells(1); ++j) {
+        for (int i = 0; i < grid.cells(0); ++i) {
+          const std::size_t c = grid.index(i, j, k);
+          const KineticCell kin = kineticCell(state, props, m, c);
+          const closures::KineticTransport& t = kin.transport;
+          const double theta = kin.state.granularTemperature;
+          const double eps = kin.state.solidFraction;
+          scale = std::max(scale, theta);
+          terms.conductivity[c] = t.conductivity;
+          // S:grad v = -P tr(D) + tau:D, tau:D = 2 mu (D:D - tr(D)^2 / 3) + xi tr(D)^2 >= 0 with
+          // the kinetic theory's mu and xi (the plastic stress does not heat the grains, as in
+          // MFiX's source_granular_energy).
+          const fluid::StrainRate D = fluid::strainRate(phase, c);
+          const double trD = D.trace();
+          double source =
+              2.0 * t.shearViscosity * std::max(D.doubleDot() - trD * trD / 3.0, 0.0) + t.bulkViscosity * trD * trD;
+          double sink = theta > 0.0 ? t.dissipationRate / theta : 0.0;  // J_coll = (J / theta*) theta
+          if (trD < 0.0) {
+            source -= t.pressure * trD;  // compression heats
+          } else if (theta > 0.0) {
+            sink += t.pressure / theta * trD;  // expansion cools, in proportion to theta
+          }
+          // The gas: slip production and viscous damping (GranularEnergyGasTerms.hpp).
+          const double slip = slipSpeed(state.phases[0], phase, c);
+          const auto gas = gasTerms.evaluate({eps, solids.diameter, solids.density, kin.g0, params_.gas.viscosity,
+                                              slip, props.dragCoefficient[m][c]});
+          if (params_.granularGasCoupling) {
+            source += gas.slipProduction(std::max(theta, params_.temperatureFloor));
+            sink += gas.viscousDissipationCoefficient;
+          }
+          terms.source[c] = source;
+          terms.sink[c] = sink;
+          if (params_.wall) {
+            // The wall's slip speed from the cell-centred solids velocity along the wall, reduced
+            // as the Robin ghost reduces it: v_wall = mu/h / (mu/h + c/2) v_cell.
+            const Vec3 v = centredVelocity(phase, c);
+            for (int a = 0; a < dims; ++a) {
+              Vec3 along = v;
+              along[a] = 0.0;
+              const double conductance = props.phases[m].shearViscosity[c] / grid.spacing(a);
+              const double coefficient = props.phases[m].wallSlipCoefficient[c];
+              const double reduction =
+                  conductance + 0.5 * coefficient > 0.0 ? conductance / (conductance + 0.5 * coefficient) : 1.0;
+              const auto wall = wallFor(m).evaluate({eps, solids.density, kin.g0, theta, reduction * along.norm()});
+              terms.wallProduction[static_cast<std::size_t>(a)][c] = wall.slipProduction;
+              terms.wallSink[static_cast<std::size_t>(a)][c] = theta > 0.0 ? wall.wallDissipation / theta : 0.0;
+            }
+          }
+        }
+      }
+    }
+    GranularEnergyInputs in;
+    in.state = &state;
+    in.old = &old;
+    in.oldDensity = &oldProps.phases[m].density;
+    in.boundaries = &boundaries;
+    in.dt = dt;
+    const auto flux = fluid::massFluxes(phase, props.phases[m].density, boundaries);
+    const fluid::StencilSystem system = assembleGranularEnergy(in, m, flux, terms);
+    const auto r = system.normalisedResidual(phase.granularTemperature.values(), scale);
+    residuals.push_back({r.value, "solids " + std::to_string(m) + " granular energy", r.worst});
+    system.solve(phase.granularTemperature);
+    // The solution of this M-matrix system is non-negative; round-off alone can leave -0.
+    for (double& theta : phase.granularTemperature.values()) theta = std::max(theta, 0.0);
+  }
+  return residuals;
+}
+
 MultiFluidModel::SolidsState MultiFluidModel::solidsState(const fluid::FlowState& state, std::size_t m,
                                                           std::size_t c) const {
   const SolidsPhase& solids = params_.solids[m - 1];
-  // The closures want fractions in range; round-off may leave eps_s a hair below zero, which the
-  // state keeps (no clipping) and the closures see as zero.
-  const double epsG = std::clamp(state.phases[0].fraction[c], 1e-12, 1.0);
-  const double eps = std::clamp(state.phases[m].fraction[c], 0.0, 1.0 - epsG);
+  const double epsG = closureVoidFraction(state, c);
+  const double eps = closureSolidFraction(state, m, c);
   const closures::KineticState ks{eps, 0.0, solids.diameter, solids.density, solids.restitution, 0.0};
   const closures::SyamlalCoefficients kc = params_.kinetic.coefficients(ks);
   const fluid::StrainRate D = fluid::strainRate(state.phases[m], c);
@@ -81,6 +288,7 @@ MultiFluidModel::SolidsState MultiFluidModel::solidsState(const fluid::FlowState
 }
 
 double MultiFluidModel::granularTemperature(const fluid::FlowState& state, std::size_t m, std::size_t c) const {
+  if (params_.granularEnergy == GranularEnergyForm::Pde) return state.phases[m].granularTemperature[c];
   return solidsState(state, m, c).theta;
 }
 

@@ -1,22 +1,39 @@
 #pragma once
-// The multi-fluid model of Chapter 3 as the SIMPLE solver of engines/fluid sees it: per cell,
-// the gas's density and viscosity, each solids phase's stresses and the gas-solids drag.
-//   gas      incompressible, tau_g = 2 eps_g mu_g D_g - 2/3 eps_g mu_g tr(D_g) I (Eq. 3.20 with
-//            Stokes's hypothesis lambda_g = -2/3 mu_g);
-//   solids   the viscous regime of kinetic theory in its algebraic form (Eqs. 3.21-3.25 with the
-//            granular temperature of MFiX's gt_algebraic: production S:grad v equals the
-//            dissipation K4 eps^2 theta^1.5, convection and conduction neglected), plus, below
-//            the critical void fraction eps_g*, the plastic regime of Eqs. 3.26-3.27 (Schaeffer's
-//            viscosity). The two add, as MFiX's Schaeffer option adds them, so the stress has no
-//            jump at eps_g*, where P* vanishes.
+// The multi-fluid model of Chapters 3 and 5 as the SIMPLE solver of engines/fluid sees it: per
+// cell, the gas's density and viscosity, each solids phase's stresses and the gas-solids drag,
+// and the granular-energy equation it solves itself.
+//   gas      incompressible or ideal, tau_g = 2 eps_g mu_g D_g - 2/3 eps_g mu_g tr(D_g) I (Eq. 3.20
+//            with Stokes's hypothesis lambda_g = -2/3 mu_g);
+//   solids   the viscous regime of kinetic theory in one of two forms:
+//              pde        (the default, as Chapter 5 ran) theta from the granular-energy equation
+//                         (Eq. 3.34, GranularEnergy.hpp) and every coefficient from the closure
+//                         model (`ktgf`: a kinetic theory of engines/closures, lun1984 the
+//                         default; `table`: DEM closure tables with the kinetic theory for what
+//                         they lack);
+//              algebraic  Eqs. 3.21-3.25 with MFiX's gt_algebraic theta (production S:grad v
+//                         equals the dissipation K4 eps^2 theta^1.5), the grain bed of Chapter 4;
+//            plus, below the critical void fraction eps_g*, the plastic regime of Eqs. 3.26-3.27
+//            (Schaeffer's viscosity). The two add, as MFiX's Schaeffer option adds them, so the
+//            stress has no jump at eps_g*, where P* vanishes.
 //   drag     the gas-solids law by name (Syamlal-O'Brien, Eqs. 3.10-3.16, by default) at the
 //            cell-centred slip.
+//   walls    optionally Johnson-Jackson partial slip and wall energy flux for the solids at the
+//            no-slip wall patches (Eqs. 5.8-5.10); without it the solids stick and no energy
+//            crosses a wall.
+//   rotation optionally the particle-rotation model (Eqs. 5.11-5.21): e_eff of each phase's
+//            friction replaces e in the collisional dissipation (Eq. 5.20) and e_w,eff in the wall
+//            dissipation (Eq. 5.21), as (1 + e)(1 - e_eff), and nowhere else: pressure,
+//            viscosities and conductivity keep e. A table's dissipation is looked up at e (the
+//            frictionless DEM's restitution) and scaled by (1 + e)(1 - e_eff) / (1 - e^2).
 // The solids-pressure slope dP_s/deps_s the fraction correction needs is the plastic one,
-// P* + eps_s n A (eps_g* - eps_g)^(n-1), plus the kinetic 2 K1 eps_s theta (theta held).
+// P* + eps_s n A (eps_g* - eps_g)^(n-1), plus the kinetic theory's at the cell's theta.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "engines/closures/ClosureModel.hpp"
 #include "engines/closures/GasSolidsDrag.hpp"
+#include "engines/closures/JohnsonJackson.hpp"
 #include "engines/closures/PlasticRegime.hpp"
 #include "engines/closures/SyamlalAlgebraic.hpp"
 #include "engines/fluid/SimpleStep.hpp"
@@ -43,28 +60,74 @@ struct GasPhase {
 
 struct SolidsPhase {
   std::string name;
-  double diameter = 0.0;     // d_p [m]
-  double density = 0.0;      // rho_s [kg/m^3]
-  double restitution = 0.9;  // e_mm [-]
+  double diameter = 0.0;         // d_p [m]
+  double density = 0.0;          // rho_s [kg/m^3]
+  double restitution = 0.9;      // e_mm [-]
+  double wallRestitution = 0.9;  // e_w of Eq. 5.9 [-]
+  // The rotation model's surface parameters (Table 5.1): Coulomb friction between particles and
+  // with the wall, and the tangential restitution beta0 of Eq. 5.17 (both contacts).
+  double friction = 0.0;
+  double wallFriction = 0.0;
+  double tangentialRestitution = 0.33;
 };
+
+enum class GranularEnergyForm { Pde, Algebraic };
 
 struct MultiFluidParams {
   GasPhase gas;
   std::vector<SolidsPhase> solids;
   closures::GasSolidsDrag drag = closures::GasSolidsDrag::byName("syamlal_obrien");
-  closures::SyamlalAlgebraic kinetic;
+  GranularEnergyForm granularEnergy = GranularEnergyForm::Pde;
+  closures::ClosureModel closure = closures::ClosureModel::kineticTheory();  // the pde form's
+  closures::SyamlalAlgebraic kinetic;                                        // the algebraic form's
   closures::PlasticRegime plastic;
+  // Johnson-Jackson walls for the solids (pde form): phi' and eps_s,max; e_w is per phase.
+  std::optional<closures::JohnsonJackson::Params> wall;
+  bool rotation = false;  // the particle-rotation model (pde form)
+  // The gas's terms in the granular energy (gamma_slip, J_vis) and in the transport coefficients
+  // (Ma-Ahmadi); off only to compare with a granular flow without gas (DEM closures, Haff's law).
+  bool granularGasCoupling = true;
+  // The least theta the gas's slip production gamma_slip = a / sqrt(theta) is evaluated at: it
+  // diverges at theta = 0, where a packed bed sits [m^2/s^2].
+  double temperatureFloor = 1e-10;
 };
 
 class MultiFluidModel final : public fluid::FlowModel {
  public:
-  explicit MultiFluidModel(MultiFluidParams params) : params_(std::move(params)) {}
+  // Throws grainbridge::Error naming a combination the model cannot run (the rotation model or
+  // Johnson-Jackson walls with the algebraic form).
+  explicit MultiFluidModel(MultiFluidParams params);
   [[nodiscard]] const MultiFluidParams& params() const { return params_; }
   void evaluate(const fluid::FlowState& state, fluid::FlowProperties& properties) const override;
-  // The algebraic granular temperature of solids phase m (1..M) at interior cell c [m^2/s^2].
+  // The pde form's granular energy of every solids phase (Eq. 3.34).
+  std::vector<fluid::TransportResidual> solveTransport(fluid::FlowState& state, const fluid::FlowState& old,
+                                                       const fluid::FlowProperties& properties,
+                                                       const fluid::FlowProperties& oldProperties,
+                                                       const fluid::Boundaries& boundaries, double dt) const override;
+  // The granular temperature of solids phase m (1..M) at interior cell c [m^2/s^2]: the state's
+  // (pde) or the algebraic one.
   [[nodiscard]] double granularTemperature(const fluid::FlowState& state, std::size_t m, std::size_t c) const;
+  // (1 + e)(1 - e_eff) / (1 - e^2) of phase m (1..M): the rotation model's factor on the
+  // collisional dissipation (1 without it).
+  [[nodiscard]] double dissipationScale(std::size_t m) const { return dissipationScale_[m]; }
+  // e_w,eff of phase m with the rotation model.
+  [[nodiscard]] std::optional<double> wallEffectiveRestitution(std::size_t m) const { return wallEffective_[m]; }
 
  private:
+  // Kinetic theory (pde form) of phase m at cell c: the state the closures see and their result.
+  struct KineticCell {
+    closures::KineticState state;
+    closures::KineticTransport transport;
+    double g0 = 1.0;
+  };
+  [[nodiscard]] KineticCell kineticCell(const fluid::FlowState& state, const fluid::FlowProperties& properties,
+                                        std::size_t m, std::size_t c) const;
+  [[nodiscard]] closures::JohnsonJackson wallFor(std::size_t m) const;
+  void evaluateAlgebraic(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c,
+                         double epsG) const;
+  void evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c,
+                   double epsG) const;
+
   // What the solids stress of phase m at cell c is built from: the fractions the closures see
   // (clamped into range, the state itself is not), Eqs. 3.23-3.25's coefficients, the strain
   // rate and the algebraic temperature.
@@ -77,6 +140,8 @@ class MultiFluidModel final : public fluid::FlowModel {
   [[nodiscard]] SolidsState solidsState(const fluid::FlowState& state, std::size_t m, std::size_t c) const;
 
   MultiFluidParams params_;
+  std::vector<double> dissipationScale_;              // per phase, [0] unused
+  std::vector<std::optional<double>> wallEffective_;  // per phase, [0] unused
 };
 
 // The algebraic granular temperature of MFiX's gt_algebraic: the positive root x = sqrt(theta) of

@@ -65,6 +65,9 @@ inline GrainBed grainBed(const GrainBedSpec& s) {
   model.gas.density = kAirDensity;
   model.gas.viscosity = kAirViscosity;
   model.solids = {mfm::SolidsPhase{"grain", kGrainDiameter, kGrainDensity, 0.9}};
+  // Chapter 4's model: Eqs. 3.21-3.25 with the algebraic granular temperature.
+  model.granularEnergy = mfm::GranularEnergyForm::Algebraic;
+  model.closure = closures::ClosureModel::kineticTheory(closures::KineticModelName::SyamlalAlgebraicPrinted);
   model.drag = closures::GasSolidsDrag::byName("syamlal_obrien");
   std::get<closures::SyamlalOBrien>(model.drag.law).params = {s.c, s.d};
   model.plastic.params.criticalVoidFraction = s.criticalVoidFraction;

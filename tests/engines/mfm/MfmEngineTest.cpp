@@ -42,6 +42,7 @@ void expectSameState(const fluid::FlowState& a, const fluid::FlowState& b) {
   EXPECT_EQ(a.pressure.values(), b.pressure.values());
   for (std::size_t m = 0; m < a.phases.size(); ++m) {
     EXPECT_EQ(a.phases[m].fraction.values(), b.phases[m].fraction.values()) << "phase " << m;
+    EXPECT_EQ(a.phases[m].granularTemperature.values(), b.phases[m].granularTemperature.values()) << "phase " << m;
     for (std::size_t ax = 0; ax < 3; ++ax)
       EXPECT_EQ(a.phases[m].velocity[ax].values(), b.phases[m].velocity[ax].values()) << "phase " << m;
   }

@@ -5,5 +5,6 @@ grainbridge_add_test(test_mfm
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/FluidizedBedTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/MfmEngineTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/FluidizationCurveTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/mfm/GranularEnergyTest.cpp
   LIBS engines_mfm
   LABELS "physics;mfm")
