@@ -84,3 +84,30 @@ TEST(MfmStage, DivergingRunNamesTimeCellAndQuantityAndKeepsTheLastGoodFrame) {
   }
   EXPECT_TRUE(kept);
 }
+
+TEST(MfmStage, GoldschmidtSmokeRunsKineticTheoryWithWallsWithAndWithoutRotation) {
+  // configs/goldschmidt-mono-smoke.json: the Chapter 5 bed (Lun et al. with the granular-energy
+  // equation, Johnson-Jackson walls) for 0.3 s, without and with the rotation model.
+  TempDir work;
+  fs::copy_file(sourceDir() / "configs/goldschmidt-mono-smoke.json", work.path() / "smoke.json");
+  const auto r = runGrainbridge(work.path(), "run smoke.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  int beds = 0;
+  for (const auto& e : fs::directory_iterator(work.path() / "results/goldschmidt-mono-smoke/bed")) {
+    const fs::path bed = e.path();
+    ++beds;
+    const json manifest = json::parse(readText(bed / "manifest.json"));
+    const json& summary = manifest.at("summary");
+    // The 15 cm bed at solid fraction 0.583 starts with its mean particle height at 7.5 cm and
+    // expands once the gas at 1.5 U_mf goes through it.
+    EXPECT_GT(summary.at("mean_height").get<double>(), 0.075);
+    EXPECT_LT(summary.at("mean_height").get<double>(), 0.2);
+    // fraction_relaxation 1 withholds nothing: the inventory is kept to round-off.
+    EXPECT_LT(std::abs(summary.at("solids_volume_change").get<double>()), 1e-12);
+    // The bed's buoyant weight per unit area, (1 - eps) (rho_s - rho_g) g H (VALIDATION.md: about
+    // 2166 Pa).
+    EXPECT_NEAR(summary.at("bed_weight").get<double>(), 2166.0, 0.01 * 2166.0);
+    EXPECT_TRUE(fs::exists(bed / "mean/fields.xmf"));
+  }
+  EXPECT_EQ(beds, 2);
+}

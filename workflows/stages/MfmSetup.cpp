@@ -58,8 +58,16 @@ MfmSetup makeMfmSetup(const json& p) {
   model.gas.molarMass = p.at("gas_molar_mass");
   model.gas.temperature = p.at("gas_temperature");
   for (const auto& sp : p.at("solids")) {
-    model.solids.push_back({sp.at("name").get<std::string>(), sp.at("diameter").get<double>(),
-                            sp.at("density").get<double>(), sp.at("restitution").get<double>()});
+    mfm::SolidsPhase phase;
+    phase.name = sp.at("name").get<std::string>();
+    phase.diameter = sp.at("diameter");
+    phase.density = sp.at("density");
+    phase.restitution = sp.at("restitution");
+    phase.wallRestitution = sp.contains("wall_restitution") ? sp.at("wall_restitution").get<double>() : phase.restitution;
+    phase.friction = sp.at("friction");
+    phase.wallFriction = sp.at("wall_friction");
+    phase.tangentialRestitution = sp.at("tangential_restitution");
+    model.solids.push_back(std::move(phase));
   }
   const std::size_t M = model.solids.size();
   model.drag = closures::GasSolidsDrag::byName(p.at("drag").get<std::string>());
@@ -67,14 +75,26 @@ MfmSetup makeMfmSetup(const json& p) {
     so->params = {p.at("drag_c").get<double>(), p.at("drag_d").get<double>()};
     if (const auto why = so->params.continuityProblem(); !why.empty()) problem("/drag_d", why);
   }
-  model.kinetic.params.viscosityForm = p.at("kinetic_model").get<std::string>() == "syamlal_algebraic_mfix"
-                                           ? closures::SyamlalViscosityForm::Mfix
-                                           : closures::SyamlalViscosityForm::Printed;
+  const std::string kineticModel = p.at("kinetic_model");
+  model.kinetic.params.viscosityForm = kineticModel == "syamlal_algebraic_mfix" ? closures::SyamlalViscosityForm::Mfix
+                                                                               : closures::SyamlalViscosityForm::Printed;
+  model.closure = closures::ClosureModel::kineticTheory(closures::kineticModelFromString(kineticModel));
+  model.granularEnergy =
+      p.at("granular_energy").get<std::string>() == "pde" ? mfm::GranularEnergyForm::Pde : mfm::GranularEnergyForm::Algebraic;
+  model.rotation = p.at("rotation_model");
+  const bool johnsonJackson = p.at("solids_walls").get<std::string>() == "johnson_jackson";
+  if (model.granularEnergy == mfm::GranularEnergyForm::Algebraic) {
+    if (kineticModel == "lun1984")
+      problem("/granular_energy", "the algebraic balance is written for the syamlal kinetic models; lun1984 needs pde");
+    if (model.rotation) problem("/rotation_model", "the rotation model needs granular_energy pde");
+    if (johnsonJackson) problem("/solids_walls", "Johnson-Jackson walls need granular_energy pde");
+  }
   model.plastic.params.criticalVoidFraction = p.at("critical_void_fraction").get<double>();
   model.plastic.params.internalFrictionAngle = p.at("friction_angle").get<double>();
   if (const auto why = model.plastic.params.problem(); !why.empty()) problem("/friction_angle", why);
   const double packed = p.contains("packed_solids_fraction") ? p.at("packed_solids_fraction").get<double>()
                                                              : 1.0 - model.plastic.params.criticalVoidFraction;
+  if (johnsonJackson) model.wall = closures::JohnsonJackson::Params{p.at("specularity").get<double>(), packed, 1.0, {}};
 
   // The solver.
   auto& settings = s.engine.settings;
@@ -209,6 +229,7 @@ MfmSetup makeMfmSetup(const json& p) {
               "the solids fractions add up to " + core::humanNumber(solids) +
                   ", above the packed solids fraction eps_s,max = " + core::humanNumber(packed));
     }
+    region.granularTemperature = r.at("granular_temperature");
     region.velocities.push_back(vec3(r.at("gas_velocity")));
     for (std::size_t m = 0; m < M; ++m) region.velocities.push_back(vec3(r.at("solids_velocity")));
     s.initial.regions.push_back(std::move(region));

@@ -32,7 +32,24 @@ std::shared_ptr<const ParamSchema> solidsSchema() {
                .defaultValue(0.9)
                .min(0.0, false)
                .max(1.0)
-               .doc("particle-particle restitution e (Eqs. 3.23-3.25)"));
+               .doc("particle-particle restitution e (Eqs. 3.23-3.25, 5.7)"))
+      .add(ParamSpec::number("wall_restitution")
+               .min(0.0, false)
+               .max(1.0)
+               .doc("particle-wall restitution e_w of Johnson-Jackson walls (Eq. 5.9); default: restitution"))
+      .add(ParamSpec::number("friction")
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("rotation model: particle-particle Coulomb friction mu (Eqs. 5.12-5.17; Table 5.1)"))
+      .add(ParamSpec::number("wall_friction")
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("rotation model: particle-wall Coulomb friction mu_w (Eq. 5.21; Table 5.1)"))
+      .add(ParamSpec::number("tangential_restitution")
+               .defaultValue(0.33)
+               .min(-1.0)
+               .max(1.0)
+               .doc("rotation model: beta0 of Eq. 5.17, both contacts (Table 5.1)"));
   return s;
 }
 
@@ -76,7 +93,11 @@ std::shared_ptr<const ParamSchema> regionSchema() {
                .doc("gas velocity (interstitial)"))
       .add(ParamSpec::quantityList("solids_velocity", Dimension::velocity(), 3)
                .defaultValue(json::array({0, 0, 0}))
-               .doc("velocity of every solids phase"));
+               .doc("velocity of every solids phase"))
+      .add(ParamSpec::number("granular_temperature")
+               .defaultValue(0.0)
+               .min(0.0)
+               .doc("theta of every solids phase, m^2/s^2 (granular_energy pde)"));
   return s;
 }
 
@@ -131,9 +152,29 @@ MfmStage::MfmStage() {
       .add(ParamSpec::number("drag_c").defaultValue(0.8).positive().doc("Syamlal-O'Brien C (Eq. 3.13; Table 4.3)"))
       .add(ParamSpec::number("drag_d").defaultValue(2.65).positive().doc("Syamlal-O'Brien D (Eq. 3.13; Table 4.3)"))
       .add(ParamSpec::string("kinetic_model")
-               .defaultValue("syamlal_algebraic")
-               .options({"syamlal_algebraic", "syamlal_algebraic_mfix"})
-               .doc("solids stress of the viscous regime: Eqs. 3.21-3.25 as printed, or with MFiX's (3e+1)/2"))
+               .defaultValue("lun1984")
+               .options({"lun1984", "syamlal_algebraic", "syamlal_algebraic_mfix"})
+               .doc("kinetic theory of the viscous regime: Lun et al. 1984 with Ma-Ahmadi (Chapter 5), or "
+                    "Eqs. 3.21-3.25 as printed or with MFiX's (3e+1)/2"))
+      .add(ParamSpec::string("granular_energy")
+               .defaultValue("pde")
+               .options({"pde", "algebraic"})
+               .doc("theta from the granular-energy equation (Eq. 3.34), or MFiX's algebraic balance "
+                    "(syamlal kinetic models only)"))
+      .add(ParamSpec::string("solids_walls")
+               .defaultValue("no_slip")
+               .options({"no_slip", "johnson_jackson"})
+               .doc("solids at no-slip wall patches: stick (adiabatic), or Johnson-Jackson partial slip with the "
+                    "wall energy flux (Eqs. 5.8-5.10; granular_energy pde)"))
+      .add(ParamSpec::number("specularity")
+               .defaultValue(0.6)
+               .min(0.0)
+               .max(1.0)
+               .doc("Johnson-Jackson specularity phi' (VALIDATION.md: MFiX's run used 0.6)"))
+      .add(ParamSpec::boolean("rotation_model")
+               .defaultValue(false)
+               .doc("particle rotation (Eqs. 5.11-5.21): e_eff from each phase's friction in the collisional and "
+                    "wall dissipation only (granular_energy pde)"))
       .add(ParamSpec::number("critical_void_fraction")
                .required()
                .min(0.0, false)

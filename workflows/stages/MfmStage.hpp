@@ -15,7 +15,8 @@ class MfmStage final : public StageType {
   [[nodiscard]] std::string name() const override { return "mfm"; }
   // 2: the summary gains bed_weight and drag_umf, series.csv the solver's step and iteration
   //    counts and last residual
-  [[nodiscard]] int implVersion() const override { return 2; }
+  // 3: the granular-energy equation with lun1984 the default, Johnson-Jackson walls, rotation.
+  [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

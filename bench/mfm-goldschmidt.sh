@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Multi-fluid throughput on the Goldschmidt monodisperse bed (issue 18's benchmark): the `bed`
+# stage of configs/goldschmidt-mono.json at 1.5 U_mf (1.92 m/s) without the rotation model,
+# 15 x 45 cells, 10 s simulated, on one core, no frames. Prints the solver's statistics, cell
+# updates per second (cells x solver steps / wall second; and x outer iterations) and, last,
+# the wall time per simulated second. Target: <= 30 (MFiX 21.3.2 takes 31-48 on this kind of
+# machine, VALIDATION.md / issue 18).
+#
+# Builds nothing: it uses build-release/bin/grainbridge (scripts/quickstart.sh builds it) or
+# $GRAINBRIDGE.
+#
+# Usage: bench/mfm-goldschmidt.sh [--duration SECONDS]
+# Last line: wall_seconds_per_simulated_second = X
+set -euo pipefail
+
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+duration=10
+while (($#)); do
+  case "$1" in
+    --duration) duration=$2; shift 2 ;;
+    *) echo "usage: bench/mfm-goldschmidt.sh [--duration SECONDS]" >&2; exit 2 ;;
+  esac
+done
+gb=${GRAINBRIDGE:-$repo/build-release/bin/grainbridge}
+[[ -x "$gb" ]] || { echo "no grainbridge binary at $gb: run scripts/quickstart.sh first (or set GRAINBRIDGE)" >&2; exit 2; }
+core=$(($(nproc) - 1))
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# The shipped config's bed, one sweep point, the averaging window the last half of the run.
+python3 - "$repo/configs/goldschmidt-mono.json" "$work/bench.json" "$duration" <<'PY'
+import json, sys
+source, target, duration = sys.argv[1], sys.argv[2], float(sys.argv[3])
+config = json.load(open(source))
+stage = config["stages"]["bed"]
+stage.pop("sweep", None)
+params = stage["params"]
+params["boundaries"][0]["gas_inflow"] = "1.92 m/s"
+params["rotation_model"] = False
+params["duration"] = f"{duration} s"
+params["average_from"] = f"{duration / 2} s"
+params["frames"] = 0
+params["progress"] = False
+config["name"] = "bench-mfm-goldschmidt"
+config["stages"] = {"bed": stage}
+json.dump(config, open(target, "w"), indent=1)
+PY
+
+echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores; pinned to core $core"
+echo "grainbridge: $("$gb" --version 2>/dev/null | head -1) ($(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo '?'))"
+start=$(date +%s.%N)
+(cd "$work" && taskset -c "$core" "$gb" run bench.json > run.log 2>&1) || { cat "$work/run.log" >&2; exit 1; }
+end=$(date +%s.%N)
+manifest=$(ls "$work"/results/bench-mfm-goldschmidt/bed/*/manifest.json)
+python3 - "$manifest" "$start" "$end" "$duration" <<'PY'
+import json, sys
+manifest, start, end, duration = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+m = json.load(open(manifest))
+s = m["summary"]
+wall = float(m.get("timing", {}).get("seconds", end - start))
+cells = 15 * 45
+steps = s["solver_steps"]
+iterations = steps * s["iterations_per_step"]
+print(f"simulated: {duration:g} s, solver steps {steps}, {s['iterations_per_step']:.2f} iterations per step, "
+      f"{s['retries']} retried")
+print(f"mean particle height (5-10 s window: {duration / 2:g}-{duration:g} s): {s['mean_height']:.4f} +- "
+      f"{s['mean_height_err']:.4f} m; pressure drop {s['pressure_drop']:.0f} +- {s['pressure_drop_err']:.0f} Pa")
+print(f"wall: {wall:.1f} s (stage); cell updates per second: {cells * steps / wall:.4g} "
+      f"(x outer iterations: {cells * iterations / wall:.4g})")
+print(f"wall_seconds_per_simulated_second = {wall / duration:.2f}")
+PY
