@@ -41,6 +41,13 @@ KineticTransport ClosureModel::evaluate(const KineticState& state) const {
   return t;
 }
 
+bool ClosureModel::covers(const KineticState& state) const {
+  for (const auto* t : {&pressure_, &shearViscosity_, &dissipation_}) {
+    if (*t && !(*t)->table()(state.solidFraction, state.restitution).inRange) return false;
+  }
+  return true;
+}
+
 std::int64_t ClosureModel::outOfRangeCount() const {
   std::int64_t n = 0;
   for (const auto* t : {&pressure_, &shearViscosity_, &dissipation_}) {

@@ -35,6 +35,10 @@ class ClosureModel {
   [[nodiscard]] KineticTransport evaluate(const KineticState& state) const;
   // Evaluations that fell outside a table, over every table of the model.
   [[nodiscard]] std::int64_t outOfRangeCount() const;
+  // Whether every table of the model holds `state` (its solid fraction and restitution inside
+  // the table's axes); true for `ktgf`. What a continuum run's coverage counts, without
+  // evaluating or counting anything.
+  [[nodiscard]] bool covers(const KineticState& state) const;
 
  private:
   explicit ClosureModel(KineticModelName model) : model_(model) {}

@@ -119,6 +119,10 @@ void MfmEngine::saveState(const fs::path& path, const std::string& fingerprint) 
     f.writeAttribute("/", "retries", static_cast<std::int64_t>(stats.retries));
     f.writeAttribute("/", "iterations", static_cast<std::int64_t>(stats.iterations));
     f.writeAttribute("/", "last_dt", stats.lastDt);
+    f.writeAttribute("/", "table_cell_steps", static_cast<std::int64_t>(stats.tableCellSteps));
+    f.writeAttribute("/", "covered_cell_steps", static_cast<std::int64_t>(stats.coveredCellSteps));
+    f.writeAttribute("/", "table_solids_steps", stats.tableSolidsSteps);
+    f.writeAttribute("/", "covered_solids_steps", stats.coveredSolidsSteps);
     // The padded arrays (ghosts included), exactly as held.
     f.writeDataset("pressure", st.pressure.values());
     for (std::size_t m = 0; m < st.phases.size(); ++m) {
@@ -153,8 +157,16 @@ std::unique_ptr<MfmEngine> MfmEngine::restore(const MultiFluidSetup& setup, cons
   st.time = f.readDoubleAttribute("/", "time");
   e->step_ = f.readIntAttribute("/", "step");
   e->engine_->timeStep().restore(f.readDoubleAttribute("/", "dt"));
-  e->engine_->restoreStatistics({f.readIntAttribute("/", "solver_steps"), f.readIntAttribute("/", "retries"),
-                                 f.readIntAttribute("/", "iterations"), f.readDoubleAttribute("/", "last_dt"), 0.0});
+  StepStatistics stats;
+  stats.steps = f.readIntAttribute("/", "solver_steps");
+  stats.retries = f.readIntAttribute("/", "retries");
+  stats.iterations = f.readIntAttribute("/", "iterations");
+  stats.lastDt = f.readDoubleAttribute("/", "last_dt");
+  stats.tableCellSteps = f.readIntAttribute("/", "table_cell_steps");
+  stats.coveredCellSteps = f.readIntAttribute("/", "covered_cell_steps");
+  stats.tableSolidsSteps = f.readDoubleAttribute("/", "table_solids_steps");
+  stats.coveredSolidsSteps = f.readDoubleAttribute("/", "covered_solids_steps");
+  e->engine_->restoreStatistics(stats);
   st.pressure.values() = f.readDoubles("pressure", {n});
   for (std::size_t m = 0; m < st.phases.size(); ++m) {
     const std::string p = "phase_" + std::to_string(m);

@@ -41,6 +41,7 @@ void MultiFluidEngine::step(double limit) {
       stats_.iterations += r.iterations;
       stats_.lastDt = dt;
       stats_.lastResidual = r.residual;
+      if (model_.params().closure.kind() == "table") countCoverage();
       return;
     }
     ++stats_.retries;
@@ -65,6 +66,28 @@ void MultiFluidEngine::step(double limit) {
       }
       msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")";
       throw Error(msg.str());
+    }
+  }
+}
+
+void MultiFluidEngine::countCoverage() {
+  const double volume = grid_->cellVolume();
+  for (int k = 0; k < grid_->cells(2); ++k) {
+    for (int j = 0; j < grid_->cells(1); ++j) {
+      for (int i = 0; i < grid_->cells(0); ++i) {
+        const std::size_t c = grid_->index(i, j, k);
+        for (std::size_t m = 1; m < state_->phases.size(); ++m) {
+          const double eps = state_->phases[m].fraction[c];
+          if (eps < settings_.diluteFraction) continue;
+          const bool covered = model_.tableCovers(*state_, m, c);
+          ++stats_.tableCellSteps;
+          stats_.tableSolidsSteps += eps * volume;
+          if (covered) {
+            ++stats_.coveredCellSteps;
+            stats_.coveredSolidsSteps += eps * volume;
+          }
+        }
+      }
     }
   }
 }

@@ -20,6 +20,10 @@ struct StepStatistics {
   long iterations = 0;  // outer iterations over all converged steps
   double lastDt = 0.0;  // [s]
   double lastResidual = 0.0;
+  // A `table` closure's coverage, over converged steps and the cells holding solids (above the
+  // dilute fraction): cell-steps, and solids volume-steps, inside every table, and in all.
+  long tableCellSteps = 0, coveredCellSteps = 0;
+  double tableSolidsSteps = 0.0, coveredSolidsSteps = 0.0;  // [m^3]
 };
 
 class MultiFluidEngine {
@@ -50,6 +54,8 @@ class MultiFluidEngine {
 
  private:
   [[nodiscard]] double speedOverSpacing() const;
+  // Adds the converged state's cells to the table coverage counts.
+  void countCoverage();
 
   std::unique_ptr<fluid::StaggeredGrid> grid_;
   std::unique_ptr<fluid::Boundaries> boundaries_;

@@ -287,6 +287,14 @@ MultiFluidModel::SolidsState MultiFluidModel::solidsState(const fluid::FlowState
   return {epsG, eps, kc, D, algebraicGranularTemperature(kc, eps, D.trace(), D.doubleDot())};
 }
 
+bool MultiFluidModel::tableCovers(const fluid::FlowState& state, std::size_t m, std::size_t c) const {
+  const SolidsPhase& solids = params_.solids[m - 1];
+  const closures::KineticState ks{closureSolidFraction(state, m, c),
+                                  std::max(state.phases[m].granularTemperature[c], 0.0), solids.diameter,
+                                  solids.density, solids.restitution, 0.0};
+  return params_.closure.covers(ks);
+}
+
 double MultiFluidModel::granularTemperature(const fluid::FlowState& state, std::size_t m, std::size_t c) const {
   if (params_.granularEnergy == GranularEnergyForm::Pde) return state.phases[m].granularTemperature[c];
   return solidsState(state, m, c).theta;

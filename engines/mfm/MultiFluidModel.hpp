@@ -110,6 +110,8 @@ class MultiFluidModel final : public fluid::FlowModel {
   // (1 + e)(1 - e_eff) / (1 - e^2) of phase m (1..M): the rotation model's factor on the
   // collisional dissipation (1 without it).
   [[nodiscard]] double dissipationScale(std::size_t m) const { return dissipationScale_[m]; }
+  // Whether the closure's tables hold the state of phase m at interior cell c (true for ktgf).
+  [[nodiscard]] bool tableCovers(const fluid::FlowState& state, std::size_t m, std::size_t c) const;
   // e_w,eff of phase m with the rotation model.
   [[nodiscard]] std::optional<double> wallEffectiveRestitution(std::size_t m) const { return wallEffective_[m]; }
 

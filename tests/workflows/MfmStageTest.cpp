@@ -8,7 +8,10 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "db/ClosureStore.hpp"
+#include "db/Database.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/TinyShear.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge::testing;
@@ -110,4 +113,79 @@ TEST(MfmStage, GoldschmidtSmokeRunsKineticTheoryWithWallsWithAndWithoutRotation)
     EXPECT_TRUE(fs::exists(bed / "mean/fields.xmf"));
   }
   EXPECT_EQ(beds, 2);
+}
+
+namespace {
+
+// A loose grain bed (solids fraction 0.15) in the Chapter 5 model, 0.05 s: cells in the tiny
+// shear table's range (solid fractions 0.097 and 0.168, e 0.9) and out of it.
+json looseBed() {
+  json wf = json::parse(readText(sourceDir() / "configs/grain-fluidization-smoke.json"));
+  json bed = wf["stages"]["bed"];
+  bed.erase("sweep");
+  auto& p = bed["params"];
+  p.erase("kinetic_model");
+  p.erase("granular_energy");
+  p["regions"][0]["solids_fractions"] = {0.15};
+  p["boundaries"][0]["gas_inflow"] = "0.5 m/s";
+  p["duration"] = "0.05 s";
+  p["average_from"] = "0.02 s";
+  p["frames"] = 1;
+  p["closure"] = "table";
+  p["closure_table"] = "t";
+  p["out_of_range"] = "kinetic_theory";
+  return bed;
+}
+
+json shearToTable() {
+  json dem = tinyShearDemParams();
+  dem.erase("box_hi");
+  json stages = json::object();
+  const json boxes = json::array({json::array({"6 mm", "6 mm", "6 mm"}), json::array({"5 mm", "5 mm", "5 mm"})});
+  stages["shear"] = {{"type", "dem"}, {"params", dem}, {"sweep", {{"box_hi", boxes}}}};
+  stages["points"] = {{"type", "extract"}, {"from", "shear"}, {"params", {{"family", "simple_shear"}}}};
+  stages["table"] = {{"type", "tabulate"}, {"from", "points"}, {"params", {{"table", "t"}, {"second_variable", ""}}}};
+  return stages;
+}
+
+}  // namespace
+
+TEST(MfmStage, ReadsClosureTablesMadeUpstreamOrNamedInTheDatabaseAndCountsTheirCoverage) {
+  TempDir work;
+  // 1. DEM shear -> closure points -> table "t" -> the bed reading it through `from`.
+  json stages = shearToTable();
+  stages["bed"] = looseBed();
+  stages["bed"]["from"] = "table";
+  writeText(work.path() / "loop.json", json{{"name", "loop"}, {"stages", stages}}.dump(2));
+  const auto r = runGrainbridge(work.path(), "run loop.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const fs::path bedDir = onlyInstance(work.path() / "results/loop/bed");
+  const json summary = json::parse(readText(bedDir / "manifest.json")).at("summary");
+  auto database = grainbridge::db::Database::openReadOnly(work.path() / "results/loop/grainbridge.sqlite");
+  grainbridge::db::ClosureStore store(database);
+  for (const char* q : {"p_theta", "eta_theta", "j_theta"}) {
+    EXPECT_EQ(summary.at(std::string("table_sha256_") + q), store.tableRecord("t", q).at("sha256")) << q;
+  }
+  const double cells = summary.at("table_coverage_cell_steps"), solids = summary.at("table_coverage_solids");
+  EXPECT_GT(summary.at("table_cell_steps").get<double>(), 0.0);
+  EXPECT_GE(cells, 0.0);
+  EXPECT_LE(cells, 1.0);
+  EXPECT_GE(solids, 0.0);
+  EXPECT_LE(solids, 1.0);
+
+  // 2. Another workflow names the same table, without `from`: planned from the database, and its
+  //    key carries the table's content hash; a table the database lacks is refused at check.
+  json named = looseBed();
+  const std::string dbPath = (work.path() / "results/loop/grainbridge.sqlite").string();
+  writeText(work.path() / "named.json",
+            json{{"name", "named"}, {"database", dbPath}, {"stages", {{"bed", named}}}}.dump(2));
+  const auto ok = runGrainbridge(work.path(), "check named.json");
+  EXPECT_EQ(ok.exitCode, 0) << ok.output;
+  named["params"]["closure_table"] = "missing";
+  writeText(work.path() / "missing.json",
+            json{{"name", "named"}, {"database", dbPath}, {"stages", {{"bed", named}}}}.dump(2));
+  const auto bad = runGrainbridge(work.path(), "check missing.json");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("/stages/bed/params/closure_table"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("\"missing\""), std::string::npos) << bad.output;
 }

@@ -41,11 +41,26 @@ const stages::StageRegistry& registry() { return stages::StageRegistry::builtin(
 
 config::WorkflowConfig load(const CommandOptions& opt) { return config::loadWorkflow(opt.config, registry()); }
 
+// The plan, with the closure tables its stages read found in the workflow database (opened
+// read-only, and only when it exists: a check changes nothing).
+plan::Plan planOf(const config::WorkflowConfig& cfg, const CommandOptions& opt) {
+  const fs::path path = exec::databasePath(cfg, opt.workDir);
+  return plan::makePlan(cfg, [&path](const std::string& name, const std::string& quantity) -> std::string {
+    if (!fs::exists(path)) return {};
+    auto database = db::Database::openReadOnly(path);
+    try {
+      return db::ClosureStore(database).tableRecord(name, quantity).at("sha256").get<std::string>();
+    } catch (const Error&) {
+      return {};
+    }
+  });
+}
+
 }  // namespace
 
 int commandCheck(const CommandOptions& opt) {
   const auto cfg = load(opt);
-  const auto plan = plan::makePlan(cfg);
+  const auto plan = planOf(cfg, opt);
   std::printf("%s: ok: workflow '%s', %zu stage(s), %zu stage instance(s)\n", opt.config.c_str(), cfg.name.c_str(),
               cfg.stages.size(), plan.instances.size());
   return 0;
@@ -55,7 +70,7 @@ int commandRun(const CommandOptions& opt) {
   // Every rank validates the config (deterministically the same verdict), so a bad config
   // makes all ranks exit 2 together before any work starts.
   const auto cfg = load(opt);
-  const auto plan = plan::makePlan(cfg);
+  const auto plan = planOf(cfg, opt);
   exec::installStopHandlers();
   exec::RunOptions runOptions;
   runOptions.force = opt.force;
@@ -76,7 +91,7 @@ int commandRun(const CommandOptions& opt) {
 
 int commandStatus(const CommandOptions& opt) {
   const auto cfg = load(opt);
-  const auto plan = plan::makePlan(cfg);
+  const auto plan = planOf(cfg, opt);
   if (!opt.why.empty()) {
     if (cfg.findStage(opt.why) == nullptr) throw UsageError("no stage named '" + opt.why + "' in workflow " + cfg.name);
     for (const auto& line : status::explainStage(cfg, plan, opt.why, opt.workDir)) std::printf("%s\n", line.c_str());
@@ -190,7 +205,7 @@ void openInBrowser(const fs::path& page) {
 int commandReport(const CommandOptions& opt) {
   if (opt.config.empty()) throw UsageError("report: give a workflow config, or `report validation`");
   const auto cfg = load(opt);
-  const auto plan = plan::makePlan(cfg);
+  const auto plan = planOf(cfg, opt);
   auto database = openExisting(exec::databasePath(cfg, opt.workDir));
   const fs::path root = fs::absolute(exec::resultsRoot(opt.workDir)).lexically_normal();
   std::vector<stages::UpstreamInstance> done;

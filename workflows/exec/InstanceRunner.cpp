@@ -77,6 +77,7 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
     stages::StageContext ctx(task.workflow, task.stage, task.key, task.params, partialDir, std::move(inputs), comm,
                              core::units::UnitSystem::fromJson(task.units), stop);
     ctx.setDatabasePath(task.database);
+    ctx.setClosureTables(task.closureTables);
     type->run(ctx);
     core::failPoint("stage.after_run");
     if (comm.isMpi() && comm.size() > 1) MPI_Barrier(comm.raw());

@@ -11,7 +11,7 @@ json InstanceTask::toJson() const {
   return {{"workflow", workflow}, {"stage", stage},   {"stage_type", stageType},
           {"key", key},           {"params", params}, {"sweep_point", sweepPoint}, {"sweep_written", sweepWritten}, {"database", database},
           {"upstream", ups},      {"units", units},   {"instance_dir", instanceDir},
-          {"group", group}};
+          {"group", group},       {"closure_tables", closureTables}};
 }
 
 InstanceTask InstanceTask::fromJson(const json& j) {
@@ -29,6 +29,7 @@ InstanceTask InstanceTask::fromJson(const json& j) {
   t.units = j.at("units");
   t.instanceDir = j.at("instance_dir");
   t.group = j.at("group").get<std::vector<int>>();
+  t.closureTables = j.value("closure_tables", json::array());
   return t;
 }
 

@@ -29,6 +29,9 @@ struct InstanceTask {
   nlohmann::json units;
   std::string instanceDir;  // relative to the results root
   std::vector<int> group;   // world ranks running it together (MPI executor)
+  // The closure tables the stage reads, as db::ClosureStore::tableRecord gives them (rank 0
+  // loads them: workers never open the database).
+  nlohmann::json closureTables = nlohmann::json::array();
 
   [[nodiscard]] nlohmann::json toJson() const;
   static InstanceTask fromJson(const nlohmann::json& j);

@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
 #include "workflows/exec/Bookkeeper.hpp"
 #include "workflows/exec/StopSignal.hpp"
@@ -58,6 +59,9 @@ RunSummary runWorkflow(const config::WorkflowConfig& config, const plan::Plan& p
       const auto& up = plan.instances[u];
       t.upstream.push_back({up.stage, up.type->name(), up.key, dirs[u]});
     }
+    for (const auto& table : inst.tables) {
+      t.closureTables.push_back(db::ClosureStore(database).tableRecord(table.name, table.quantity, table.runKey));
+    }
     return t;
   };
 
@@ -100,7 +104,17 @@ RunSummary runWorkflow(const config::WorkflowConfig& config, const plan::Plan& p
         continue;
       }
       if (dispatcher.idleRanks() < inst.ranks) continue;
-      tasks[i] = makeTask(inst);
+      try {
+        tasks[i] = makeTask(inst);
+      } catch (const Error& e) {
+        // A closure table its upstream should have made is missing (a quantity the points lacked).
+        state[i] = State::Failed;
+        ++summary.failed;
+        spdlog::error("{}: {}", inst.label(), e.what());
+        if (!options.keepGoing) stopScheduling = true;
+        changed = true;
+        continue;
+      }
       tasks[i].group = dispatcher.reserve(inst.ranks);
       auto begun = books.begin(inst, tasks[i], tasks[i].group.front(), inst.ranks);
       if (!begun.claimed) {

@@ -224,6 +224,36 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
       }
       return value;
     }
+    case ParamKind::StringList: {
+      if (!value.is_array()) {
+        diagnostics.add(pointer, "expected a list of strings, found " + found(value));
+        return std::nullopt;
+      }
+      const auto& allowed = spec.allowed();
+      const std::size_t before = diagnostics.size();
+      std::vector<std::string> seen;
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string where = pointer + "/" + std::to_string(i);
+        if (!value[i].is_string()) {
+          diagnostics.add(where, "expected a string, found " + found(value[i]));
+          continue;
+        }
+        const auto s = value[i].get<std::string>();
+        if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), s) == allowed.end()) {
+          std::string msg = "expected one of ";
+          for (std::size_t k = 0; k < allowed.size(); ++k) msg += (k ? "|" : "") + allowed[k];
+          msg += ", found \"" + s + "\"";
+          const auto hint = cj::closestMatch(s, allowed);
+          if (!hint.empty()) msg += " (did you mean \"" + hint + "\"?)";
+          diagnostics.add(where, msg);
+        } else if (std::find(seen.begin(), seen.end(), s) != seen.end()) {
+          diagnostics.add(where, "\"" + s + "\" is listed twice");
+        }
+        seen.push_back(s);
+      }
+      if (diagnostics.size() != before) return std::nullopt;
+      return value;
+    }
     case ParamKind::InputFile: {
       if (!value.is_string() || value.get<std::string>().empty()) {
         diagnostics.add(pointer, "expected a file path, found " + found(value));

@@ -15,6 +15,7 @@ ParamSpec ParamSpec::quantity(std::string name, core::units::Dimension dim) {
 ParamSpec ParamSpec::integer(std::string name) { return ParamSpec(std::move(name), ParamKind::Integer, {}); }
 ParamSpec ParamSpec::boolean(std::string name) { return ParamSpec(std::move(name), ParamKind::Boolean, {}); }
 ParamSpec ParamSpec::string(std::string name) { return ParamSpec(std::move(name), ParamKind::String, {}); }
+ParamSpec ParamSpec::stringList(std::string name) { return ParamSpec(std::move(name), ParamKind::StringList, {}); }
 ParamSpec ParamSpec::quantityList(std::string name, core::units::Dimension dim, int length) {
   ParamSpec p(std::move(name), ParamKind::QuantityList, dim);
   p.listLength_ = length;
@@ -60,7 +61,7 @@ ParamSpec& ParamSpec::max(double value, bool inclusive) {
   return *this;
 }
 ParamSpec& ParamSpec::options(std::vector<std::string> allowed) {
-  GB_ASSERT(kind_ == ParamKind::String, "options() applies to string parameters");
+  GB_ASSERT(kind_ == ParamKind::String || kind_ == ParamKind::StringList, "options() applies to string parameters");
   options_ = std::move(allowed);
   return *this;
 }
@@ -84,6 +85,12 @@ std::string ParamSpec::typeDescription() const {
     case ParamKind::String: {
       if (options_.empty()) return "string";
       std::string s = "string: one of ";
+      for (std::size_t i = 0; i < options_.size(); ++i) s += (i ? "|" : "") + options_[i];
+      return s;
+    }
+    case ParamKind::StringList: {
+      if (options_.empty()) return "list of strings";
+      std::string s = "list of strings, each one of ";
       for (std::size_t i = 0; i < options_.size(); ++i) s += (i ? "|" : "") + options_[i];
       return s;
     }

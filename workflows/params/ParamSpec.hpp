@@ -12,7 +12,18 @@
 
 namespace grainbridge::workflows::params {
 
-enum class ParamKind { Quantity, Integer, Boolean, String, QuantityList, IntegerList, Object, ObjectList, InputFile };
+enum class ParamKind {
+  Quantity,
+  Integer,
+  Boolean,
+  String,
+  StringList,
+  QuantityList,
+  IntegerList,
+  Object,
+  ObjectList,
+  InputFile
+};
 
 class ParamSchema;
 
@@ -29,6 +40,9 @@ class ParamSpec {
   static ParamSpec integer(std::string name);
   static ParamSpec boolean(std::string name);
   static ParamSpec string(std::string name);
+  // A list of distinct strings, each one of options() when given (the quantities a closure table
+  // supplies); any length.
+  static ParamSpec stringList(std::string name);
   // A fixed-length list of quantities, e.g. gravity [0, 0, "-9.81 m/s2"]; length 0 accepts any
   // length.
   static ParamSpec quantityList(std::string name, core::units::Dimension dim, int length);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/Error.hpp"
+#include "core/json/Diagnostics.hpp"
 #include "core/Sha256.hpp"
 #include "core/text/NumberText.hpp"
 
@@ -25,11 +26,13 @@ std::string StageInstance::label() const {
 std::string StageInstance::relativeDir(const std::string& workflow) const { return workflow + "/" + stage + "/" + key; }
 
 json keyMaterial(const stages::StageType& type, const json& resolvedParams,
-                 const std::vector<std::string>& upstreamKeys) {
-  return json{{"type", type.name()},
-              {"impl_version", type.implVersion()},
-              {"params", type.params().keyParams(resolvedParams)},
-              {"upstream", upstreamKeys}};
+                 const std::vector<std::string>& upstreamKeys, const json& tables) {
+  json material{{"type", type.name()},
+                {"impl_version", type.implVersion()},
+                {"params", type.params().keyParams(resolvedParams)},
+                {"upstream", upstreamKeys}};
+  if (!tables.empty()) material["closure_tables"] = tables;
+  return material;
 }
 
 std::string stageKey(const json& material) {
@@ -59,7 +62,7 @@ std::vector<std::vector<std::size_t>> upstreamCombinations(const config::StageCo
 
 }  // namespace
 
-Plan makePlan(const config::WorkflowConfig& config) {
+Plan makePlan(const config::WorkflowConfig& config, const TableHashLookup& lookup) {
   Plan plan;
   plan.workflow = config.name;
   for (const auto& stage : config.stages) {
@@ -92,7 +95,28 @@ Plan makePlan(const config::WorkflowConfig& config) {
         for (auto i : inputs) upKeys.push_back(plan.instances[i].key);
         // A gathering stage does not care in which order its inputs were listed.
         if (stage.type->inputMode() == stages::InputMode::Gather) std::sort(upKeys.begin(), upKeys.end());
-        inst.key = stageKey(keyMaterial(*stage.type, inst.params, upKeys));
+        json tables = json::object();
+        for (const auto& ref : stage.type->closureTables(inst.params)) {
+          StageInstance::TableInput in{ref.name, ref.quantity, "", ""};
+          for (auto i : inputs) {
+            const auto planned = plan.instances[i].type->plannedOutput(plan.instances[i].params);
+            if (planned && planned->closureTables == ref.name) in.runKey = plan.instances[i].key;
+          }
+          if (in.runKey.empty()) {
+            in.sha256 = lookup ? lookup(ref.name, ref.quantity) : std::string();
+            if (in.sha256.empty()) {
+              core::json::Diagnostics d;
+              d.add("/stages/" + stage.name + "/params" + ref.pointer,
+                    "closure table \"" + ref.name + "\" (" + ref.quantity +
+                        ") is neither in the workflow database (" + config.database.string() +
+                        ") nor made by a tabulate stage this stage takes `from`");
+              throw core::json::InputError(config.sourcePath.string(), std::move(d));
+            }
+          }
+          tables[ref.name + "/" + ref.quantity] = in.runKey.empty() ? in.sha256 : "upstream";
+          inst.tables.push_back(std::move(in));
+        }
+        inst.key = stageKey(keyMaterial(*stage.type, inst.params, upKeys, tables));
         plan.byStage[stage.name].push_back(inst.index);
         plan.instances.push_back(std::move(inst));
       }

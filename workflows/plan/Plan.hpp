@@ -5,6 +5,7 @@
 // Canonical params are SI values with defaults filled in, keys sorted, floats in shortest
 // round-trip text, parameters declared not to affect results left out. Paths, hosts, git SHA
 // and rank counts never enter, so a docs-only commit or a moved project invalidates nothing.
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -24,6 +25,14 @@ struct StageInstance {
   std::string key;
   std::vector<std::size_t> upstream;  // indices of the instances it consumes
   int ranks = 1;
+  // The closure tables it reads (StageType::closureTables): made by the upstream instance of
+  // `runKey` (a tabulate stage in `from`), or found in the database with content `sha256`.
+  struct TableInput {
+    std::string name, quantity;
+    std::string runKey;
+    std::string sha256;
+  };
+  std::vector<TableInput> tables;
 
   // "gas" or "gas[solid_fraction=0.1, box=13.7 mm (×3)]" (values as written), for logs and status.
   [[nodiscard]] std::string label() const;
@@ -37,11 +46,20 @@ struct Plan {
   std::map<std::string, std::vector<std::size_t>> byStage;
 };
 
-Plan makePlan(const config::WorkflowConfig& config);
+// The content hash of the newest closure table `name` of `quantity` in the workflow database,
+// or "" when it has none.
+using TableHashLookup = std::function<std::string(const std::string& name, const std::string& quantity)>;
+
+// Throws grainbridge::Error naming the stage parameter when an instance reads a closure table
+// that neither a tabulate stage in its `from` makes nor the database (`lookup`) holds.
+Plan makePlan(const config::WorkflowConfig& config, const TableHashLookup& lookup = {});
 
 // The canonical text that is hashed into a stage key (exposed for `status --why` and tests).
+// `tables` ({"name/quantity": sha256 or "upstream"}) enters only when not empty, so stages that
+// read no table keep their keys.
 nlohmann::json keyMaterial(const stages::StageType& type, const nlohmann::json& resolvedParams,
-                           const std::vector<std::string>& upstreamKeys);
+                           const std::vector<std::string>& upstreamKeys,
+                           const nlohmann::json& tables = nlohmann::json::object());
 std::string stageKey(const nlohmann::json& keyMaterial);
 
 }  // namespace grainbridge::workflows::plan

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core/text/NumberText.hpp"
 #include "engines/closures/SyamlalOBrien.hpp"
+#include "engines/closures/TabulatedClosure.hpp"
 #include "engines/mfm/BedMeasures.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -33,7 +35,11 @@ std::int64_t mfmSteps(const json& p) {
                                 std::llround(p.at("duration").get<double>() / p.at("output_interval").get<double>()));
 }
 
-MfmSetup makeMfmSetup(const json& p) {
+std::string tableQuantity(const std::string& q) {
+  return q == "pressure" ? "p_theta" : q == "shear_viscosity" ? "eta_theta" : "j_theta";
+}
+
+MfmSetup makeMfmSetup(const json& p, const json* closureTables) {
   MfmSetup s;
   auto problem = [&s](std::string where, std::string what) {
     s.problems.emplace_back(std::move(where), std::move(what));
@@ -83,6 +89,40 @@ MfmSetup makeMfmSetup(const json& p) {
       p.at("granular_energy").get<std::string>() == "pde" ? mfm::GranularEnergyForm::Pde : mfm::GranularEnergyForm::Algebraic;
   model.rotation = p.at("rotation_model");
   const bool johnsonJackson = p.at("solids_walls").get<std::string>() == "johnson_jackson";
+  if (p.at("closure").get<std::string>() == "table") {
+    if (!p.contains("closure_table")) problem("/closure_table", "closure \"table\" needs the name of the tables");
+    if (!p.contains("out_of_range")) {
+      problem("/out_of_range",
+              "closure \"table\" needs an explicit out-of-range policy: error, clamp or kinetic_theory");
+    }
+    if (p.at("table_quantities").empty()) problem("/table_quantities", "name at least one quantity the table supplies");
+    if (model.granularEnergy != mfm::GranularEnergyForm::Pde)
+      problem("/granular_energy", "a closure table is read at the granular-energy equation's theta: needs pde");
+    if (closureTables != nullptr && s.problems.empty()) {
+      const auto policy = closures::outOfRangePolicyFromString(p.value("out_of_range", "error"));
+      const auto fallback = closures::kineticModelFromString(kineticModel);
+      std::optional<closures::TabulatedClosure> pressure, viscosity, dissipation;
+      for (const auto& record : *closureTables) {
+        const core::ClosureTable table(record.at("quantity").get<std::string>(),
+                                       record.at("solid_fractions").get<std::vector<double>>(),
+                                       record.at("second_variable").get<std::string>(),
+                                       record.at("seconds").get<std::vector<double>>(),
+                                       record.at("values").get<std::vector<double>>());
+        const double friction = record.at("filters").value("friction", 0.0);
+        if (model.rotation && friction > 0.0) {
+          problem("/rotation_model", "closure table \"" + record.at("name").get<std::string>() + "\" (" +
+                                         table.quantity() + ") was made from grains with friction " +
+                                         core::humanNumber(friction) +
+                                         ": the rotation model would count their friction a second time");
+        }
+        closures::TabulatedClosure closure(table, policy, fallback);
+        if (table.quantity() == "p_theta") pressure.emplace(closure);
+        if (table.quantity() == "eta_theta") viscosity.emplace(closure);
+        if (table.quantity() == "j_theta") dissipation.emplace(closure);
+      }
+      model.closure = closures::ClosureModel::tabulated(fallback, pressure, viscosity, dissipation);
+    }
+  }
   if (model.granularEnergy == mfm::GranularEnergyForm::Algebraic) {
     if (kineticModel == "lun1984")
       problem("/granular_energy", "the algebraic balance is written for the syamlal kinetic models; lun1984 needs pde");

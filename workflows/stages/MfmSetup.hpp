@@ -28,8 +28,13 @@ struct MfmSetup {
   std::vector<std::pair<std::string, std::string>> problems;
 };
 
-// Assumes individually valid parameters (the schema's checks passed).
-MfmSetup makeMfmSetup(const nlohmann::json& params);
+// Assumes individually valid parameters (the schema's checks passed). `closureTables` are the
+// tables a `table` closure reads (StageContext::closureTables); without them (a config check)
+// the closure is the kinetic theory and only the parameters are checked.
+MfmSetup makeMfmSetup(const nlohmann::json& params, const nlohmann::json* closureTables = nullptr);
+
+// The quantity of the table each of table_quantities' names takes: p_theta, eta_theta, j_theta.
+[[nodiscard]] std::string tableQuantity(const std::string& closureQuantity);
 
 // The run's output steps: duration / interval, rounded.
 [[nodiscard]] std::int64_t mfmSteps(const nlohmann::json& params);

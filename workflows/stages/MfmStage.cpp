@@ -6,6 +6,7 @@
 #include "core/Error.hpp"
 
 #include "core/averaging/BlockAverage.hpp"
+#include "core/averaging/DominantFrequency.hpp"
 #include "core/io/FieldFrameWriter.hpp"
 #include "engines/closures/MinimumFluidization.hpp"
 #include "engines/mfm/BedMeasures.hpp"
@@ -156,6 +157,23 @@ MfmStage::MfmStage() {
                .options({"lun1984", "syamlal_algebraic", "syamlal_algebraic_mfix"})
                .doc("kinetic theory of the viscous regime: Lun et al. 1984 with Ma-Ahmadi (Chapter 5), or "
                     "Eqs. 3.21-3.25 as printed or with MFiX's (3e+1)/2"))
+      .add(ParamSpec::string("closure")
+               .defaultValue("ktgf")
+               .options({"ktgf", "table"})
+               .doc("solids closures: kinetic theory (kinetic_model), or DEM closure tables from the workflow "
+                    "database for table_quantities with kinetic_model for the rest"))
+      .add(ParamSpec::string("closure_table")
+               .doc("closure \"table\": the tables' name (a tabulate stage's `table`; give that stage in `from` "
+                    "when this workflow makes them)"))
+      .add(ParamSpec::stringList("table_quantities")
+               .defaultValue(json::array({"pressure", "shear_viscosity", "dissipation"}))
+               .options({"pressure", "shear_viscosity", "dissipation"})
+               .doc("closure \"table\": what the tables supply (p_theta, eta_theta, j_theta); conductivity, bulk "
+                    "viscosity and the gas terms always come from kinetic_model"))
+      .add(ParamSpec::string("out_of_range")
+               .options({"error", "clamp", "kinetic_theory"})
+               .doc("closure \"table\", required: a state outside a table stops the run, takes the table's edge "
+                    "value, or kinetic_model's (counted in the summary's table coverage)"))
       .add(ParamSpec::string("granular_energy")
                .defaultValue("pde")
                .options({"pde", "algebraic"})
@@ -250,9 +268,32 @@ void MfmStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   for (const auto& [where, what] : makeMfmSetup(p).problems) d.add(ptr + where, what);
 }
 
+std::vector<ClosureTableRef> MfmStage::closureTables(const json& p) const {
+  std::vector<ClosureTableRef> refs;
+  if (p.at("closure").get<std::string>() != "table" || !p.contains("closure_table")) return refs;
+  for (const auto& q : p.at("table_quantities")) {
+    refs.push_back({p.at("closure_table").get<std::string>(), tableQuantity(q.get<std::string>()), "/closure_table"});
+  }
+  return refs;
+}
+
+void MfmStage::checkAgainstUpstream(const json& p, const std::string& ptr, const std::vector<UpstreamPlan>& upstream,
+                                    core::json::Diagnostics& d) const {
+  const bool table = p.at("closure").get<std::string>() == "table";
+  for (const auto& up : upstream) {
+    if (!up.output.closureTables) {
+      d.add(ptr, "`from` " + up.stage + ": an mfm stage takes only tabulate stages (whose tables it reads)");
+    } else if (!table || p.value("closure_table", "") != *up.output.closureTables) {
+      d.add(ptr + "/closure_table", "`from` " + up.stage + " makes the tables \"" + *up.output.closureTables +
+                                        "\", which this stage does not read (closure \"table\" with that "
+                                        "closure_table)");
+    }
+  }
+}
+
 void MfmStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
-  const MfmSetup setup = makeMfmSetup(p);
+  const MfmSetup setup = makeMfmSetup(p, &ctx.closureTables());
   if (!setup.problems.empty()) {
     throw Error("/stages/" + ctx.stage() + "/params" + setup.problems.front().first + ": " +
                 setup.problems.front().second);
@@ -308,8 +349,14 @@ void MfmStage::run(StageContext& ctx) const {
   json summary;
   const auto& window = observed.windowSamples();
   for (std::size_t k = 0; k < setup.taps.size(); ++k) {
-    addAverage(summary, "dp_" + setup.taps[k].name, window.at("dp_" + setup.taps[k].name));
-    if (k == 0) addAverage(summary, "pressure_drop", window.at("dp_" + setup.taps[k].name));
+    const std::string column = "dp_" + setup.taps[k].name;
+    addAverage(summary, column, window.at(column));
+    if (k == 0) addAverage(summary, "pressure_drop", window.at(column));
+    // The fluctuation's dominant frequency and amplitude over the window (Fig. 7.3).
+    if (const auto spectrum = core::averaging::dominantFrequency(window.at(column), setup.engine.interval)) {
+      summary[column + "_frequency"] = spectrum->frequency;
+      summary[column + "_amplitude"] = spectrum->amplitude;
+    }
   }
   for (std::size_t m = 0; m < solids.size(); ++m) {
     addAverage(summary, "mean_height_" + solids[m].name, window.at("mean_height_" + solids[m].name));
@@ -337,6 +384,18 @@ void MfmStage::run(StageContext& ctx) const {
                                     setup.engine.settings.gravity.norm()};
       summary["drag_umf"] = closures::minimumFluidizationVelocity(setup.engine.model.drag, bed);
       break;
+    }
+  }
+  if (setup.engine.model.closure.kind() == "table") {
+    // The share of the bed the tables covered, by cell-steps and by solids volume, over every
+    // converged step and the cells holding solids; the rest took the out-of-range policy.
+    summary["table_cell_steps"] = stats.tableCellSteps;
+    summary["table_coverage_cell_steps"] =
+        stats.tableCellSteps > 0 ? static_cast<double>(stats.coveredCellSteps) / stats.tableCellSteps : 0.0;
+    summary["table_coverage_solids"] =
+        stats.tableSolidsSteps > 0.0 ? stats.coveredSolidsSteps / stats.tableSolidsSteps : 0.0;
+    for (const auto& record : ctx.closureTables()) {
+      summary["table_sha256_" + record.at("quantity").get<std::string>()] = record.at("sha256");
     }
   }
   if (!solids.empty() && initialVolume > 0.0) {

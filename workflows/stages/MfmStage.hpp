@@ -4,7 +4,9 @@
 // outlets) and initial regions. It writes field frames (HDF5 + XDMF), a series at every output
 // interval (pressure drops between taps, Eq. 5.22 mean particle heights, solids volumes, the
 // solver's step), time-averaged fields with block-averaging errors over the averaging window,
-// and a summary of the time-averaged pressure drops and heights with their errors.
+// and a summary of the time-averaged pressure drops and heights with their errors. The solids
+// closures are kinetic theory (`ktgf`) or DEM closure tables (`table`) the executor loads from
+// the workflow database (docs/multi-fluid.md).
 #include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -24,9 +26,15 @@ class MfmStage final : public StageType {
     return "multi-fluid gas-solids flow (two-fluid model): staggered grid, modified SIMPLE, frames and series";
   }
   [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
-  [[nodiscard]] InputMode inputMode() const override { return InputMode::None; }
+  // `from` only names the tabulate stages whose tables a `table` closure reads.
+  [[nodiscard]] InputMode inputMode() const override { return InputMode::PerInstance; }
   void checkParams(const nlohmann::json& resolved, const std::string& pointer,
                    core::json::Diagnostics& diagnostics) const override;
+  void checkAgainstUpstream(const nlohmann::json& resolved, const std::string& pointer,
+                            const std::vector<UpstreamPlan>& upstream,
+                            core::json::Diagnostics& diagnostics) const override;
+  // closure "table": closure_table's p_theta, eta_theta and j_theta, as table_quantities names.
+  [[nodiscard]] std::vector<ClosureTableRef> closureTables(const nlohmann::json& resolved) const override;
   void run(StageContext& ctx) const override;
   // The summary's pressure drops (one per tap, the first also as pressure_drop), for the checks
   // of the stages that read them (fluidization).

@@ -18,6 +18,7 @@ struct PlannedOutput {
   std::optional<double> leesEdwardsShearRate;  // 1/s; 0 when the run is not sheared
   std::optional<std::int64_t> particleCount;   // particles with ids 0..count-1 (none read from a file)
   std::vector<std::string> summaryKeys;        // summary values it will record that downstream checks read
+  std::optional<std::string> closureTables;    // the name of the closure tables it makes (tabulate)
 };
 
 // One upstream instance as the config loader hands it to a downstream stage's check.

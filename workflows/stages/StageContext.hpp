@@ -78,6 +78,10 @@ class StageContext {
   // Deterministic results worth showing in status and reports (no timings, no hosts).
   void setSummary(nlohmann::json summary) { summary_ = std::move(summary); }
 
+  // The closure tables the stage declared (StageType::closureTables), loaded by the executor:
+  // db::ClosureStore::tableRecord objects.
+  void setClosureTables(nlohmann::json tables) { closureTables_ = std::move(tables); }
+  [[nodiscard]] const nlohmann::json& closureTables() const { return closureTables_; }
   // The workflow database's path, for a report to name (a stage never opens it).
   void setDatabasePath(std::string path) { databasePath_ = std::move(path); }
   [[nodiscard]] const std::string& databasePath() const { return databasePath_; }
@@ -109,6 +113,7 @@ class StageContext {
   nlohmann::json records_ = nlohmann::json::object();
   report::Findings findings_;
   std::string databasePath_;
+  nlohmann::json closureTables_ = nlohmann::json::array();
 };
 
 }  // namespace grainbridge::workflows::stages

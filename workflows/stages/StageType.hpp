@@ -25,6 +25,14 @@ struct ResultColumn {
   std::string unit;
 };
 
+// A closure table an instance reads from the workflow database, and the parameter naming it
+// (below the stage's /params, for messages).
+struct ClosureTableRef {
+  std::string name;
+  std::string quantity;  // p_theta, eta_theta, j_theta
+  std::string pointer;
+};
+
 class StageType {
  public:
   virtual ~StageType() = default;
@@ -52,6 +60,13 @@ class StageType {
   virtual void checkAgainstUpstream(const nlohmann::json& /*resolved*/, const std::string& /*pointer*/,
                                     const std::vector<UpstreamPlan>& /*upstream*/,
                                     core::json::Diagnostics& /*diagnostics*/) const {}
+  // The closure tables an instance with these resolved params reads from the workflow database
+  // (a continuum stage's `table` closure). The planner puts each table's content hash into the
+  // stage key (for a table a tabulate stage in `from` makes, that stage's key stands for it);
+  // the executor loads them before the instance runs (StageContext::closureTables).
+  [[nodiscard]] virtual std::vector<ClosureTableRef> closureTables(const nlohmann::json& /*resolved*/) const {
+    return {};
+  }
   // The summary values a report shows as columns and plots, in order; every summary value is in
   // the stage's CSV regardless. Empty: the report shows the summary values that vary (no plots,
   // as their units are not declared).

@@ -22,6 +22,12 @@ class TabulateStage final : public StageType {
   }
   [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
   [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
+  // The tables it makes are named by `table` (a continuum stage downstream reads them).
+  [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override {
+    PlannedOutput out;
+    out.closureTables = resolved.at("table").get<std::string>();
+    return out;
+  }
   void run(StageContext& ctx) const override;
 
  private:
