@@ -21,7 +21,7 @@ while (($#)); do
     *) echo "usage: bench/mfm-goldschmidt.sh [--duration SECONDS]" >&2; exit 2 ;;
   esac
 done
-gb=${GRAINBRIDGE:-$repo/build-release/bin/grainbridge}
+gb=$(realpath -m "${GRAINBRIDGE:-$repo/build-release/bin/grainbridge}")
 [[ -x "$gb" ]] || { echo "no grainbridge binary at $gb: run scripts/quickstart.sh first (or set GRAINBRIDGE)" >&2; exit 2; }
 core=$(($(nproc) - 1))
 
@@ -64,7 +64,7 @@ steps = s["solver_steps"]
 iterations = steps * s["iterations_per_step"]
 print(f"simulated: {duration:g} s, solver steps {steps}, {s['iterations_per_step']:.2f} iterations per step, "
       f"{s['retries']} retried")
-print(f"mean particle height (5-10 s window: {duration / 2:g}-{duration:g} s): {s['mean_height']:.4f} +- "
+print(f"mean particle height (averaged over {duration / 2:g}-{duration:g} s): {s['mean_height']:.4f} +- "
       f"{s['mean_height_err']:.4f} m; pressure drop {s['pressure_drop']:.0f} +- {s['pressure_drop_err']:.0f} Pa")
 print(f"wall: {wall:.1f} s (stage); cell updates per second: {cells * steps / wall:.4g} "
       f"(x outer iterations: {cells * iterations / wall:.4g})")
