@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "db/ClosureStore.hpp"
@@ -24,6 +26,26 @@ fs::path onlyInstance(const fs::path& stageDir) {
     if (e.is_directory() && e.path().extension() != ".partial") return e.path();
   }
   return {};
+}
+
+// One CSV line's fields; a quoted field may hold commas and doubled quotes.
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      out.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      out.emplace_back();
+    } else {
+      out.back() += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -113,6 +135,45 @@ TEST(MfmStage, GoldschmidtSmokeRunsKineticTheoryWithWallsWithAndWithoutRotation)
     EXPECT_TRUE(fs::exists(bed / "mean/fields.xmf"));
   }
   EXPECT_EQ(beds, 2);
+
+  // The heights stage (bed_compare) matched each run to its Table 5.3 value by the sweep's
+  // rotation_model, and the experiment to both.
+  std::map<std::string, double> heightOf;  // by rotation_model as written
+  for (const auto& e : fs::directory_iterator(work.path() / "results/goldschmidt-mono-smoke/bed")) {
+    const json manifest = json::parse(readText(e.path() / "manifest.json"));
+    heightOf[manifest.at("sweep_point").at("rotation_model").dump()] =
+        manifest.at("summary").at("mean_height").get<double>();
+  }
+  const fs::path heights = onlyInstance(work.path() / "results/goldschmidt-mono-smoke/heights");
+  ASSERT_FALSE(heights.empty());
+  const json findings = json::parse(readText(heights / "manifest.json")).at("findings");
+  EXPECT_EQ(findings.at("rows").size(), 2u);
+  for (const char* f : {"solid_fraction_maps.svg", "mean_height.svg", "pressure_drop.svg", "bed_compare.html"}) {
+    EXPECT_TRUE(fs::exists(heights / f)) << f;
+  }
+  std::map<std::string, int> rowsPerReference;
+  std::istringstream csv(readText(heights / "beds.csv"));
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) {
+    // "bed (rotation_model false)",lun1984,h,...,"Table 5.3 model",reference,0.0921,deviation
+    const bool rotation = line.find("rotation_model true") != std::string::npos;
+    const double h = heightOf.at(rotation ? "true" : "false");
+    const auto fields = splitCsvLine(line);
+    ASSERT_EQ(fields.size(), 16u) << line;
+    EXPECT_DOUBLE_EQ(std::stod(fields[2]), h);
+    const double reference = std::stod(fields[14]);
+    if (fields[12] == "Table 5.3 model") {
+      EXPECT_EQ(reference, rotation ? 0.0973 : 0.0921) << line;
+    } else {
+      EXPECT_EQ(fields[12], "experiment");
+      EXPECT_EQ(reference, 0.1140) << line;
+    }
+    EXPECT_NEAR(std::stod(fields[15]), (h - reference) / reference, 1e-12);
+    ++rowsPerReference[fields[12]];
+  }
+  EXPECT_EQ(rowsPerReference["Table 5.3 model"], 2);
+  EXPECT_EQ(rowsPerReference["experiment"], 2);
 }
 
 namespace {
@@ -188,4 +249,32 @@ TEST(MfmStage, ReadsClosureTablesMadeUpstreamOrNamedInTheDatabaseAndCountsTheirC
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("/stages/bed/params/closure_table"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("\"missing\""), std::string::npos) << bad.output;
+}
+
+TEST(MfmStage, TsujiJetSmokeRunsOnTheSolverDefaultsAndPlotsThePressureDrop) {
+  // configs/tsuji-jet-tfm-smoke.json: the Chapter 7 central jet (39 m/s into a packed 22 cm bed
+  // of 4 mm grains) for 0.1 s on the solver's defaults, the case MFiX 21.3.2 aborts within
+  // 0.13 s unless its residual normalisation is switched off.
+  TempDir work;
+  fs::copy_file(sourceDir() / "configs/tsuji-jet-tfm-smoke.json", work.path() / "smoke.json");
+  const auto r = runGrainbridge(work.path(), "run smoke.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const fs::path bed = onlyInstance(work.path() / "results/tsuji-jet-tfm-smoke/bed");
+  ASSERT_FALSE(bed.empty());
+  const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
+  EXPECT_GT(summary.at("solver_steps").get<int>(), 0);
+  EXPECT_TRUE(summary.contains("retries"));
+  // The drop between the inlet and 20 cm carries (part of) the bed: positive, and below the
+  // weight of the whole 22 cm bed by more than the averaging error.
+  EXPECT_GT(summary.at("dp_jet").get<double>(), 0.0);
+  EXPECT_LT(summary.at("dp_jet").get<double>() + summary.at("dp_jet_err").get<double>(),
+            summary.at("bed_weight").get<double>());
+  EXPECT_LT(std::abs(summary.at("solids_volume_change").get<double>()), 1e-6);
+  // The comparing stage drew the pressure drop against time from the run's series.
+  const fs::path jet = onlyInstance(work.path() / "results/tsuji-jet-tfm-smoke/jet_pressure");
+  ASSERT_FALSE(jet.empty());
+  EXPECT_TRUE(fs::exists(jet / "pressure_drop.svg"));
+  const json findings = json::parse(readText(jet / "manifest.json")).at("findings");
+  ASSERT_EQ(findings.at("rows").size(), 1u);
+  EXPECT_NE(findings.at("headline").get<std::string>().find("mean particle height"), std::string::npos);
 }

@@ -60,6 +60,28 @@ void checkFigure(const Figure& f, const std::string& name) {
   }
 }
 
+// Feeds `script` to gnuplot; throws naming the figure when it fails or leaves a file empty.
+void runGnuplot(const std::string& text, const fs::path& dir, const std::string& stem, const DrawnFigure& out) {
+  const fs::path errors = dir / (stem + ".gnuplot-errors");
+  const std::string cmd = "gnuplot 2> '" + errors.string() + "'";
+  FILE* gp = ::popen(cmd.c_str(), "w");
+  if (gp == nullptr) throw Error("could not start gnuplot for figure " + (dir / stem).string());
+  std::fwrite(text.data(), 1, text.size(), gp);
+  const int rc = ::pclose(gp);
+  std::ostringstream said;
+  if (std::ifstream in(errors); in) said << in.rdbuf();
+  std::error_code ignored;
+  fs::remove(errors, ignored);
+  for (const auto& f : {out.svg, out.png}) {
+    if (rc != 0 || !fs::exists(dir / f) || fs::file_size(dir / f) == 0) {
+      throw Error("gnuplot could not draw " + (dir / f).string() +
+                  (rc == 127 || said.str().find("not found") != std::string::npos
+                       ? " (is gnuplot installed? Debian package gnuplot-nox)"
+                       : ": " + said.str()));
+    }
+  }
+}
+
 }  // namespace
 
 std::string seriesColour(std::string_view model) {
@@ -70,6 +92,7 @@ std::string seriesColour(std::string_view model) {
   if (model == "syamlal_algebraic_mfix") return "#009E73";
   if (model == "table") return "#E69F00";
   if (model == "experiment") return "#CC79A7";
+  if (model == "reference") return "#555555";  // a published model value: neutral, beside the runs
   static constexpr std::array<const char*, 3> others = {"#56B4E9", "#F0E442", "#999999"};
   std::size_t h = 0;
   for (char c : model) h = h * 31 + static_cast<unsigned char>(c);
@@ -119,25 +142,64 @@ DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::str
          << "set terminal pngcairo size 1080,860 font 'sans,22' noenhanced lw 2\nset output "
          << gnuplotString((dir / out.png).string()) << "\nreplot\nset output\n";
 
-  const fs::path errors = dir / (stem + ".gnuplot-errors");
-  const std::string cmd = "gnuplot 2> '" + errors.string() + "'";
-  FILE* gp = ::popen(cmd.c_str(), "w");
-  if (gp == nullptr) throw Error("could not start gnuplot for figure " + (dir / stem).string());
-  const std::string text = script.str();
-  std::fwrite(text.data(), 1, text.size(), gp);
-  const int rc = ::pclose(gp);
-  std::ostringstream said;
-  if (std::ifstream in(errors); in) said << in.rdbuf();
-  std::error_code ignored;
-  fs::remove(errors, ignored);
-  for (const auto& f : {out.svg, out.png}) {
-    if (rc != 0 || !fs::exists(dir / f) || fs::file_size(dir / f) == 0) {
-      throw Error("gnuplot could not draw " + (dir / f).string() +
-                  (rc == 127 || said.str().find("not found") != std::string::npos
-                       ? " (is gnuplot installed? Debian package gnuplot-nox)"
-                       : ": " + said.str()));
+  runGnuplot(script.str(), dir, stem, out);
+  return out;
+}
+
+DrawnFigure drawFieldMaps(const std::vector<FieldMap>& maps, const Axis& x, const Axis& y, const Axis& colour,
+                          double low, double high, const fs::path& dir, const std::string& stem) {
+  if (maps.empty()) throw Error("figure " + (dir / stem).string() + ": nothing to plot");
+  if (x.unit.empty() || y.unit.empty() || colour.unit.empty()) {
+    throw Error("figure " + stem + ": every axis needs a unit (\"–\" when dimensionless)");
+  }
+  for (const auto& m : maps) {
+    if (m.columns < 1 || m.rows < 1 || m.values.size() != static_cast<std::size_t>(m.columns) * m.rows) {
+      throw Error("figure " + stem + ": map '" + m.title + "' has " + std::to_string(m.values.size()) +
+                  " values for " + std::to_string(m.columns) + " x " + std::to_string(m.rows) + " cells");
     }
   }
+  DrawnFigure out{stem + ".svg", stem + ".png"};
+  std::ostringstream script;
+  script << "set encoding utf8\nset termoption noenhanced\n";
+  for (std::size_t b = 0; b < maps.size(); ++b) {
+    const FieldMap& m = maps[b];
+    script << "$m" << b << " << EOD\n";
+    for (int r = 0; r < m.rows; ++r) {
+      for (int c = 0; c < m.columns; ++c) {
+        script << core::roundTripText(m.x0 + (c + 0.5) * m.dx) << ' ' << core::roundTripText(m.y0 + (r + 0.5) * m.dy)
+               << ' ' << core::roundTripText(m.values[static_cast<std::size_t>(r) * m.columns + c]) << '\n';
+      }
+    }
+    script << "EOD\n";
+  }
+  // Perceptually uniform and readable in grey (viridis's end points and quartiles); the maps
+  // are drawn as cells (`pixels`), so the SVG holds no embedded raster.
+  std::ostringstream panels;
+  panels << "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n"
+         << "set cbrange [" << core::roundTripText(low) << ':' << core::roundTripText(high) << "]\n"
+         << "set cblabel " << gnuplotString(axisTitle(colour)) << "\nset format x '%g'\nset format y '%g'\n"
+         << "set xlabel " << gnuplotString(axisTitle(x)) << "\nset ylabel " << gnuplotString(axisTitle(y)) << "\n"
+         << "set size ratio -1\nset border lc rgb '#444444'\n"
+         << "set multiplot layout 1," << maps.size() << "\n";
+  for (std::size_t b = 0; b < maps.size(); ++b) {
+    const FieldMap& m = maps[b];
+    // One colour bar, beside the last panel: every panel shares the scale.
+    panels << (b + 1 == maps.size() ? "set colorbox\n" : "unset colorbox\n") << "set title "
+           << gnuplotString(m.title) << "\nset xtics (" << core::roundTripText(m.x0) << ", "
+           << core::roundTripText(m.x0 + 0.5 * m.columns * m.dx) << ", " << core::roundTripText(m.x0 + m.columns * m.dx)
+           << ")\nset xrange [" << core::roundTripText(m.x0) << ':'
+           << core::roundTripText(m.x0 + m.columns * m.dx) << "]\nset yrange [" << core::roundTripText(m.y0) << ':'
+           << core::roundTripText(m.y0 + m.rows * m.dy) << "]\nplot $m" << b << " using 1:2:3 with image pixels notitle\n";
+  }
+  panels << "unset multiplot\n";
+  const std::size_t width = 220 * maps.size() + 120;
+  script << "set terminal svg size " << width << ",520 font 'sans,13' noenhanced background rgb 'white'\nset output "
+         << gnuplotString((dir / out.svg).string()) << "\n"
+         << panels.str() << "set output\n"
+         << "set terminal pngcairo size " << 2 * width << ",1040 font 'sans,22' noenhanced\nset output "
+         << gnuplotString((dir / out.png).string()) << "\n"
+         << panels.str() << "set output\n";
+  runGnuplot(script.str(), dir, stem, out);
   return out;
 }
 

@@ -46,6 +46,21 @@ struct DrawnFigure {
 // when a series is malformed, an axis has no unit, or gnuplot is missing or fails.
 DrawnFigure drawFigure(const Figure& figure, const std::filesystem::path& dir, const std::string& stem);
 
+// A cell field on a 2-D grid, drawn as a colour map: `values` row-major [row][column], row 0 at
+// the bottom, `columns` x `rows` cells of `dx` x `dy` from (x0, y0).
+struct FieldMap {
+  std::string title;  // the panel's title (which run)
+  int columns = 0, rows = 0;
+  double x0 = 0.0, y0 = 0.0, dx = 1.0, dy = 1.0;
+  std::vector<double> values;
+};
+
+// Writes <dir>/<stem>.svg and .png: the maps side by side on one colour scale from `low` to
+// `high` (a time-averaged solid fraction per run), sharing the axes' labels and units and the
+// colour bar's (`colour`). Throws as drawFigure does, or when a map's values do not fill its grid.
+DrawnFigure drawFieldMaps(const std::vector<FieldMap>& maps, const Axis& x, const Axis& y, const Axis& colour,
+                          double low, double high, const std::filesystem::path& dir, const std::string& stem);
+
 // The colour (#rrggbb) of a model in every figure: fixed for the models the reports know,
 // a stable choice from the Okabe–Ito palette for any other name.
 std::string seriesColour(std::string_view model);

@@ -416,6 +416,7 @@ std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
     if (out.summaryKeys.empty()) out.summaryKeys.push_back("pressure_drop");
     out.summaryKeys.push_back("dp_" + tap.at("name").get<std::string>());
   }
+  if (!p.value("solids", json::array()).empty()) out.summaryKeys.push_back("mean_height");
   return out;
 }
 

@@ -36,8 +36,8 @@ class MfmStage final : public StageType {
   // closure "table": closure_table's p_theta, eta_theta and j_theta, as table_quantities names.
   [[nodiscard]] std::vector<ClosureTableRef> closureTables(const nlohmann::json& resolved) const override;
   void run(StageContext& ctx) const override;
-  // The summary's pressure drops (one per tap, the first also as pressure_drop), for the checks
-  // of the stages that read them (fluidization).
+  // The summary's pressure drops (one per tap, the first also as pressure_drop) and mean_height
+  // (with solids), for the checks of the stages that read them (fluidization, bed_compare).
   [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override;
 
  private:

@@ -1,6 +1,7 @@
 #include "workflows/stages/StageRegistry.hpp"
 
 #include "core/Error.hpp"
+#include "workflows/stages/BedCompareStage.hpp"
 #include "workflows/stages/CompareStage.hpp"
 #include "workflows/stages/DemStage.hpp"
 #include "workflows/stages/FluidizationStage.hpp"
@@ -24,6 +25,7 @@ const StageRegistry& StageRegistry::builtin() {
     types.push_back(std::make_unique<TabulateStage>());
     types.push_back(std::make_unique<CompareStage>());
     types.push_back(std::make_unique<FluidizationStage>());
+    types.push_back(std::make_unique<BedCompareStage>());
     types.push_back(std::make_unique<ReportStage>());
     return StageRegistry(std::move(types));
   }();

@@ -1,0 +1,415 @@
+#include "workflows/stages/BedCompareStage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "core/Files.hpp"
+#include "core/io/FieldFrameReader.hpp"
+#include "core/io/XdmfText.hpp"
+#include "core/text/NumberText.hpp"
+#include "workflows/report/NumericCsv.hpp"
+#include "workflows/report/Plot.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using nlohmann::json;
+using params::ParamSchema;
+using params::ParamSpec;
+namespace units = core::units;
+
+namespace {
+
+std::shared_ptr<const ParamSchema> referenceSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("label").required().doc("what the value is, as the table heads it (\"Table 5.3\")"))
+      .add(ParamSpec::string("kind")
+               .defaultValue("reference")
+               .options({"reference", "experiment"})
+               .doc("a model's published value or a measurement (the figures' colour)"))
+      .add(ParamSpec::quantity("mean_height", units::Dimension::lengthDim())
+               .required()
+               .positive()
+               .doc("the time-averaged mean particle height (Eq. 5.22)"))
+      .add(ParamSpec::stringList("match").defaultValue(json::array()).doc(
+          "the runs it applies to, as \"<swept parameter>=<value as written in the sweep>\" or "
+          "\"stage=<name>\", all of them to hold; none: every run"));
+  return s;
+}
+
+// "k=v" split at the first '='; nullopt when there is none or either side is empty.
+std::optional<std::pair<std::string, std::string>> splitMatch(const std::string& m) {
+  const auto eq = m.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == m.size()) return std::nullopt;
+  return std::make_pair(m.substr(0, eq), m.substr(eq + 1));
+}
+
+// A JSON value as a sweep entry writes it: strings verbatim, the rest as JSON text.
+std::string writtenText(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+struct Reference {
+  std::string label, kind;
+  double height = 0.0;
+  std::vector<std::pair<std::string, std::string>> match;
+};
+
+// One upstream bed run, with what the comparison reads of it.
+struct Bed {
+  const UpstreamInstance* instance = nullptr;
+  std::string label;    // "bed (gas_inflow 1.92 m/s, rotation_model true)"
+  std::string closure;  // the colour key: its kinetic model, or "table"
+  std::string dp;       // the compared tap's column: dp_<tap>
+  json summary, written;
+  [[nodiscard]] double value(const std::string& k) const {
+    return summary.contains(k) && summary[k].is_number() ? summary[k].get<double>() : NAN;
+  }
+  [[nodiscard]] bool matches(const Reference& r) const {
+    for (const auto& [k, v] : r.match) {
+      if (k == "stage") {
+        if (instance->stage != v) return false;
+      } else if (!written.contains(k) || writtenText(written[k]) != v) {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
+std::string percent(double relative) {
+  return (relative >= 0 ? "+" : "−") + core::humanNumber(std::abs(100.0 * relative), 2) + " %";
+}
+
+std::string withError(double v, double err, int significant = 4) {
+  if (!std::isfinite(v)) return "–";
+  return core::humanNumber(v, significant) + (std::isfinite(err) && err > 0 ? " ± " + core::humanNumber(err, 2) : "");
+}
+
+std::string lastComponent(const std::string& pointer) {
+  const auto slash = pointer.rfind('/');
+  return slash == std::string::npos ? pointer : pointer.substr(slash + 1);
+}
+
+// The time-averaged solid fraction (all phases) over the horizontal and vertical axes of the
+// run's mean fields, averaged over the third axis.
+report::FieldMap solidFractionMap(const Bed& bed) {
+  const UpstreamInstance& up = *bed.instance;
+  std::filesystem::path file;
+  for (const auto& a : up.manifest.value("artifacts", json::array())) {
+    const std::string path = a.value("path", "");
+    if (a.value("kind", "") == "field_frame" && path.starts_with("mean/")) file = up.dir / path;
+  }
+  if (file.empty()) {
+    throw Error("bed_compare: run " + bed.label + " (" + up.key.substr(0, 12) +
+                ") wrote no mean fields: give it an averaging window (average_from before duration)");
+  }
+  const auto frame = core::io::readFieldFrame(file);
+  const json gravity = up.manifest.at("params").at("gravity");
+  int vertical = 1;
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(gravity[a].get<double>()) > std::abs(gravity[vertical].get<double>())) vertical = a;
+  }
+  int horizontal = vertical == 0 ? 1 : 0;
+  const int depth = 3 - vertical - horizontal;
+  const auto& g = frame.grid;
+  report::FieldMap map;
+  map.title = bed.label;
+  map.columns = g.cells[static_cast<std::size_t>(horizontal)];
+  map.rows = g.cells[static_cast<std::size_t>(vertical)];
+  map.x0 = g.origin[horizontal];
+  map.y0 = g.origin[vertical];
+  map.dx = g.spacing[horizontal];
+  map.dy = g.spacing[vertical];
+  map.values.assign(static_cast<std::size_t>(map.columns) * map.rows, 0.0);
+  const int layers = g.cells[static_cast<std::size_t>(depth)];
+  for (int r = 0; r < map.rows; ++r) {
+    for (int c = 0; c < map.columns; ++c) {
+      double sum = 0.0;
+      for (int l = 0; l < layers; ++l) {
+        std::array<int, 3> ijk{};
+        ijk[static_cast<std::size_t>(horizontal)] = c;
+        ijk[static_cast<std::size_t>(vertical)] = r;
+        ijk[static_cast<std::size_t>(depth)] = l;
+        const std::size_t cell = g.index(ijk[0], ijk[1], ijk[2]);
+        for (const auto& phase : frame.solids) sum += phase.ep_s[cell];
+      }
+      map.values[static_cast<std::size_t>(r) * map.columns + c] = sum / layers;
+    }
+  }
+  return map;
+}
+
+// A horizontal line across [t0, t1] at a reference's height.
+report::Series referenceLine(const Reference& r, double t0, double t1, int variant) {
+  report::Series s;
+  s.label = r.label + ": " + core::humanNumber(r.height, 4) + " m";
+  s.model = r.kind;
+  s.style = report::Series::Style::Line;
+  s.variant = variant;
+  s.x = {t0, t1};
+  s.y = {r.height, r.height};
+  return s;
+}
+
+}  // namespace
+
+BedCompareStage::BedCompareStage() {
+  schema_
+      .add(ParamSpec::objectList("references", referenceSchema())
+               .doc("published or measured mean particle heights, each for the runs it matches"))
+      .add(ParamSpec::string("tap").defaultValue("").doc(
+          "the pressure tap whose drop is compared and plotted (\"\": each run's first, its pressure_drop)"))
+      .add(ParamSpec::string("title")
+               .defaultValue("Multi-fluid beds side by side")
+               .doesNotAffectResults()
+               .doc("the findings' title"));
+}
+
+void BedCompareStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
+  const json refs = p.value("references", json::array());
+  for (std::size_t r = 0; r < refs.size(); ++r) {
+    const json match = refs[r].value("match", json::array());
+    for (std::size_t m = 0; m < match.size(); ++m) {
+      if (!splitMatch(match[m].get<std::string>())) {
+        d.add(ptr + "/references/" + std::to_string(r) + "/match/" + std::to_string(m),
+              "expected \"<swept parameter>=<value>\" or \"stage=<name>\", found \"" + match[m].get<std::string>() +
+                  "\"");
+      }
+    }
+  }
+}
+
+void BedCompareStage::checkAgainstUpstream(const json& p, const std::string& ptr,
+                                           const std::vector<UpstreamPlan>& upstream,
+                                           core::json::Diagnostics& d) const {
+  const std::string tap = p.at("tap");
+  for (const auto& up : upstream) {
+    const auto& keys = up.output.summaryKeys;
+    if (std::find(keys.begin(), keys.end(), "mean_height") == keys.end()) {
+      d.add(ptr, "upstream stage " + up.stage + " records no mean_height: bed_compare takes mfm stages with solids");
+      return;
+    }
+    const std::string dp = tap.empty() ? "pressure_drop" : "dp_" + tap;
+    if (std::find(keys.begin(), keys.end(), dp) == keys.end()) {
+      d.add(ptr + (tap.empty() ? "" : "/tap"), "upstream stage " + up.stage + " records no \"" + dp +
+                                                   "\" (give it that pressure tap, pressure_taps)");
+      return;
+    }
+  }
+  // A reference matching on a parameter no upstream run is swept over would silently match
+  // nothing: refuse it now, not after the beds ran.
+  const json refs = p.value("references", json::array());
+  for (std::size_t r = 0; r < refs.size(); ++r) {
+    const json match = refs[r].value("match", json::array());
+    for (std::size_t m = 0; m < match.size(); ++m) {
+      const auto kv = splitMatch(match[m].get<std::string>());
+      if (!kv) continue;
+      const bool known = std::any_of(upstream.begin(), upstream.end(), [&](const UpstreamPlan& up) {
+        return kv->first == "stage" ? up.stage == kv->second : up.sweepPoint.contains(kv->first);
+      });
+      if (!known) {
+        d.add(ptr + "/references/" + std::to_string(r) + "/match/" + std::to_string(m),
+              kv->first == "stage" ? "no upstream stage is named \"" + kv->second + "\""
+                                   : "no upstream stage is swept over \"" + kv->first + "\"");
+      }
+    }
+  }
+}
+
+void BedCompareStage::run(StageContext& ctx) const {
+  const json& p = ctx.params();
+  if (ctx.inputs().empty()) throw Error("bed_compare: no upstream runs; give it \"from\" (mfm stages)");
+  std::vector<Reference> references;
+  for (const auto& r : p.value("references", json::array())) {
+    Reference ref{r.at("label"), r.at("kind"), r.at("mean_height"), {}};
+    for (const auto& m : r.at("match")) ref.match.push_back(*splitMatch(m.get<std::string>()));
+    references.push_back(std::move(ref));
+  }
+  const std::string tap = p.at("tap");
+
+  std::vector<Bed> beds;
+  for (const auto& up : ctx.inputs()) {
+    Bed bed;
+    bed.instance = &up;
+    bed.summary = up.manifest.value("summary", json::object());
+    bed.written = up.manifest.value("sweep_written", json::object());
+    if (bed.written.empty()) bed.written = up.manifest.value("sweep_point", json::object());
+    if (!bed.summary.contains("mean_height")) {
+      throw Error("bed_compare: upstream " + up.stage + " (" + up.key.substr(0, 12) +
+                  ") has no mean_height: bed_compare takes mfm stages with solids");
+    }
+    const json& params = up.manifest.at("params");
+    bed.closure = params.value("closure", "ktgf") == "table" ? "table" : params.value("kinetic_model", "lun1984");
+    const json taps = params.value("pressure_taps", json::array());
+    if (tap.empty() && taps.empty()) {
+      throw Error("bed_compare: upstream " + up.stage + " (" + up.key.substr(0, 12) + ") has no pressure tap");
+    }
+    bed.dp = "dp_" + (tap.empty() ? taps.at(0).at("name").get<std::string>() : tap);
+    std::string sweep;
+    for (const auto& [k, v] : bed.written.items()) {
+      sweep += (sweep.empty() ? "" : ", ") + lastComponent(k) + " " + writtenText(v);
+    }
+    bed.label = up.stage + (sweep.empty() ? "" : " (" + sweep + ")");
+    beds.push_back(std::move(bed));
+  }
+  std::sort(beds.begin(), beds.end(), [](const Bed& a, const Bed& b) { return a.label < b.label; });
+  for (std::size_t r = 0; r < references.size(); ++r) {
+    if (std::none_of(beds.begin(), beds.end(), [&](const Bed& b) { return b.matches(references[r]); })) {
+      throw Error("bed_compare: /references/" + std::to_string(r) + " (" + references[r].label +
+                  ") matches no run; its match values must be written as in the sweep");
+    }
+  }
+
+  // beds.csv: every number, one row per run and reference it matches (a run without any: one row).
+  std::ostringstream csv;
+  csv << "run,closure,mean_height,mean_height_err,pressure_drop,pressure_drop_err,dp_frequency,dp_amplitude,"
+         "table_coverage_cell_steps,table_coverage_solids,solver_steps,retries,reference,reference_kind,"
+         "reference_height,deviation\n";
+  auto quoted = [](const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+  };
+  // Full precision (read back by programs); a value the run did not record (a coverage under
+  // ktgf, a frequency of a series too short) is an empty field.
+  auto number = [](double v) { return std::isfinite(v) ? core::roundTripText(v) : std::string(); };
+  auto runFields = [&](const Bed& bed) {
+    const std::string& dp = bed.dp;
+    std::string out = quoted(bed.label) + ',' + bed.closure;
+    for (const std::string& k : {std::string("mean_height"), std::string("mean_height_err"), dp, dp + "_err",
+                                 dp + "_frequency", dp + "_amplitude", std::string("table_coverage_cell_steps"),
+                                 std::string("table_coverage_solids"), std::string("solver_steps"),
+                                 std::string("retries")}) {
+      out += ',' + number(bed.value(k));
+    }
+    return out;
+  };
+  report::Findings findings;
+  findings.title = p.at("title").get<std::string>();
+  findings.details = "bed_compare.html";
+  std::vector<std::string> referenceLabels;
+  for (const auto& r : references) {
+    if (std::find(referenceLabels.begin(), referenceLabels.end(), r.label) == referenceLabels.end())
+      referenceLabels.push_back(r.label);
+  }
+  const bool anyTable = std::any_of(beds.begin(), beds.end(), [](const Bed& b) { return b.closure == "table"; });
+  findings.columns = {"run", "closure", "mean height [m]"};
+  for (const auto& l : referenceLabels) findings.columns.push_back("vs " + l);
+  findings.columns.emplace_back("pressure drop [Pa]");
+  findings.columns.emplace_back("Δp frequency [Hz]");
+  if (anyTable) findings.columns.emplace_back("table coverage (cell-steps / solids)");
+  std::ostringstream headline;
+  json summary = {{"beds", beds.size()}};
+  for (const auto& bed : beds) {
+    const double h = bed.value("mean_height"), hErr = bed.value("mean_height_err");
+    const std::string& dpKey = bed.dp;
+    const double frequency = bed.value(dpKey + "_frequency");
+    std::vector<std::string> row = {bed.label, bed.closure, withError(h, hErr)};
+    std::ostringstream compared;
+    bool matchedAny = false;
+    for (const auto& l : referenceLabels) {
+      std::string cell = "–";
+      for (const auto& r : references) {
+        if (r.label != l || !bed.matches(r)) continue;
+        const double deviation = (h - r.height) / r.height;
+        cell = core::humanNumber(r.height, 4) + " m: " + percent(deviation);
+        compared << (compared.tellp() > 0 ? "; " : "") << r.label << " " << core::humanNumber(r.height, 4)
+                 << " m: " << percent(deviation);
+        csv << runFields(bed) << ',' << quoted(r.label) << ',' << r.kind << ',' << number(r.height) << ','
+            << number(deviation) << '\n';
+        matchedAny = true;
+      }
+      row.push_back(cell);
+    }
+    if (!matchedAny) {
+      csv << runFields(bed) << ",,,,\n";
+    }
+    row.push_back(withError(bed.value(dpKey), bed.value(dpKey + "_err")));
+    row.push_back(std::isfinite(frequency) ? core::humanNumber(frequency, 3) : "–");
+    std::string coverage;
+    if (bed.closure == "table") {
+      coverage = core::humanNumber(100.0 * bed.value("table_coverage_cell_steps"), 3) + " % / " +
+                 core::humanNumber(100.0 * bed.value("table_coverage_solids"), 3) + " %";
+    }
+    if (anyTable) row.push_back(bed.closure == "table" ? coverage : "–");
+    findings.rows.push_back(std::move(row));
+    headline << bed.label << ": mean particle height " << withError(h, hErr) << " m";
+    if (compared.tellp() > 0) headline << " (" << compared.str() << ")";
+    if (bed.closure == "table") headline << ", the table covering " << coverage << " of the cell-steps / solids";
+    headline << ". ";
+  }
+  headline << "Time-averaged over each run's averaging window, errors by block averaging; deviation = (run − "
+              "value) / value.";
+  findings.headline = headline.str();
+  core::writeFileAtomically(ctx.outputDir() / "beds.csv", csv.str());
+  ctx.addArtifact("beds.csv", "csv");
+
+  // Figures: the maps side by side, then the height and the pressure drop against time.
+  auto addFigure = [&](const report::DrawnFigure& drawn, const std::string& caption) {
+    ctx.addArtifact(drawn.svg, "svg");
+    ctx.addArtifact(drawn.png, "png");
+    findings.figures.push_back({drawn.svg, drawn.png, caption});
+  };
+  std::vector<report::FieldMap> maps;
+  double highest = 0.0;
+  for (const auto& bed : beds) {
+    maps.push_back(solidFractionMap(bed));
+    for (double v : maps.back().values) highest = std::max(highest, v);
+  }
+  addFigure(report::drawFieldMaps(maps, {"x", "m"}, {"height", "m"}, {"time-averaged solid fraction", "–"}, 0.0,
+                                  std::max(0.6, highest), ctx.outputDir(), "solid_fraction_maps"),
+            "Time-averaged solid fraction (all solids phases), one panel per run");
+
+  report::Figure height{"Mean particle height (Eq. 5.22)", {"time", "s"}, {"mean particle height", "m"}, {}};
+  report::Figure drop{"Pressure drop" + (tap.empty() ? std::string() : " (" + tap + ")"), {"time", "s"},
+                      {"pressure drop", "Pa"}, {}};
+  const double t0 = 0.0;
+  double t1 = 0.0;
+  std::map<std::string, int> variants;  // per closure: a dash per run
+  for (const auto& bed : beds) {
+    const auto series = report::readNumericCsv(bed.instance->dir / "series.csv");
+    const std::string phase = bed.instance->manifest.at("params").at("solids").at(0).at("name");
+    const auto time = series.find("time");
+    if (time == series.end()) throw Error("bed_compare: " + (bed.instance->dir / "series.csv").string() + " has no time");
+    const int variant = variants[bed.closure]++;
+    if (const auto h = series.find("mean_height_" + phase); h != series.end()) {
+      height.series.push_back({bed.label, bed.closure, report::Series::Style::Line, variant, time->second, h->second, {}});
+    }
+    if (const auto dp = series.find(bed.dp); dp != series.end()) {
+      drop.series.push_back({bed.label, bed.closure, report::Series::Style::Line, variant, time->second, dp->second, {}});
+    }
+    if (!time->second.empty()) t1 = std::max(t1, time->second.back());
+  }
+  int referenceVariant = 1;
+  for (const auto& r : references) height.series.push_back(referenceLine(r, t0, t1, referenceVariant++));
+  addFigure(report::drawFigure(height, ctx.outputDir(), "mean_height"),
+            "Mean particle height against time, with the reference values");
+  addFigure(report::drawFigure(drop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");
+  ctx.setFindings(findings);
+
+  std::ostringstream html;
+  const std::string title = core::io::xmlEscape(findings.title);
+  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << title
+       << "</title><style>body{font-family:sans-serif;margin:1.5em;max-width:90em}table{border-collapse:collapse}"
+       << "td,th{border:1px solid #ccc;padding:0.2em 0.5em}img{max-width:100%}</style></head><body>\n<h1>" << title
+       << "</h1>\n<p>" << core::io::xmlEscape(findings.headline) << "</p>\n<table><tr>";
+  for (const auto& c : findings.columns) html << "<th>" << core::io::xmlEscape(c) << "</th>";
+  html << "</tr>\n";
+  for (const auto& row : findings.rows) {
+    html << "<tr>";
+    for (const auto& c : row) html << "<td>" << core::io::xmlEscape(c) << "</td>";
+    html << "</tr>\n";
+  }
+  html << "</table>\n<p>Every number: <a href=\"beds.csv\">beds.csv</a>. PNG copies for slides sit beside each "
+          "SVG.</p>\n";
+  for (const auto& f : findings.figures) {
+    html << "<p><a href=\"" << f.png << "\"><img src=\"" << f.svg << "\" alt=\"" << core::io::xmlEscape(f.caption)
+         << "\"></a><br>" << core::io::xmlEscape(f.caption) << "</p>\n";
+  }
+  html << "</body></html>\n";
+  core::writeFileAtomically(ctx.outputDir() / "bed_compare.html", html.str());
+  ctx.addArtifact("bed_compare.html", "report_html");
+  ctx.setSummary(summary);
+}
+
+}  // namespace grainbridge::workflows::stages

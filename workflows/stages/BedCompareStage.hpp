@@ -1,0 +1,36 @@
+#pragma once
+// `bed_compare`: fluidized-bed runs of the multi-fluid model side by side, with the numbers they
+// are judged by. Gathers mfm instances (a sweep, or one bed under `ktgf` and one under `table`)
+// and, per run: the time-averaged Eq. 5.22 mean particle height and pressure drop with their
+// block-averaging errors, each against the reference values the config names for it (the
+// reference's Table 5.3, an experiment), the pressure fluctuation's dominant frequency, and the
+// share of the bed a closure table covered (by cell-steps and by solids volume). Figures: the
+// time-averaged solid-fraction maps side by side on one colour scale, the mean particle height
+// and the pressure drop against time. Findings lead the report; beds.csv has every number.
+#include "workflows/stages/StageType.hpp"
+
+namespace grainbridge::workflows::stages {
+
+class BedCompareStage final : public StageType {
+ public:
+  BedCompareStage();
+  [[nodiscard]] std::string name() const override { return "bed_compare"; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}}; }
+  [[nodiscard]] std::string summary() const override {
+    return "multi-fluid bed runs side by side: heights and pressure drops against references, solid-fraction maps";
+  }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
+  void checkParams(const nlohmann::json& resolved, const std::string& pointer,
+                   core::json::Diagnostics& diagnostics) const override;
+  void checkAgainstUpstream(const nlohmann::json& resolved, const std::string& pointer,
+                            const std::vector<UpstreamPlan>& upstream,
+                            core::json::Diagnostics& diagnostics) const override;
+  void run(StageContext& ctx) const override;
+
+ private:
+  params::ParamSchema schema_;
+};
+
+}  // namespace grainbridge::workflows::stages
