@@ -25,6 +25,20 @@ std::string gnuplotString(std::string_view s) {
   return out + "'";
 }
 
+// A double-quoted gnuplot string: the one kind in which "\n" breaks a line (panel titles).
+std::string gnuplotLines(std::string_view s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '\n') {
+      out += "\\n";
+    } else {
+      if (c == '"' || c == '\\') out += '\\';
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string axisTitle(const Axis& axis) { return axis.label + " [" + axis.unit + "]"; }
 
 // Filled circle, square, triangle, diamond, inverted triangle, pentagon (gnuplot pt codes).
@@ -180,19 +194,21 @@ DrawnFigure drawFieldMaps(const std::vector<FieldMap>& maps, const Axis& x, cons
          << "set cblabel " << gnuplotString(axisTitle(colour)) << "\nset format x '%g'\nset format y '%g'\n"
          << "set xlabel " << gnuplotString(axisTitle(x)) << "\nset ylabel " << gnuplotString(axisTitle(y)) << "\n"
          << "set size ratio -1\nset border lc rgb '#444444'\n"
-         << "set multiplot layout 1," << maps.size() << "\n";
+         // Equal panels in the left 88 %, one colour bar for all of them at the right (a bar
+         // beside the last panel would shrink it).
+         << "set colorbox user origin 0.91,0.15 size 0.015,0.7\n"
+         << "set multiplot layout 1," << maps.size() << " margins 0.075,0.88,0.1,0.85 spacing 0.05,0\n";
   for (std::size_t b = 0; b < maps.size(); ++b) {
     const FieldMap& m = maps[b];
-    // One colour bar, beside the last panel: every panel shares the scale.
     panels << (b + 1 == maps.size() ? "set colorbox\n" : "unset colorbox\n") << "set title "
-           << gnuplotString(m.title) << "\nset xtics (" << core::roundTripText(m.x0) << ", "
+           << gnuplotLines(m.title) << "\nset xtics (" << core::roundTripText(m.x0) << ", "
            << core::roundTripText(m.x0 + 0.5 * m.columns * m.dx) << ", " << core::roundTripText(m.x0 + m.columns * m.dx)
            << ")\nset xrange [" << core::roundTripText(m.x0) << ':'
            << core::roundTripText(m.x0 + m.columns * m.dx) << "]\nset yrange [" << core::roundTripText(m.y0) << ':'
            << core::roundTripText(m.y0 + m.rows * m.dy) << "]\nplot $m" << b << " using 1:2:3 with image pixels notitle\n";
   }
   panels << "unset multiplot\n";
-  const std::size_t width = 220 * maps.size() + 120;
+  const std::size_t width = 230 * maps.size() + 140;
   script << "set terminal svg size " << width << ",520 font 'sans,13' noenhanced background rgb 'white'\nset output "
          << gnuplotString((dir / out.svg).string()) << "\n"
          << panels.str() << "set output\n"

@@ -49,7 +49,7 @@ DrawnFigure drawFigure(const Figure& figure, const std::filesystem::path& dir, c
 // A cell field on a 2-D grid, drawn as a colour map: `values` row-major [row][column], row 0 at
 // the bottom, `columns` x `rows` cells of `dx` x `dy` from (x0, y0).
 struct FieldMap {
-  std::string title;  // the panel's title (which run)
+  std::string title;  // the panel's title (which run); '\n' breaks it into lines
   int columns = 0, rows = 0;
   double x0 = 0.0, y0 = 0.0, dx = 1.0, dy = 1.0;
   std::vector<double> values;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "core/Error.hpp"
@@ -57,7 +58,8 @@ struct Reference {
 // One upstream bed run, with what the comparison reads of it.
 struct Bed {
   const UpstreamInstance* instance = nullptr;
-  std::string label;    // "bed (gas_inflow 1.92 m/s, rotation_model true)"
+  std::string label;       // "bed (gas_inflow 1.92 m/s, rotation_model true)"
+  std::string panelTitle;  // the same, a line each: "bed\ngas_inflow 1.92 m/s\nrotation_model true"
   std::string closure;  // the colour key: its kinetic model, or "table"
   std::string dp;       // the compared tap's column: dp_<tap>
   json summary, written;
@@ -113,7 +115,7 @@ report::FieldMap solidFractionMap(const Bed& bed) {
   const int depth = 3 - vertical - horizontal;
   const auto& g = frame.grid;
   report::FieldMap map;
-  map.title = bed.label;
+  map.title = bed.panelTitle;
   map.columns = g.cells[static_cast<std::size_t>(horizontal)];
   map.rows = g.cells[static_cast<std::size_t>(vertical)];
   map.x0 = g.origin[horizontal];
@@ -137,18 +139,6 @@ report::FieldMap solidFractionMap(const Bed& bed) {
     }
   }
   return map;
-}
-
-// A horizontal line across [t0, t1] at a reference's height.
-report::Series referenceLine(const Reference& r, double t0, double t1, int variant) {
-  report::Series s;
-  s.label = r.label + ": " + core::humanNumber(r.height, 4) + " m";
-  s.model = r.kind;
-  s.style = report::Series::Style::Line;
-  s.variant = variant;
-  s.x = {t0, t1};
-  s.y = {r.height, r.height};
-  return s;
 }
 
 }  // namespace
@@ -246,8 +236,10 @@ void BedCompareStage::run(StageContext& ctx) const {
     }
     bed.dp = "dp_" + (tap.empty() ? taps.at(0).at("name").get<std::string>() : tap);
     std::string sweep;
+    bed.panelTitle = up.stage;
     for (const auto& [k, v] : bed.written.items()) {
       sweep += (sweep.empty() ? "" : ", ") + lastComponent(k) + " " + writtenText(v);
+      bed.panelTitle += "\n" + lastComponent(k) + " " + writtenText(v);
     }
     bed.label = up.stage + (sweep.empty() ? "" : " (" + sweep + ")");
     beds.push_back(std::move(bed));
@@ -360,11 +352,39 @@ void BedCompareStage::run(StageContext& ctx) const {
                                   std::max(0.6, highest), ctx.outputDir(), "solid_fraction_maps"),
             "Time-averaged solid fraction (all solids phases), one panel per run");
 
+  // The time-averaged heights per run (the table's rows, in order) beside the reference values
+  // matched to each: one legend entry per closure and per reference label.
+  report::Figure averaged{"Time-averaged mean particle height (Eq. 5.22)", {"run (row of the table)", "–"},
+                          {"mean particle height", "m"}, {}};
+  std::map<std::string, report::Series> byClosure, byReference;
+  for (std::size_t b = 0; b < beds.size(); ++b) {
+    const Bed& bed = beds[b];
+    auto& run = byClosure[bed.closure];
+    run.label = "runs, " + bed.closure;
+    run.model = bed.closure;
+    run.style = report::Series::Style::PointsWithErrors;
+    run.x.push_back(static_cast<double>(b + 1));
+    run.y.push_back(bed.value("mean_height"));
+    run.yError.push_back(std::isfinite(bed.value("mean_height_err")) ? bed.value("mean_height_err") : 0.0);
+    for (const auto& r : references) {
+      if (!bed.matches(r)) continue;
+      auto& ref = byReference[r.label];
+      ref.label = r.label;
+      ref.model = r.kind;
+      ref.style = report::Series::Style::Points;
+      ref.variant = static_cast<int>(byReference.size());
+      ref.x.push_back(static_cast<double>(b + 1));
+      ref.y.push_back(r.height);
+    }
+  }
+  for (auto& [k, series] : byClosure) averaged.series.push_back(std::move(series));
+  for (auto& [k, series] : byReference) averaged.series.push_back(std::move(series));
+  addFigure(report::drawFigure(averaged, ctx.outputDir(), "mean_height_averaged"),
+            "Time-averaged mean particle height per run (block-averaging errors) beside the reference values");
+
   report::Figure height{"Mean particle height (Eq. 5.22)", {"time", "s"}, {"mean particle height", "m"}, {}};
   report::Figure drop{"Pressure drop" + (tap.empty() ? std::string() : " (" + tap + ")"), {"time", "s"},
                       {"pressure drop", "Pa"}, {}};
-  const double t0 = 0.0;
-  double t1 = 0.0;
   std::map<std::string, int> variants;  // per closure: a dash per run
   for (const auto& bed : beds) {
     const auto series = report::readNumericCsv(bed.instance->dir / "series.csv");
@@ -378,12 +398,8 @@ void BedCompareStage::run(StageContext& ctx) const {
     if (const auto dp = series.find(bed.dp); dp != series.end()) {
       drop.series.push_back({bed.label, bed.closure, report::Series::Style::Line, variant, time->second, dp->second, {}});
     }
-    if (!time->second.empty()) t1 = std::max(t1, time->second.back());
   }
-  int referenceVariant = 1;
-  for (const auto& r : references) height.series.push_back(referenceLine(r, t0, t1, referenceVariant++));
-  addFigure(report::drawFigure(height, ctx.outputDir(), "mean_height"),
-            "Mean particle height against time, with the reference values");
+  addFigure(report::drawFigure(height, ctx.outputDir(), "mean_height"), "Mean particle height against time");
   addFigure(report::drawFigure(drop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");
   ctx.setFindings(findings);
 

@@ -5,8 +5,9 @@
 // block-averaging errors, each against the reference values the config names for it (the
 // reference's Table 5.3, an experiment), the pressure fluctuation's dominant frequency, and the
 // share of the bed a closure table covered (by cell-steps and by solids volume). Figures: the
-// time-averaged solid-fraction maps side by side on one colour scale, the mean particle height
-// and the pressure drop against time. Findings lead the report; beds.csv has every number.
+// time-averaged solid-fraction maps side by side on one colour scale, the time-averaged heights
+// beside the reference values, and the mean particle height and the pressure drop against
+// time. Findings lead the report; beds.csv has every number.
 #include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::stages {
