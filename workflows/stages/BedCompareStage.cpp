@@ -10,6 +10,8 @@
 #include "core/io/FieldFrameReader.hpp"
 #include "core/io/XdmfText.hpp"
 #include "core/text/NumberText.hpp"
+#include "engines/mfm/BedMeasures.hpp"
+#include "workflows/report/CsvField.hpp"
 #include "workflows/report/NumericCsv.hpp"
 #include "workflows/report/Plot.hpp"
 
@@ -107,11 +109,9 @@ report::FieldMap solidFractionMap(const Bed& bed) {
   }
   const auto frame = core::io::readFieldFrame(file);
   const json gravity = up.manifest.at("params").at("gravity");
-  int vertical = 1;
-  for (int a = 0; a < 3; ++a) {
-    if (std::abs(gravity[a].get<double>()) > std::abs(gravity[vertical].get<double>())) vertical = a;
-  }
-  int horizontal = vertical == 0 ? 1 : 0;
+  const int vertical =
+      mfm::verticalAxis(Vec3(gravity[0].get<double>(), gravity[1].get<double>(), gravity[2].get<double>())).axis;
+  const int horizontal = vertical == 0 ? 1 : 0;
   const int depth = 3 - vertical - horizontal;
   const auto& g = frame.grid;
   report::FieldMap map;
@@ -238,8 +238,9 @@ void BedCompareStage::run(StageContext& ctx) const {
     std::string sweep;
     bed.panelTitle = up.stage;
     for (const auto& [k, v] : bed.written.items()) {
-      sweep += (sweep.empty() ? "" : ", ") + lastComponent(k) + " " + writtenText(v);
-      bed.panelTitle += "\n" + lastComponent(k) + " " + writtenText(v);
+      const std::string part = lastComponent(k) + " " + writtenText(v);
+      sweep += (sweep.empty() ? "" : ", ") + part;
+      bed.panelTitle += "\n" + part;
     }
     bed.label = up.stage + (sweep.empty() ? "" : " (" + sweep + ")");
     beds.push_back(std::move(bed));
@@ -257,17 +258,12 @@ void BedCompareStage::run(StageContext& ctx) const {
   csv << "run,closure,mean_height,mean_height_err,pressure_drop,pressure_drop_err,dp_frequency,dp_amplitude,"
          "table_coverage_cell_steps,table_coverage_solids,solver_steps,retries,reference,reference_kind,"
          "reference_height,deviation\n";
-  auto quoted = [](const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-  };
   // Full precision (read back by programs); a value the run did not record (a coverage under
   // ktgf, a frequency of a series too short) is an empty field.
   auto number = [](double v) { return std::isfinite(v) ? core::roundTripText(v) : std::string(); };
   auto runFields = [&](const Bed& bed) {
     const std::string& dp = bed.dp;
-    std::string out = quoted(bed.label) + ',' + bed.closure;
+    std::string out = report::csvField(bed.label) + ',' + bed.closure;
     for (const std::string& k : {std::string("mean_height"), std::string("mean_height_err"), dp, dp + "_err",
                                  dp + "_frequency", dp + "_amplitude", std::string("table_coverage_cell_steps"),
                                  std::string("table_coverage_solids"), std::string("solver_steps"),
@@ -307,7 +303,7 @@ void BedCompareStage::run(StageContext& ctx) const {
         cell = core::humanNumber(r.height, 4) + " m: " + percent(deviation);
         compared << (compared.tellp() > 0 ? "; " : "") << r.label << " " << core::humanNumber(r.height, 4)
                  << " m: " << percent(deviation);
-        csv << runFields(bed) << ',' << quoted(r.label) << ',' << r.kind << ',' << number(r.height) << ','
+        csv << runFields(bed) << ',' << report::csvField(r.label) << ',' << r.kind << ',' << number(r.height) << ','
             << number(deviation) << '\n';
         matchedAny = true;
       }
@@ -368,11 +364,14 @@ void BedCompareStage::run(StageContext& ctx) const {
     run.yError.push_back(std::isfinite(bed.value("mean_height_err")) ? bed.value("mean_height_err") : 0.0);
     for (const auto& r : references) {
       if (!bed.matches(r)) continue;
+      const bool first = !byReference.contains(r.label);
       auto& ref = byReference[r.label];
-      ref.label = r.label;
-      ref.model = r.kind;
-      ref.style = report::Series::Style::Points;
-      ref.variant = static_cast<int>(byReference.size());
+      if (first) {  // a point shape per reference label, kept for all its runs
+        ref.label = r.label;
+        ref.model = r.kind;
+        ref.style = report::Series::Style::Points;
+        ref.variant = static_cast<int>(byReference.size());
+      }
       ref.x.push_back(static_cast<double>(b + 1));
       ref.y.push_back(r.height);
     }
