@@ -70,6 +70,19 @@ void FieldFrame::validate() const {
       }
       checkLength(extra.values, "extra/" + extra.name, n * static_cast<std::size_t>(extra.components));
     }
+    if (!materials.empty()) {
+      materials.validate();
+      if (materials.species.size() != solids.size()) {
+        throw Error("materials name " + std::to_string(materials.species.size()) + " species for " +
+                    std::to_string(solids.size()) + " solids phases");
+      }
+      for (std::size_t m = 0; m < solids.size(); ++m) {
+        if (materials.species[m].name != solids[m].name) {
+          throw Error("materials species " + std::to_string(m) + " is '" + materials.species[m].name +
+                      "', the solids phase '" + solids[m].name + "'");
+        }
+      }
+    }
   } catch (const Error& e) {
     throw e.withContext("field frame at step " + std::to_string(step));
   }

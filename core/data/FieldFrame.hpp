@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/Types.hpp"
+#include "core/data/Materials.hpp"
 
 namespace grainbridge::core::data {
 
@@ -56,9 +57,15 @@ struct FieldFrame {
   std::vector<Vec3> u_g;          // gas velocity
   std::vector<SolidsPhaseFields> solids;
   std::vector<NamedCellField> extras;  // written under /extra only when present
+  // What the fields are of (DESIGN.md, "Field frames carry their materials too"): gravity, and
+  // each solids phase as a species (name, diameter, density) in the order of `solids`, so a
+  // reader never needs the params of the stage that wrote the frame. Empty in a frame that does
+  // not know them (coarse-grained DEM fields, older files).
+  Materials materials;
 
   // Throws grainbridge::Error naming the array whose length is not the cell count, a bad
-  // grid, or a phase name that is empty, repeated or not a plain identifier.
+  // grid, a phase name that is empty, repeated or not a plain identifier, or materials whose
+  // species are not the solids phases.
   void validate() const;
 
   bool operator==(const FieldFrame&) const = default;

@@ -7,6 +7,7 @@
 #include "core/Error.hpp"
 #include "core/io/FrameFiles.hpp"
 #include "core/io/H5InputFile.hpp"
+#include "core/io/MaterialsIo.hpp"
 
 namespace grainbridge::core::io {
 
@@ -93,6 +94,7 @@ data::FieldFrame readFieldFrame(const std::filesystem::path& path) {
     extra.values = f.readDoubles("/extra/" + name, shape);
     frame.extras.push_back(std::move(extra));
   }
+  frame.materials = readMaterials(f);
   try {
     frame.validate();
   } catch (const Error& e) {

@@ -7,6 +7,7 @@
 #include "core/Files.hpp"
 #include "core/io/FrameFiles.hpp"
 #include "core/io/H5OutputFile.hpp"
+#include "core/io/MaterialsIo.hpp"
 #include "core/io/XdmfText.hpp"
 
 namespace grainbridge::core::io {
@@ -109,6 +110,7 @@ void FieldFrameWriter::writeFile(const std::filesystem::path& path, const data::
       f.writeAttribute("/extra/" + extra.name, "index", static_cast<std::int32_t>(k));
     }
   }
+  writeMaterials(f, frame.materials);
   f.close();
 }
 

@@ -7,6 +7,8 @@
 //     /grid   @origin (x y z) @spacing (dx dy dz) @cells (nx ny nz)
 //     /ep_g [nz,ny,nx]  /p_g [nz,ny,nx]  /u_g [nz,ny,nx,3]
 //     /solids/<name>  @index (phase order)  ep_s [nz,ny,nx] u_s [nz,ny,nx,3] theta [nz,ny,nx]
+//     /materials  gravity and each solids phase's name, diameter and density (core/io/MaterialsIo),
+//                 when the frame has them
 //   <directory>/fields.xmf  temporal collection of 3DCoRectMesh grids, Center="Cell"
 //
 // Cell-centred values only; equal frames give byte-identical files.

@@ -1,5 +1,5 @@
 #pragma once
-// The materials contract (core/data/Materials) in a particle frame file: group /materials with
+// The materials contract (core/data/Materials) in a particle or field frame file: group /materials with
 //   species_diameter, species_density           [n_species]   and attributes species_name_<s>
 //   pair_species [n_pairs x 2] (int32), pair_restitution, pair_friction, pair_stiffness,
 //   pair_tangential_stiffness                    [n_pairs]

@@ -30,6 +30,10 @@ ClosureModel ClosureModel::tabulated(KineticModelName model, std::optional<Tabul
   return m;
 }
 
+double ClosureModel::modelPressure(const KineticState& state, const KineticTransport& evaluated) const {
+  return pressure_ ? closures::evaluate(model_, state).pressure : evaluated.pressure;
+}
+
 KineticTransport ClosureModel::evaluate(const KineticState& state) const {
   KineticTransport t = closures::evaluate(model_, state);
   if (pressure_) t.pressure = pressure_->evaluate(state).value;

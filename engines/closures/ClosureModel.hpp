@@ -33,6 +33,11 @@ class ClosureModel {
   // Throws grainbridge::Error for a state the model refuses (validate(KineticState)) or, under
   // the error policy, outside a table.
   [[nodiscard]] KineticTransport evaluate(const KineticState& state) const;
+  // The kinetic model's own pressure at `state`, given `evaluated` = evaluate(state): that
+  // value itself when no table supplies the pressure, so a caller that needs the model's
+  // pressure beside the closure's (the solids-pressure slope) evaluates the model once per cell
+  // without asking which kind of closure it holds.
+  [[nodiscard]] double modelPressure(const KineticState& state, const KineticTransport& evaluated) const;
   // Evaluations that fell outside a table, over every table of the model.
   [[nodiscard]] std::int64_t outOfRangeCount() const;
   // Whether every table of the model holds `state` (its solid fraction and restitution inside

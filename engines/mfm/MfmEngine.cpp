@@ -58,7 +58,10 @@ core::data::FieldFrame MfmEngine::frame() const {
   f.p_g.resize(n);
   f.u_g.resize(n);
   const auto& solids = engine_->model().params().solids;
+  // The materials the fields are of, so readers need no stage params (DESIGN.md, field frames).
+  f.materials.gravity = engine_->settings().gravity;
   for (const auto& s : solids) {
+    f.materials.species.push_back({s.name, s.diameter, s.density});
     core::data::SolidsPhaseFields phase;
     phase.name = s.name;
     phase.ep_s.resize(n);

@@ -177,10 +177,8 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   closures::KineticState shifted = kin.state;
   const double step = 1e-7;
   shifted.solidFraction = std::min(eps + step, 1.0 - 1e-12);
-  // With ktgf the closure's own pressure is that model's: no second evaluation on this hot path.
-  const double p0 = params_.closure.kind() == "ktgf"
-                        ? kin.transport.pressure
-                        : closures::evaluate(params_.closure.kineticModel(), kin.state).pressure;
+  // Where no table supplies the pressure the closure's is the model's: no second evaluation.
+  const double p0 = params_.closure.modelPressure(kin.state, kin.transport);
   const double p1 = closures::evaluate(params_.closure.kineticModel(), shifted).pressure;
   double slope = std::max((p1 - p0) / (shifted.solidFraction - eps), 0.0);
   if (pl.plastic) {

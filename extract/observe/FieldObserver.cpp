@@ -25,7 +25,7 @@ void FieldObserver::finish(OutputSink& out, ExtractResult& /*result*/) {
   core::io::FieldFrameWriter meanWriter(dir / "mean", options_.stamp);
   meanWriter.write(average_.mean());
   for (const auto& f : core::io::listFieldFrames(dir / "mean")) {
-    out.addArtifact(f.lexically_relative(dir).string(), "field_frame");
+    out.addArtifact(f.lexically_relative(dir).string(), "mean_field_frame");
   }
   out.addArtifact("mean/fields.xmf", "xdmf");
 }

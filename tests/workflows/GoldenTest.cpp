@@ -35,6 +35,23 @@ void digestArray(std::ostringstream& out, const std::vector<T>& v) {
   out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
 }
 
+void digestMaterials(std::ostringstream& out, const core::data::Materials& m) {
+  for (const auto& sp : m.species) {
+    out << sp.name << ' ';
+    out.write(reinterpret_cast<const char*>(&sp.diameter), sizeof(double));
+    out.write(reinterpret_cast<const char*>(&sp.density), sizeof(double));
+  }
+  for (const auto* list : {&m.pairs, &m.walls}) {
+    for (const auto& c : *list) {
+      out << c.speciesA << ' ' << c.speciesB << ' ' << c.wall << ' ';
+      out.write(reinterpret_cast<const char*>(&c.restitution), sizeof(double));
+      out.write(reinterpret_cast<const char*>(&c.friction), sizeof(double));
+      out.write(reinterpret_cast<const char*>(&c.stiffness), sizeof(double));
+      out.write(reinterpret_cast<const char*>(&c.tangentialStiffness), sizeof(double));
+    }
+  }
+}
+
 std::string fieldFrameDigest(const fs::path& file) {
   const auto f = core::io::readFieldFrame(file);
   std::ostringstream out;
@@ -55,6 +72,11 @@ std::string fieldFrameDigest(const fs::path& file) {
     out << extra.name << ' ' << extra.components << ' ';
     digestArray(out, extra.values);
   }
+  // The materials, where the frame carries them (a frame without digests as before).
+  if (!f.materials.empty()) {
+    digestMaterials(out, f.materials);
+    out.write(reinterpret_cast<const char*>(f.materials.gravity.data()), 3 * sizeof(double));
+  }
   return core::sha256Hex(out.str());
 }
 
@@ -70,7 +92,7 @@ std::string reportPageDigest(const fs::path& file) {
 }
 
 std::string contentDigest(const fs::path& file, const std::string& kind) {
-  if (kind == "field_frame") return fieldFrameDigest(file);
+  if (kind == "field_frame" || kind == "mean_field_frame") return fieldFrameDigest(file);
   if (kind == "report_html") return reportPageDigest(file);
   // A PNG is the raster of the SVG beside it (report/Plot draws both from one script), and its
   // bytes depend on the machine's fonts and cairo: the SVG carries the figure's content.
@@ -90,22 +112,8 @@ std::string contentDigest(const fs::path& file, const std::string& kind) {
   };
   digestVectors({&f.position, &f.velocity, &f.angularVelocity, &f.externalForce});
   // The materials the frame carries for its readers.
-  const auto& m = f.materials;
-  for (const auto& sp : m.species) {
-    out << sp.name << ' ';
-    out.write(reinterpret_cast<const char*>(&sp.diameter), sizeof(double));
-    out.write(reinterpret_cast<const char*>(&sp.density), sizeof(double));
-  }
-  for (const auto* list : {&m.pairs, &m.walls}) {
-    for (const auto& c : *list) {
-      out << c.speciesA << ' ' << c.speciesB << ' ' << c.wall << ' ';
-      out.write(reinterpret_cast<const char*>(&c.restitution), sizeof(double));
-      out.write(reinterpret_cast<const char*>(&c.friction), sizeof(double));
-      out.write(reinterpret_cast<const char*>(&c.stiffness), sizeof(double));
-      out.write(reinterpret_cast<const char*>(&c.tangentialStiffness), sizeof(double));
-    }
-  }
-  out.write(reinterpret_cast<const char*>(m.gravity.data()), 3 * sizeof(double));
+  digestMaterials(out, f.materials);
+  out.write(reinterpret_cast<const char*>(f.materials.gravity.data()), 3 * sizeof(double));
   // The contact lists carry the contact law's forces: a changed law must show even where the
   // trajectory is not yet different. (A frame without contacts digests as before.)
   const auto& c = f.contacts;

@@ -10,6 +10,7 @@
 #include "workflows/report/Findings.hpp"
 #include "workflows/report/HtmlReport.hpp"
 #include "workflows/report/Plot.hpp"
+#include "workflows/stages/StageRegistry.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge;
@@ -123,11 +124,11 @@ class ReportPage : public ::testing::Test {
     writeText(shear / "particles.xmf", "<Xdmf/>");
     artifacts.push_back({{"path", "particles.xmf"}, {"kind", "xdmf"}});
     const double side = 13.7823 * 1e-3;
-    instances.push_back({"shear", "dem", std::string(64, 'a'), shear,
+    instances.emplace_back("shear", "dem", std::string(64, 'a'), shear,
                          json{{"sweep_point", {{"box_hi", {side, side, side}}}},
                               {"sweep_written", {{"box_hi", {"13.7823 mm", "13.7823 mm", "13.7823 mm"}}}},
                               {"summary", {{"final_coordination", 0.012}, {"steps", 600000}}},
-                              {"artifacts", artifacts}}});
+                              {"artifacts", artifacts}});
     const fs::path kt = root.path() / "wf/kt/def";
     fs::create_directories(kt);
     report::drawFigure(twoModelFigure(), kt, "compare_tau_shear");
@@ -137,22 +138,22 @@ class ReportPage : public ::testing::Test {
     f.columns = {"largest deviation from", "τ*"};
     f.rows = {{"lun1984", "−16.9 % (φ 0.1, e 0.8)"}};
     f.figures = {{"compare_tau_shear.svg", "compare_tau_shear.png", "τ*"}};
-    instances.push_back({"kt", "compare", std::string(64, 'b'), kt,
+    instances.emplace_back("kt", "compare", std::string(64, 'b'), kt,
                          json{{"summary", {{"points", 6}}},
                               {"findings", f.toJson()},
                               {"artifacts",
                                {{{"path", "compare_tau_shear.svg"}, {"kind", "svg"}},
-                                {{"path", "compare_tau_shear.png"}, {"kind", "png"}}}}}});
+                                {{"path", "compare_tau_shear.png"}, {"kind", "png"}}}}});
     out = root.path() / "wf/report";
     fs::create_directories(out);
   }
   TempDir root;
-  std::vector<workflows::stages::UpstreamInstance> instances;
+  std::vector<workflows::contract::UpstreamInstance> instances;
   fs::path out;
 };
 
 TEST_F(ReportPage, LeadsWithFindingsAndSummarisesOutputsInOneLine) {
-  const auto files = report::writeHtmlReport({"t", "results/wf/grainbridge.sqlite"}, instances, out, out);
+  const auto files = report::writeHtmlReport({"t", "results/wf/grainbridge.sqlite", workflows::stages::StageRegistry::builtin().reportView()}, instances, out, out);
   ASSERT_EQ(files.findings.size(), 1u);
   const std::string page = readText(out / "report.html");
   const auto findings = page.find("<section id=\"findings\">");
@@ -177,7 +178,7 @@ TEST_F(ReportPage, LeadsWithFindingsAndSummarisesOutputsInOneLine) {
 }
 
 TEST_F(ReportPage, EveryTableRowHoldsAtMostTwoLinks) {
-  report::writeHtmlReport({"t", ""}, instances, out, out);
+  report::writeHtmlReport({"t", "", workflows::stages::StageRegistry::builtin().reportView()}, instances, out, out);
   const std::string page = readText(out / "report.html");
   const std::regex row("<tr>(.*?)</tr>");
   int rows = 0;

@@ -112,11 +112,11 @@ std::vector<ClosureEntry> makeCatalog() {
     p->add(ParamSpec::number("c")
                .defaultValue(gc::SyamlalOBrien::Params{}.c)
                .positive()
-               .doc("C of Eq. 3.13 (eps_g <= 0.85)"))
+               .doc("C of Eq. 3.13 (eps_g <= 0.85; Table 4.3)"))
         .add(ParamSpec::number("d")
                  .defaultValue(gc::SyamlalOBrien::Params{}.d)
                  .positive()
-                 .doc("D of Eq. 3.13 (eps_g > 0.85); C and D must "
+                 .doc("D of Eq. 3.13 (eps_g > 0.85; Table 4.3); C and D must "
                       "satisfy Eq. 3.14 within 1 %"));
     out.push_back({"syamlal_obrien", "gas-solids drag of Syamlal and O'Brien, the multi-fluid default",
                    "Eqs. 3.10-3.16", "Syamlal and O'Brien 1987; MFIX DRAG_TYPE SYAM_OBRIEN", p, dragInputs(),
@@ -216,7 +216,11 @@ std::vector<ClosureEntry> makeCatalog() {
                         "MFIX gt_algebraic (2005-21.3)"));
   {
     auto p = schema();
-    p->add(fraction("critical_void_fraction", "eps_g*, where the plastic regime starts (usually eps_mf)"))
+    p->add(ParamSpec::number("critical_void_fraction")
+               .required()
+               .min(0.0, false)
+               .max(1.0, false)
+               .doc("eps_g*, where the plastic regime begins (Eqs. 3.26-3.27; usually eps_mf)"))
         .add(ParamSpec::quantity("coefficient", Dimension::pressure())
                  .defaultValue(gc::PlasticRegime::Params{}.coefficient)
                  .positive()
@@ -257,7 +261,7 @@ std::vector<ClosureEntry> makeCatalog() {
                .defaultValue(gc::JohnsonJackson::Params{}.specularity)
                .min(0.0)
                .max(1.0)
-               .doc("phi'"))
+               .doc("specularity phi': 0 free slip, 1 every collision diffuse (VALIDATION.md: MFiX's run used 0.6)"))
         .add(ParamSpec::number("max_solid_fraction")
                  .required()
                  .min(0.0, false)
@@ -348,6 +352,13 @@ const ClosureEntry* findClosure(std::string_view name) {
     if (e.name == name) return &e;
   }
   return nullptr;
+}
+
+params::ParamSpec closureParameter(std::string_view law, const std::string& key) {
+  const ClosureEntry* entry = findClosure(law);
+  const params::ParamSpec* spec = entry != nullptr ? entry->params->find(key) : nullptr;
+  if (spec == nullptr) throw Error("closure catalog: law " + std::string(law) + " has no parameter " + key);
+  return *spec;
 }
 
 }  // namespace grainbridge::workflows::closures

@@ -43,5 +43,8 @@ struct ClosureEntry {
 const std::vector<ClosureEntry>& closureCatalog();
 // nullptr when no law has that name.
 const ClosureEntry* findClosure(std::string_view name);
+// The declaration of parameter `key` of law `law`, for a stage to include (renamed to its config
+// key where the two differ); throws grainbridge::Error naming both when there is none.
+params::ParamSpec closureParameter(std::string_view law, const std::string& key);
 
 }  // namespace grainbridge::workflows::closures

@@ -217,15 +217,16 @@ int commandReport(const CommandOptions& opt) {
       continue;
     }
     const fs::path dir = root / entry->instanceDir;
-    json manifest = exec::readManifest(dir);
+    done.emplace_back(inst.stage, inst.type->name(), inst.key, dir, exec::readManifest(dir));
     // The sweep as the config wrote it now (a cached instance may predate the wording).
-    if (!inst.sweepWritten.empty()) manifest["sweep_written"] = inst.sweepWritten;
-    done.push_back({inst.stage, inst.type->name(), inst.key, dir, std::move(manifest)});
+    if (!inst.sweepWritten.empty()) done.back().setSweepWritten(inst.sweepWritten);
   }
   const fs::path out = root / cfg.name / "report";
   fs::create_directories(out);
   const auto written = report::writeHtmlReport(
-      {"grainbridge report: " + cfg.name, exec::databasePath(cfg, opt.workDir).string()}, done, out, out);
+      {"grainbridge report: " + cfg.name, exec::databasePath(cfg, opt.workDir).string(),
+       stages::StageRegistry::builtin().reportView()},
+      done, out, out);
   // The page's path first (scripts read it), then on a terminal what the page leads with.
   const fs::path page = out / "report.html";
   std::printf("%s\n", page.c_str());

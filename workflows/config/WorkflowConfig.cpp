@@ -206,10 +206,13 @@ void checkAgainstUpstreams(const WorkflowConfig& cfg, const std::set<std::string
         upstreamClean = false;
         continue;
       }
-      for (const auto& point : sweepPoints(up->sweep)) {
-        if (auto planned = up->type->plannedOutput(withSweepPoint(up->params, point))) {
-          upstream.push_back({name, point, *planned});
-        }
+      const auto points = sweepPoints(up->sweep);
+      const auto written = sweepPointsAsWritten(up->sweep);
+      for (std::size_t k = 0; k < points.size(); ++k) {
+        // A type that promises nothing hands on an empty plan: a stage that needs a product
+        // refuses it by name instead of failing after the upstream ran.
+        const auto planned = up->type->plannedOutput(withSweepPoint(up->params, points[k]));
+        upstream.push_back({name, points[k], written[k], planned.value_or(stages::PlannedOutput{})});
       }
     }
     if (!upstreamClean || upstream.empty()) continue;

@@ -72,7 +72,7 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
     std::vector<stages::UpstreamInstance> inputs;
     for (const auto& u : task.upstream) {
       const fs::path dir = resultsRoot / u.dir;
-      inputs.push_back({u.stage, u.stageType, u.key, dir, readManifest(dir)});
+      inputs.emplace_back(u.stage, u.stageType, u.key, dir, readManifest(dir));
     }
     stages::StageContext ctx(task.workflow, task.stage, task.key, task.params, partialDir, std::move(inputs), comm,
                              core::units::UnitSystem::fromJson(task.units), stop);

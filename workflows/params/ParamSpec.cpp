@@ -12,6 +12,12 @@ ParamSpec::ParamSpec(std::string name, ParamKind kind, core::units::Dimension di
 ParamSpec ParamSpec::quantity(std::string name, core::units::Dimension dim) {
   return ParamSpec(std::move(name), ParamKind::Quantity, dim);
 }
+ParamSpec ParamSpec::renamed(std::string name) const {
+  ParamSpec copy = *this;
+  copy.name_ = std::move(name);
+  return copy;
+}
+
 ParamSpec ParamSpec::integer(std::string name) { return ParamSpec(std::move(name), ParamKind::Integer, {}); }
 ParamSpec ParamSpec::boolean(std::string name) { return ParamSpec(std::move(name), ParamKind::Boolean, {}); }
 ParamSpec ParamSpec::string(std::string name) { return ParamSpec(std::move(name), ParamKind::String, {}); }

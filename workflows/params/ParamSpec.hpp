@@ -60,6 +60,10 @@ class ParamSpec {
   static ParamSpec inputFile(std::string name);
   static ParamSpec objectList(std::string name, std::shared_ptr<const ParamSchema> schema);
 
+  // The same declaration under another name: a closure law's parameter as a stage's config
+  // names it (workflows/closures/ClosureCatalog declares it once, with its unit, range and doc).
+  [[nodiscard]] ParamSpec renamed(std::string name) const;
+
   ParamSpec& required();
   ParamSpec& defaultValue(nlohmann::json value);  // in the same forms a config accepts
   ParamSpec& min(double value, bool inclusive = true);

@@ -14,7 +14,6 @@
 #include "workflows/report/BuildDescription.hpp"
 #include "workflows/report/CsvField.hpp"
 #include "workflows/report/Plot.hpp"
-#include "workflows/stages/StageRegistry.hpp"
 
 namespace grainbridge::workflows::report {
 
@@ -63,15 +62,15 @@ std::string heading(const std::string& key, const std::string& unit) {
 
 struct StageGroup {
   std::string stage, type;
-  std::vector<const stages::UpstreamInstance*> instances;
+  std::vector<const contract::UpstreamInstance*> instances;
 };
 
-std::vector<StageGroup> groupByStage(const std::vector<stages::UpstreamInstance>& instances) {
+std::vector<StageGroup> groupByStage(const std::vector<contract::UpstreamInstance>& instances) {
   std::vector<StageGroup> groups;
   for (const auto& inst : instances) {
-    auto it = std::find_if(groups.begin(), groups.end(), [&](const StageGroup& g) { return g.stage == inst.stage; });
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const StageGroup& g) { return g.stage == inst.stage(); });
     if (it == groups.end()) {
-      groups.push_back({inst.stage, inst.stageType, {}});
+      groups.push_back({inst.stage(), inst.stageTypeLabel(), {}});
       it = groups.end() - 1;
     }
     it->instances.push_back(&inst);
@@ -79,15 +78,12 @@ std::vector<StageGroup> groupByStage(const std::vector<stages::UpstreamInstance>
   return groups;
 }
 
-json summaryOf(const stages::UpstreamInstance& inst) { return inst.manifest.value("summary", json::object()); }
-json sweepOf(const stages::UpstreamInstance& inst) { return inst.manifest.value("sweep_point", json::object()); }
-json writtenSweepOf(const stages::UpstreamInstance& inst) {
-  const json w = inst.manifest.value("sweep_written", json::object());
-  return w.empty() ? sweepOf(inst) : w;
-}
+json summaryOf(const contract::UpstreamInstance& inst) { return inst.summary(); }
+json sweepOf(const contract::UpstreamInstance& inst) { return inst.sweepPoint(); }
+json writtenSweepOf(const contract::UpstreamInstance& inst) { return inst.sweepWritten(); }
 
 // Keys in first-seen order over every instance.
-std::vector<std::string> keysOf(const StageGroup& g, json (*of)(const stages::UpstreamInstance&)) {
+std::vector<std::string> keysOf(const StageGroup& g, json (*of)(const contract::UpstreamInstance&)) {
   std::vector<std::string> keys;
   for (const auto* inst : g.instances) {
     const json values = of(*inst);  // bound: items() of a temporary would outlive it
@@ -108,10 +104,10 @@ bool isError(const std::string& key) { return key.size() > 4 && key.ends_with("_
 
 // The summary columns the table shows: the stage type's key results that vary, or, for a type
 // that declares none, the first few values that vary. Constant values go to the common line.
-std::vector<stages::ResultColumn> shownColumns(const StageGroup& g, const stages::StageType* type) {
+std::vector<contract::ResultColumn> shownColumns(const StageGroup& g, const std::optional<contract::StageTypeView>& type) {
   const auto keys = keysOf(g, summaryOf);
-  std::vector<stages::ResultColumn> out;
-  const auto declared = type != nullptr ? type->keyResults() : std::vector<stages::ResultColumn>{};
+  std::vector<contract::ResultColumn> out;
+  const auto declared = type ? type->keyResults : std::vector<contract::ResultColumn>{};
   if (!declared.empty()) {
     for (const auto& c : declared) {
       if (std::find(keys.begin(), keys.end(), c.key) != keys.end() &&
@@ -138,11 +134,8 @@ std::string cellValue(const json& summary, const std::string& key) {
 }
 
 // The SI unit of a swept parameter ("m", "" when dimensionless or unknown).
-std::string sweptUnit(const stages::StageType* type, const std::string& param) {
-  if (type == nullptr) return "";
-  std::string why;
-  const auto* spec = type->params().findPath(param, why);
-  return spec == nullptr ? "" : spec->dimension().siUnit();
+std::string sweptUnit(const std::optional<contract::StageTypeView>& type, const std::string& param) {
+  return type && type->sweptUnit ? type->sweptUnit(param) : "";
 }
 
 // A swept value as the config wrote it, with its SI value beside it when the two differ.
@@ -156,16 +149,15 @@ std::string sweptCell(const json& written, const json& si, const std::string& un
 }
 
 // Outputs of one instance on one line: counts, size, the folder and the first .xmf.
-std::string outputsCell(const stages::UpstreamInstance& inst, const fs::path& link) {
-  const json artifacts = inst.manifest.value("artifacts", json::array());
+std::string outputsCell(const contract::UpstreamInstance& inst, const fs::path& link) {
+  const auto artifacts = inst.artifacts();
   std::uintmax_t bytes = 0;
   std::string xmf;
   for (const auto& a : artifacts) {
     std::error_code ec;
-    const auto size = fs::file_size(inst.dir / a.at("path").get<std::string>(), ec);
+    const auto size = fs::file_size(inst.dir() / a.path, ec);
     if (!ec) bytes += size;
-    const std::string p = a.at("path");
-    if (xmf.empty() && p.ends_with(".xmf")) xmf = p;
+    if (xmf.empty() && a.path.ends_with(".xmf")) xmf = a.path;
   }
   std::string cell = std::to_string(artifacts.size()) + " file" + (artifacts.size() == 1 ? "" : "s") + ", " +
                      humanBytes(bytes) + " · <a href=\"" + esc(link.generic_string() + "/") + "\">folder</a>";
@@ -221,10 +213,9 @@ void writeFindings(std::ostringstream& html, const Findings& f, const fs::path& 
 
 }  // namespace
 
-ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::UpstreamInstance>& instances,
+ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<contract::UpstreamInstance>& instances,
                             const fs::path& outDir, const fs::path& publishedDir) {
   ReportFiles files;
-  const auto& registry = stages::StageRegistry::builtin();
   const auto groups = groupByStage(instances);
 
   std::ostringstream html;
@@ -241,10 +232,10 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::Up
   std::ostringstream findingsHtml;
   for (const auto& g : groups) {
     for (const auto* inst : g.instances) {
-      if (!inst->manifest.contains("findings")) continue;
-      const auto f = Findings::fromJson(inst->manifest["findings"]);
-      if (f.empty()) continue;
-      writeFindings(findingsHtml, f, inst->dir.lexically_relative(publishedDir), g.stage, firstFinding);
+      const auto found = inst->findings();
+      if (!found || found->empty()) continue;
+      const Findings& f = *found;
+      writeFindings(findingsHtml, f, inst->dir().lexically_relative(publishedDir), g.stage, firstFinding);
       firstFinding = false;
       files.findings.push_back(f);
     }
@@ -255,7 +246,7 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::Up
   std::ostringstream csv;
   csv << "stage,stage_type,key,parameter,value\n";
   for (const auto& g : groups) {
-    const stages::StageType* type = registry.find(g.type);
+    const auto type = page.stageTypes ? page.stageTypes(g.type) : std::nullopt;
     const auto sweepKeys = keysOf(g, sweepOf);
     const auto columns = shownColumns(g, type);
     html << "<section class=\"stage\" id=\"stage-" << esc(g.stage) << "\">\n<h2>Stage " << esc(g.stage) << " <small>"
@@ -294,14 +285,14 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::Up
              << "</td>";
       }
       for (const auto& c : columns) html << "<td>" << esc(cellValue(summary, c.key)) << "</td>";
-      const fs::path link = inst->dir.lexically_relative(publishedDir);
+      const fs::path link = inst->dir().lexically_relative(publishedDir);
       html << "<td class=\"l\">" << outputsCell(*inst, link) << "</td><td class=\"l\"><code>"
-           << esc(inst->key.substr(0, 12)) << "</code></td></tr>\n";
+           << esc(inst->shortKey()) << "</code></td></tr>\n";
       for (const auto& [k, v] : sweep.items())
-        csv << csvField(g.stage) << ',' << csvField(g.type) << ',' << inst->key << ",sweep." << csvField(k) << ','
+        csv << csvField(g.stage) << ',' << csvField(g.type) << ',' << inst->key() << ",sweep." << csvField(k) << ','
             << csvField(v.is_string() ? v.get<std::string>() : v.dump()) << '\n';
       for (const auto& [k, v] : summary.items())
-        csv << csvField(g.stage) << ',' << csvField(g.type) << ',' << inst->key << ',' << csvField(k) << ','
+        csv << csvField(g.stage) << ',' << csvField(g.type) << ',' << inst->key() << ',' << csvField(k) << ','
             << csvField(v.is_string() ? v.get<std::string>() : v.dump()) << '\n';
     }
     html << "</table>\n";
@@ -310,19 +301,18 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::Up
     std::vector<std::string> figureLinks;
     for (const auto* inst : g.instances) {
       std::set<std::string> inFindings;
-      if (inst->manifest.contains("findings")) {
-        for (const auto& f : Findings::fromJson(inst->manifest["findings"]).figures) inFindings.insert(f.svg);
+      if (const auto found = inst->findings()) {
+        for (const auto& f : found->figures) inFindings.insert(f.svg);
       }
-      for (const auto& a : inst->manifest.value("artifacts", json::array())) {
-        const std::string p = a.at("path");
-        if (a.value("kind", "") == "svg" && !inFindings.contains(p))
-          figureLinks.push_back((inst->dir.lexically_relative(publishedDir) / p).generic_string());
+      for (const auto& a : inst->artifacts()) {
+        if (a.kind == "svg" && !inFindings.contains(a.path))
+          figureLinks.push_back((inst->dir().lexically_relative(publishedDir) / a.path).generic_string());
       }
     }
 
     // Plots: each key result that varies, against the first numeric swept parameter.
     std::ostringstream plots;
-    if (g.instances.size() >= 2 && !sweepKeys.empty() && type != nullptr && !type->keyResults().empty()) {
+    if (g.instances.size() >= 2 && !sweepKeys.empty() && type && !type->keyResults.empty()) {
       const std::string x = sweepKeys.front();
       for (const auto& c : columns) {
         Series series;
@@ -378,7 +368,7 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::Up
     for (const auto* inst : g.instances) {
       const json sweep = sweepOf(*inst);
       const json summary = summaryOf(*inst);
-      stageCsv << inst->key;
+      stageCsv << inst->key();
       for (const auto& k : sweepKeys) stageCsv << ',' << csvValue(sweep.value(k, json()));
       for (const auto& k : summaryKeys) stageCsv << ',' << csvValue(summary.value(k, json()));
       stageCsv << '\n';

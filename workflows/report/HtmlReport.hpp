@@ -16,23 +16,24 @@
 #include <vector>
 
 #include "workflows/report/Findings.hpp"
-#include "workflows/stages/StageContext.hpp"
+#include "workflows/contract/UpstreamInstance.hpp"
 
 namespace grainbridge::workflows::report {
 
 struct ReportPage {
   std::string title;
   std::string database;  // the workflow database's path, for the footer
+  contract::StageTypeLookup stageTypes;  // key results and parameter units per stage type
 };
 
 struct ReportFiles {
-  std::vector<stages::ArtifactEntry> files;  // paths relative to the output folder
+  std::vector<contract::ArtifactEntry> files;  // paths relative to the output folder
   std::vector<Findings> findings;            // what the page leads with, in page order
 };
 
 // `outDir` is where files are written now; `publishedDir` is where they will finally live (for
 // links to upstream artifacts: the two differ while a stage writes into its .partial folder).
-ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<stages::UpstreamInstance>& instances,
+ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<contract::UpstreamInstance>& instances,
                             const std::filesystem::path& outDir, const std::filesystem::path& publishedDir);
 
 }  // namespace grainbridge::workflows::report

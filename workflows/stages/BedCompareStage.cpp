@@ -51,33 +51,34 @@ std::optional<std::pair<std::string, std::string>> splitMatch(const std::string&
 // A JSON value as a sweep entry writes it: strings verbatim, the rest as JSON text.
 std::string writtenText(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
+// Whether a run (its stage name and its sweep point as written) meets every "k=v" of a match.
+bool matchesRun(const std::vector<std::pair<std::string, std::string>>& match, const std::string& stage,
+                const json& written) {
+  for (const auto& [k, v] : match) {
+    if (k == "stage" ? stage != v : !written.contains(k) || writtenText(written[k]) != v) return false;
+  }
+  return true;
+}
+
 struct Reference {
   std::string label, kind;
   double height = 0.0;
   std::vector<std::pair<std::string, std::string>> match;
 };
 
-// One upstream bed run, with what the comparison reads of it.
+// One upstream bed run, with what the comparison reads of it: its products, never its params.
 struct Bed {
   const UpstreamInstance* instance = nullptr;
   std::string label;       // "bed (gas_inflow 1.92 m/s, rotation_model true)"
   std::string panelTitle;  // the same, a line each: "bed\ngas_inflow 1.92 m/s\nrotation_model true"
-  std::string closure;  // the colour key: its kinetic model, or "table"
-  std::string dp;       // the compared tap's column: dp_<tap>
-  json summary, written;
+  std::string closure;     // the colour key: the summary's closure (a kinetic model, or "table")
+  std::string dp;          // the compared tap's summary key and series column: dp_<tap>
+  json written;
   [[nodiscard]] double value(const std::string& k) const {
-    return summary.contains(k) && summary[k].is_number() ? summary[k].get<double>() : NAN;
+    const auto v = instance->summaryValue(k);
+    return v ? v->value : NAN;
   }
-  [[nodiscard]] bool matches(const Reference& r) const {
-    for (const auto& [k, v] : r.match) {
-      if (k == "stage") {
-        if (instance->stage != v) return false;
-      } else if (!written.contains(k) || writtenText(written[k]) != v) {
-        return false;
-      }
-    }
-    return true;
-  }
+  [[nodiscard]] bool matches(const Reference& r) const { return matchesRun(r.match, instance->stage(), written); }
 };
 
 std::string percent(double relative) {
@@ -98,19 +99,17 @@ std::string lastComponent(const std::string& pointer) {
 // run's mean fields, averaged over the third axis.
 report::FieldMap solidFractionMap(const Bed& bed) {
   const UpstreamInstance& up = *bed.instance;
-  std::filesystem::path file;
-  for (const auto& a : up.manifest.value("artifacts", json::array())) {
-    const std::string path = a.value("path", "");
-    if (a.value("kind", "") == "field_frame" && path.starts_with("mean/")) file = up.dir / path;
-  }
-  if (file.empty()) {
-    throw Error("bed_compare: run " + bed.label + " (" + up.key.substr(0, 12) +
+  const auto files = up.artifactsOfKind("mean_field_frame");
+  if (files.empty()) {
+    throw Error("bed_compare: run " + bed.label + " (" + up.shortKey() +
                 ") wrote no mean fields: give it an averaging window (average_from before duration)");
   }
-  const auto frame = core::io::readFieldFrame(file);
-  const json gravity = up.manifest.at("params").at("gravity");
-  const int vertical =
-      mfm::verticalAxis(Vec3(gravity[0].get<double>(), gravity[1].get<double>(), gravity[2].get<double>())).axis;
+  const auto frame = core::io::readFieldFrame(files.back());
+  if (frame.materials.empty()) {
+    throw Error("bed_compare: the mean fields of " + bed.label + " ('" + files.back().string() +
+                "') carry no materials (gravity): rerun it with this grainbridge");
+  }
+  const int vertical = mfm::verticalAxis(frame.materials.gravity).axis;
   const int horizontal = vertical == 0 ? 1 : 0;
   const int depth = 3 - vertical - horizontal;
   const auto& g = frame.grid;
@@ -173,27 +172,39 @@ void BedCompareStage::checkAgainstUpstream(const json& p, const std::string& ptr
                                            const std::vector<UpstreamPlan>& upstream,
                                            core::json::Diagnostics& d) const {
   const std::string tap = p.at("tap");
+  // What the comparison reads of every run, and the product each is.
   for (const auto& up : upstream) {
-    const auto& keys = up.output.summaryKeys;
-    if (std::find(keys.begin(), keys.end(), "mean_height") == keys.end()) {
-      d.add(ptr, "upstream stage " + up.stage + " records no mean_height: bed_compare takes mfm stages with solids");
-      return;
+    const std::string from = "upstream stage " + up.stage;
+    std::vector<std::string> missing;
+    if (!up.records("mean_height")) missing.emplace_back("the summary value mean_height (Eq. 5.22)");
+    if (tap.empty() ? !up.records("pressure_drop") || !up.records("pressure_drop_tap")
+                    : !up.records("dp_" + tap) || !up.writesSeriesColumn("dp_" + tap)) {
+      missing.push_back(tap.empty() ? "a pressure drop (pressure_drop, from a pressure tap)"
+                                    : "the pressure drop dp_" + tap + " (a pressure tap named \"" + tap + "\")");
     }
-    const std::string dp = tap.empty() ? "pressure_drop" : "dp_" + tap;
-    if (std::find(keys.begin(), keys.end(), dp) == keys.end()) {
-      d.add(ptr + (tap.empty() ? "" : "/tap"), "upstream stage " + up.stage + " records no \"" + dp +
-                                                   "\" (give it that pressure tap, pressure_taps)");
-      return;
-    }
+    if (!up.output.fieldFrames) missing.emplace_back("field frames with their materials");
+    if (!up.output.meanFieldFrames) missing.emplace_back("time-averaged fields (an averaging window)");
+    if (missing.empty()) continue;
+    std::string what;
+    for (std::size_t k = 0; k < missing.size(); ++k) what += (k == 0 ? "" : "; ") + missing[k];
+    d.add(ptr + (tap.empty() || up.records("dp_" + tap) ? "" : "/tap"),
+          from + " does not produce " + what + ": bed_compare takes bed runs that do (mfm with solids)");
+    return;
   }
-  // A reference matching on a parameter no upstream run is swept over would silently match
-  // nothing: refuse it now, not after the beds ran.
+  // A reference whose match selects no run (a parameter no run is swept over, a value not written
+  // as in the sweep) would silently drop out of the comparison: refuse it now, not after the beds ran.
   const json refs = p.value("references", json::array());
   for (std::size_t r = 0; r < refs.size(); ++r) {
     const json match = refs[r].value("match", json::array());
+    std::vector<std::pair<std::string, std::string>> pairs;
+    bool wellFormed = true;
     for (std::size_t m = 0; m < match.size(); ++m) {
       const auto kv = splitMatch(match[m].get<std::string>());
-      if (!kv) continue;
+      if (!kv) {
+        wellFormed = false;
+        continue;
+      }
+      pairs.push_back(*kv);
       const bool known = std::any_of(upstream.begin(), upstream.end(), [&](const UpstreamPlan& up) {
         return kv->first == "stage" ? up.stage == kv->second : up.sweepPoint.contains(kv->first);
       });
@@ -201,7 +212,31 @@ void BedCompareStage::checkAgainstUpstream(const json& p, const std::string& ptr
         d.add(ptr + "/references/" + std::to_string(r) + "/match/" + std::to_string(m),
               kv->first == "stage" ? "no upstream stage is named \"" + kv->second + "\""
                                    : "no upstream stage is swept over \"" + kv->first + "\"");
+        wellFormed = false;
       }
+    }
+    if (!wellFormed) continue;
+    const bool selects = std::any_of(upstream.begin(), upstream.end(), [&](const UpstreamPlan& up) {
+      return matchesRun(pairs, up.stage, up.sweepWritten.empty() ? up.sweepPoint : up.sweepWritten);
+    });
+    if (!selects) {
+      // Name the values the runs were written with, so a typo shows.
+      std::string values;
+      for (const auto& [k, v] : pairs) {
+        if (k == "stage") continue;
+        std::vector<std::string> seen;
+        for (const auto& up : upstream) {
+          const json& w = up.sweepWritten.empty() ? up.sweepPoint : up.sweepWritten;
+          if (!w.contains(k)) continue;
+          const std::string text = writtenText(w[k]);
+          if (std::find(seen.begin(), seen.end(), text) == seen.end()) seen.push_back(text);
+        }
+        values += (values.empty() ? "" : "; ") + k + " is written";
+        for (std::size_t i = 0; i < seen.size(); ++i) values += (i == 0 ? " " : ", ") + ("\"" + seen[i] + "\"");
+      }
+      d.add(ptr + "/references/" + std::to_string(r) + "/match",
+            "matches no run: no upstream run meets all of it" + (values.empty() ? "" : " (" + values + ")") +
+                "; write each value as the sweep writes it");
     }
   }
 }
@@ -221,28 +256,25 @@ void BedCompareStage::run(StageContext& ctx) const {
   for (const auto& up : ctx.inputs()) {
     Bed bed;
     bed.instance = &up;
-    bed.summary = up.manifest.value("summary", json::object());
-    bed.written = up.manifest.value("sweep_written", json::object());
-    if (bed.written.empty()) bed.written = up.manifest.value("sweep_point", json::object());
-    if (!bed.summary.contains("mean_height")) {
-      throw Error("bed_compare: upstream " + up.stage + " (" + up.key.substr(0, 12) +
-                  ") has no mean_height: bed_compare takes mfm stages with solids");
+    bed.written = up.sweepWritten();
+    if (!up.hasSummary("mean_height")) {
+      throw Error("bed_compare: upstream " + up.stage() + " (" + up.shortKey() +
+                  ") has no mean_height: bed_compare takes bed runs with solids");
     }
-    const json& params = up.manifest.at("params");
-    bed.closure = params.value("closure", "ktgf") == "table" ? "table" : params.value("kinetic_model", "lun1984");
-    const json taps = params.value("pressure_taps", json::array());
-    if (tap.empty() && taps.empty()) {
-      throw Error("bed_compare: upstream " + up.stage + " (" + up.key.substr(0, 12) + ") has no pressure tap");
+    bed.closure = up.summaryText("closure", up.stageTypeLabel());
+    const std::string firstTap = up.summaryText("pressure_drop_tap");
+    if (tap.empty() && firstTap.empty()) {
+      throw Error("bed_compare: upstream " + up.stage() + " (" + up.shortKey() + ") has no pressure tap");
     }
-    bed.dp = "dp_" + (tap.empty() ? taps.at(0).at("name").get<std::string>() : tap);
+    bed.dp = "dp_" + (tap.empty() ? firstTap : tap);
     std::string sweep;
-    bed.panelTitle = up.stage;
+    bed.panelTitle = up.stage();
     for (const auto& [k, v] : bed.written.items()) {
       const std::string part = lastComponent(k) + " " + writtenText(v);
       sweep += (sweep.empty() ? "" : ", ") + part;
       bed.panelTitle += "\n" + part;
     }
-    bed.label = up.stage + (sweep.empty() ? "" : " (" + sweep + ")");
+    bed.label = up.stage() + (sweep.empty() ? "" : " (" + sweep + ")");
     beds.push_back(std::move(bed));
   }
   std::sort(beds.begin(), beds.end(), [](const Bed& a, const Bed& b) { return a.label < b.label; });
@@ -386,16 +418,22 @@ void BedCompareStage::run(StageContext& ctx) const {
                       {"pressure drop", "Pa"}, {}};
   std::map<std::string, int> variants;  // per closure: a dash per run
   for (const auto& bed : beds) {
-    const auto series = report::readNumericCsv(bed.instance->dir / "series.csv");
-    const std::string phase = bed.instance->manifest.at("params").at("solids").at(0).at("name");
+    const auto series = bed.instance->seriesColumns();
     const auto time = series.find("time");
-    if (time == series.end()) throw Error("bed_compare: " + (bed.instance->dir / "series.csv").string() + " has no time");
-    const int variant = variants[bed.closure]++;
-    if (const auto h = series.find("mean_height_" + phase); h != series.end()) {
-      height.series.push_back({bed.label, bed.closure, report::Series::Style::Line, variant, time->second, h->second, {}});
+    if (time == series.end()) throw Error("bed_compare: the series of " + bed.label + " has no time");
+    // One line per solids phase (a mixture's segregate), each with the phase's name beside the run's.
+    const auto phases = bed.instance->phases();
+    const int bedVariant = variants[bed.closure]++;
+    int variant = bedVariant;
+    for (std::size_t m = 0; m < phases.size(); ++m) {
+      const auto h = series.find("mean_height_" + phases[m].name);
+      if (h == series.end()) continue;
+      if (m > 0) variant = variants[bed.closure]++;
+      const std::string label = bed.label + (phases.size() > 1 ? ", " + phases[m].name : "");
+      height.series.push_back({label, bed.closure, report::Series::Style::Line, variant, time->second, h->second, {}});
     }
     if (const auto dp = series.find(bed.dp); dp != series.end()) {
-      drop.series.push_back({bed.label, bed.closure, report::Series::Style::Line, variant, time->second, dp->second, {}});
+      drop.series.push_back({bed.label, bed.closure, report::Series::Style::Line, bedVariant, time->second, dp->second, {}});
     }
   }
   addFigure(report::drawFigure(height, ctx.outputDir(), "mean_height"), "Mean particle height against time");

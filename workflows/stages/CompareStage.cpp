@@ -170,25 +170,31 @@ void describeDeviations(const std::vector<Point>& points, const std::vector<std:
 
 }  // namespace
 
+void CompareStage::checkAgainstUpstream(const json& /*p*/, const std::string& ptr,
+                                        const std::vector<UpstreamPlan>& upstream, core::json::Diagnostics& d) const {
+  if (const auto* up = withoutClosurePoint(upstream)) {
+    d.add(ptr, "upstream stage " + up->stage + " records no closure point: compare takes stages that do (extract)");
+  }
+}
+
 void CompareStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
   const auto primary = kt::kineticModelFromString(p.at("model").get<std::string>());
   std::vector<Point> points;
   for (const auto& up : ctx.inputs()) {
     // What compare needs is a closure point, whichever stage computed it.
-    const json records = up.manifest.value("records", json::object());
-    if (records.value("closure_points", json::array()).empty()) {
-      throw Error("compare: upstream " + up.stage + " (" + up.key.substr(0, 12) +
+    if (up.records("closure_points").empty()) {
+      throw Error("compare: upstream " + up.stage() + " (" + up.shortKey() +
                   ") recorded no closure point; compare takes stages that do (extract)");
     }
     Point pt;
-    pt.key = up.key;
-    pt.summary = up.manifest.at("summary");
+    pt.key = up.key();
+    pt.summary = up.summary();
     pt.solidFraction = pt.value("solid_fraction");
     pt.diameter = pt.value("diameter");
     pt.density = pt.value("density");
     if (!pt.has("restitution")) {
-      throw Error("compare: the closure point of " + up.stage + " (" + up.key.substr(0, 12) +
+      throw Error("compare: the closure point of " + up.stage() + " (" + up.shortKey() +
                   ") has no restitution: its particle frames carry no contact materials");
     }
     pt.restitution = pt.value("restitution");

@@ -28,6 +28,10 @@ class CompareStage final : public StageType {
   }
   [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
   [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
+  // Every upstream must record closure points (extract's plannedOutput says so).
+  void checkAgainstUpstream(const nlohmann::json& resolved, const std::string& pointer,
+                            const std::vector<UpstreamPlan>& upstream,
+                            core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
 
  private:

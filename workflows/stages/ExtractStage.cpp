@@ -225,9 +225,9 @@ void ExtractStage::run(StageContext& ctx) const {
                 std::to_string(ctx.inputs().size()));
   }
   const UpstreamInstance& up = ctx.inputs().front();
-  const auto files = core::io::listParticleFrames(up.dir);
+  const auto files = core::io::listParticleFrames(up.dir());
   if (files.empty()) {
-    throw Error("extract: upstream " + up.stage + " (" + up.dir.string() + ") has no particle frames");
+    throw Error("extract: upstream " + up.stage() + " (" + up.dir().string() + ") has no particle frames");
   }
 
   // Frames after the transient.
@@ -242,7 +242,7 @@ void ExtractStage::run(StageContext& ctx) const {
   double start = p.at("start_time");
   if (p.at("start_strain").get<double>() > 0.0) {
     if (shearRate == 0.0) {
-      throw Error("/stages/" + ctx.stage() + "/params/start_strain: upstream " + up.stage +
+      throw Error("/stages/" + ctx.stage() + "/params/start_strain: upstream " + up.stage() +
                   " has no Lees-Edwards shear rate; use start_time");
     }
     start = std::max(start, p.at("start_strain").get<double>() / std::abs(shearRate));
@@ -253,18 +253,18 @@ void ExtractStage::run(StageContext& ctx) const {
   }
   if (selected.empty()) {
     std::ostringstream msg;
-    msg << "/stages/" << ctx.stage() << "/params: no frame of " << up.stage << " between " << start << " and " << end
+    msg << "/stages/" << ctx.stage() << "/params: no frame of " << up.stage() << " between " << start << " and " << end
         << " s (its " << files.size() << " frames span " << times.front() << " to " << times.back() << " s)";
     throw Error(msg.str());
   }
   spdlog::info("{}: averaging {} of {} frames of {} (from t = {} s)", ctx.stage(), selected.size(), files.size(),
-               up.stage, core::humanNumber(start));
+               up.stage(), core::humanNumber(start));
 
   // The analyses this stage's parameters ask for, each an observer in extract/observe, fed every
   // averaged frame with its whole-domain averages (computed once here). Finished in this order:
   // the closure point first (force statistics add to it), then what adds records and files.
   namespace ob = extract::observe;
-  ob::ClosurePointObserver closurePoint({p.at("family"), shearRate, materials, start, up.stage});
+  ob::ClosurePointObserver closurePoint({p.at("family"), shearRate, materials, start, up.stage()});
   std::vector<ob::FrameObserver*> observers{&closurePoint};
   std::optional<ob::FieldObserver> fields;
   if (p.contains("grid_cells")) {

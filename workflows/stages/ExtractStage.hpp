@@ -38,6 +38,13 @@ class ExtractStage final : public StageType {
                             const std::vector<UpstreamPlan>& upstream,
                             core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
+  // A closure point unless closure_point is false (closure_points; its summary holds the state
+  // and the closure forms).
+  [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override {
+    PlannedOutput out;
+    out.closurePoint = resolved.at("closure_point").get<bool>();
+    return out;
+  }
 
  private:
   params::ParamSchema schema_;

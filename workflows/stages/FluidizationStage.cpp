@@ -70,19 +70,19 @@ void FluidizationStage::run(StageContext& ctx) const {
   const std::string inflow = p.at("inflow"), dpKey = p.at("pressure_drop");
   std::map<std::string, Curve> curves;  // by upstream stage, in name order
   for (const auto& up : ctx.inputs()) {
-    const json sweep = up.manifest.value("sweep_point", json::object());
-    const json summary = up.manifest.value("summary", json::object());
+    const json& sweep = up.sweepPoint();
     if (!sweep.contains(inflow) || !sweep[inflow].is_number()) {
-      throw Error("fluidization: upstream " + up.stage + " (" + up.key.substr(0, 12) + ") is not swept over " + inflow);
+      throw Error("fluidization: upstream " + up.stage() + " (" + up.shortKey() + ") is not swept over " + inflow);
     }
-    if (!summary.contains(dpKey)) {
-      throw Error("fluidization: upstream " + up.stage + " (" + up.key.substr(0, 12) + ") has no summary value " +
-                  dpKey + " (give the mfm stage a pressure tap)");
+    const auto dp = up.summaryValue(dpKey);
+    if (!dp) {
+      throw Error("fluidization: upstream " + up.stage() + " (" + up.shortKey() + ") has no summary value " + dpKey +
+                  " (give the mfm stage a pressure tap)");
     }
-    Curve& c = curves[up.stage];
-    c.points.push_back({sweep[inflow].get<double>(), summary[dpKey].get<double>(), summary.value(dpKey + "_err", 0.0)});
-    if (summary.contains("bed_weight")) c.weight = summary["bed_weight"];
-    if (summary.contains("drag_umf")) c.dragUmf = summary["drag_umf"];
+    Curve& c = curves[up.stage()];
+    c.points.push_back({sweep[inflow].get<double>(), dp->value, std::isfinite(dp->error) ? dp->error : 0.0});
+    if (const auto weight = up.summaryValue("bed_weight")) c.weight = weight->value;
+    if (const auto umf = up.summaryValue("drag_umf")) c.dragUmf = umf->value;
   }
   if (curves.empty()) throw Error("fluidization: no upstream mfm runs; give it \"from\"");
 

@@ -11,12 +11,14 @@
 #include "engines/closures/MinimumFluidization.hpp"
 #include "engines/mfm/BedMeasures.hpp"
 #include "engines/mfm/MfmEngine.hpp"
+#include "workflows/closures/ClosureCatalog.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/MfmSeriesColumns.hpp"
 #include "workflows/stages/MfmSetup.hpp"
 
 namespace grainbridge::workflows::stages {
 
+namespace catalog = workflows::closures;
 using core::units::Dimension;
 using nlohmann::json;
 using params::ParamSchema;
@@ -150,8 +152,10 @@ MfmStage::MfmStage() {
                .defaultValue("syamlal_obrien")
                .options({"syamlal_obrien", "ergun_wen_yu", "gidaspow"})
                .doc("gas-solids drag law (Eqs. 3.10-3.16 by default)"))
-      .add(ParamSpec::number("drag_c").defaultValue(0.8).positive().doc("Syamlal-O'Brien C (Eq. 3.13; Table 4.3)"))
-      .add(ParamSpec::number("drag_d").defaultValue(2.65).positive().doc("Syamlal-O'Brien D (Eq. 3.13; Table 4.3)"))
+      // A closure law's parameters are declared once, in the closure catalog (`grainbridge
+      // closures`), and included here under the keys configs write.
+      .add(catalog::closureParameter("syamlal_obrien", "c").renamed("drag_c"))
+      .add(catalog::closureParameter("syamlal_obrien", "d").renamed("drag_d"))
       .add(ParamSpec::string("kinetic_model")
                .defaultValue("lun1984")
                .options({"lun1984", "syamlal_algebraic", "syamlal_algebraic_mfix"})
@@ -184,23 +188,13 @@ MfmStage::MfmStage() {
                .options({"no_slip", "johnson_jackson"})
                .doc("solids at no-slip wall patches: stick (adiabatic), or Johnson-Jackson partial slip with the "
                     "wall energy flux (Eqs. 5.8-5.10; granular_energy pde)"))
-      .add(ParamSpec::number("specularity")
-               .defaultValue(0.6)
-               .min(0.0)
-               .max(1.0)
-               .doc("Johnson-Jackson specularity phi' (VALIDATION.md: MFiX's run used 0.6)"))
+      .add(catalog::closureParameter("johnson_jackson", "specularity"))
       .add(ParamSpec::boolean("rotation_model")
                .defaultValue(false)
                .doc("particle rotation (Eqs. 5.11-5.21): e_eff from each phase's friction in the collisional and "
                     "wall dissipation only (granular_energy pde)"))
-      .add(ParamSpec::number("critical_void_fraction")
-               .required()
-               .min(0.0, false)
-               .max(1.0, false)
-               .doc("eps_g* where the plastic regime begins (Eqs. 3.26-3.27)"))
-      .add(ParamSpec::number("friction_angle")
-               .defaultValue("30 degree")
-               .doc("internal friction angle of Schaeffer's plastic viscosity"))
+      .add(catalog::closureParameter("schaeffer", "critical_void_fraction"))
+      .add(catalog::closureParameter("schaeffer", "internal_friction_angle").renamed("friction_angle"))
       .add(ParamSpec::number("packed_solids_fraction")
                .min(0.0, false)
                .max(1.0, false)
@@ -325,7 +319,8 @@ void MfmStage::run(StageContext& ctx) const {
   MfmSeriesColumns& observed = *columns;
   // The initial inventory (of a fresh start, also when this run resumes): solids volume and the
   // bed's buoyant weight per unit area of the bottom.
-  double initialVolume = 0.0, initialWeight = 0.0;
+  std::vector<double> initialVolumes;
+  double initialWeight = 0.0;
   {
     mfm::MultiFluidEngine fresh(setup.engine.geometry, setup.engine.patches, setup.engine.model, setup.engine.settings,
                                 setup.engine.limits);
@@ -336,7 +331,7 @@ void MfmStage::run(StageContext& ctx) const {
                           (g.spacing[vertical.axis] * g.cells[static_cast<std::size_t>(vertical.axis)]);
     for (std::size_t m = 1; m <= solids.size(); ++m) {
       const double v = mfm::solidsVolume(fresh.state(), m);
-      if (m == 1) initialVolume = v;
+      initialVolumes.push_back(v);
       initialWeight += v * (solids[m - 1].density - setup.engine.model.gas.densityAt(setup.initial.referencePressure)) *
                        setup.engine.settings.gravity.norm() / bottom;
     }
@@ -358,10 +353,29 @@ void MfmStage::run(StageContext& ctx) const {
       summary[column + "_amplitude"] = spectrum->amplitude;
     }
   }
+  if (!setup.taps.empty()) summary["pressure_drop_tap"] = setup.taps.front().name;
   for (std::size_t m = 0; m < solids.size(); ++m) {
     addAverage(summary, "mean_height_" + solids[m].name, window.at("mean_height_" + solids[m].name));
-    if (m == 0) addAverage(summary, "mean_height", window.at("mean_height_" + solids[m].name));
   }
+  if (solids.size() == 1) {
+    addAverage(summary, "mean_height", window.at("mean_height_" + solids[0].name));
+  } else if (solids.size() > 1) {
+    // Eq. 5.22 over all solids: each sample's phase heights weighted by the phase volumes.
+    const std::size_t samples = window.at("mean_height_" + solids[0].name).size();
+    std::vector<double> mixture(samples, 0.0);
+    for (std::size_t k = 0; k < samples; ++k) {
+      double moment = 0.0, volume = 0.0;
+      for (const auto& phase : solids) {
+        const double v = window.at("solids_volume_" + phase.name)[k];
+        moment += v * window.at("mean_height_" + phase.name)[k];
+        volume += v;
+      }
+      mixture[k] = volume > 0.0 ? moment / volume : 0.0;
+    }
+    addAverage(summary, "mean_height", mixture);
+  }
+  // The colour key of comparing stages: the closure the solids ran with.
+  summary["closure"] = setup.engine.model.closure.kind() == "table" ? std::string("table") : p.at("kinetic_model").get<std::string>();
   const auto& stats = engine->engine().statistics();
   summary["solver_steps"] = stats.steps;
   summary["retries"] = stats.retries;
@@ -376,13 +390,13 @@ void MfmStage::run(StageContext& ctx) const {
       double solidsFraction = 0.0;
       for (double f : region.solidsFractions) solidsFraction += f;
       if (solidsFraction <= 0.0) continue;
-      const closures::PackedBed bed{1.0 - solidsFraction,
+      const grainbridge::closures::PackedBed bed{1.0 - solidsFraction,
                                     solids[0].diameter,
                                     solids[0].density,
                                     setup.engine.model.gas.densityAt(setup.initial.referencePressure),
                                     setup.engine.model.gas.viscosity,
                                     setup.engine.settings.gravity.norm()};
-      summary["drag_umf"] = closures::minimumFluidizationVelocity(setup.engine.model.drag, bed);
+      summary["drag_umf"] = grainbridge::closures::minimumFluidizationVelocity(setup.engine.model.drag, bed);
       break;
     }
   }
@@ -398,13 +412,19 @@ void MfmStage::run(StageContext& ctx) const {
       summary["table_sha256_" + record.at("quantity").get<std::string>()] = record.at("sha256");
     }
   }
-  if (!solids.empty() && initialVolume > 0.0) {
-    summary["solids_volume_change"] = mfm::solidsVolume(engine->engine().state(), 1) / initialVolume - 1.0;
+  // The relative change of the solids inventory over the run, per phase and of all solids.
+  double totalNow = 0.0, totalInitial = 0.0;
+  for (std::size_t m = 0; m < solids.size(); ++m) {
+    const double now = mfm::solidsVolume(engine->engine().state(), m + 1);
+    totalNow += now;
+    totalInitial += initialVolumes[m];
+    if (initialVolumes[m] > 0.0) summary["solids_volume_change_" + solids[m].name] = now / initialVolumes[m] - 1.0;
   }
+  if (totalInitial > 0.0) summary["solids_volume_change"] = totalNow / totalInitial - 1.0;
   if (observed.fieldAverage().frames() > 0) {
     core::io::FieldFrameWriter mean(ctx.outputDir() / "mean", stamp);
     const auto path = mean.write(observed.fieldAverage().mean());
-    ctx.addArtifact(path.lexically_relative(ctx.outputDir()).string(), "field_frame");
+    ctx.addArtifact(path.lexically_relative(ctx.outputDir()).string(), "mean_field_frame");
     ctx.addArtifact("mean/fields.xmf", "xdmf");
   }
   ctx.setSummary(summary);
@@ -412,11 +432,31 @@ void MfmStage::run(StageContext& ctx) const {
 
 std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
   PlannedOutput out;
+  out.fieldFrames = true;
+  out.meanFieldFrames = p.at("average_from").get<double>() < p.at("duration").get<double>();
+  auto& keys = out.summaryKeys;
   for (const auto& tap : p.value("pressure_taps", json::array())) {
-    if (out.summaryKeys.empty()) out.summaryKeys.push_back("pressure_drop");
-    out.summaryKeys.push_back("dp_" + tap.at("name").get<std::string>());
+    if (keys.empty()) {
+      keys.push_back("pressure_drop");
+      keys.push_back("pressure_drop_tap");
+    }
+    keys.push_back("dp_" + tap.at("name").get<std::string>());
+    out.seriesColumns.push_back("dp_" + tap.at("name").get<std::string>());
   }
-  if (!p.value("solids", json::array()).empty()) out.summaryKeys.push_back("mean_height");
+  const json solids = p.value("solids", json::array());
+  if (!solids.empty()) {
+    keys.push_back("mean_height");
+    keys.push_back("solids_volume_change");
+    keys.push_back("bed_weight");
+  }
+  for (const auto& phase : solids) {
+    const std::string name = phase.at("name");
+    keys.push_back("mean_height_" + name);
+    keys.push_back("solids_volume_change_" + name);
+    out.seriesColumns.push_back("mean_height_" + name);
+    out.seriesColumns.push_back("solids_volume_" + name);
+  }
+  keys.push_back("closure");
   return out;
 }
 

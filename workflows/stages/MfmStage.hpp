@@ -18,7 +18,11 @@ class MfmStage final : public StageType {
   // 2: the summary gains bed_weight and drag_umf, series.csv the solver's step and iteration
   //    counts and last residual
   // 3: the granular-energy equation with lun1984 the default, Johnson-Jackson walls, rotation.
-  [[nodiscard]] int implVersion() const override { return 3; }
+  // 4: products for downstream stages instead of params: field frames carry their materials
+  //    (gravity, each phase's name, diameter, density); the summary gains closure,
+  //    pressure_drop_tap and solids_volume_change_<phase>, mean_height is Eq. 5.22 over all
+  //    solids (a mono bed's is its phase's, as before); the mean fields are mean_field_frame.
+  [[nodiscard]] int implVersion() const override { return 4; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }
@@ -36,8 +40,10 @@ class MfmStage final : public StageType {
   // closure "table": closure_table's p_theta, eta_theta and j_theta, as table_quantities names.
   [[nodiscard]] std::vector<ClosureTableRef> closureTables(const nlohmann::json& resolved) const override;
   void run(StageContext& ctx) const override;
-  // The summary's pressure drops (one per tap, the first also as pressure_drop) and mean_height
-  // (with solids), for the checks of the stages that read them (fluidization, bed_compare).
+  // Field frames with their materials, the mean fields (with an averaging window), and the
+  // summary's pressure drops (one per tap, the first also as pressure_drop), heights and solids
+  // inventory changes per phase, for the checks of the stages that read them (fluidization,
+  // bed_compare).
   [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override;
 
  private:

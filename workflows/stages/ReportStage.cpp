@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "workflows/report/HtmlReport.hpp"
+#include "workflows/stages/StageRegistry.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -12,7 +13,8 @@ ReportStage::ReportStage() {
 
 void ReportStage::run(StageContext& ctx) const {
   if (ctx.inputs().empty()) throw Error("report: no upstream stages; give it \"from\"");
-  const auto files = report::writeHtmlReport({ctx.params().at("title"), ctx.databasePath()}, ctx.inputs(),
+  const auto files = report::writeHtmlReport(
+      {ctx.params().at("title"), ctx.databasePath(), StageRegistry::builtin().reportView()}, ctx.inputs(),
                                              ctx.outputDir(), ctx.publishedDir());
   for (const auto& f : files.files) ctx.addArtifact(f.path, f.kind);
   ctx.setSummary({{"instances", ctx.inputs().size()}});

@@ -13,22 +13,15 @@
 
 #include "core/parallel/Communicator.hpp"
 #include "core/units/UnitSystem.hpp"
+#include "workflows/contract/UpstreamInstance.hpp"
 #include "workflows/report/Findings.hpp"
 
 namespace grainbridge::workflows::stages {
 
-struct UpstreamInstance {
-  std::string stage;
-  std::string stageType;
-  std::string key;
-  std::filesystem::path dir;  // absolute path of the completed instance folder
-  nlohmann::json manifest;    // its manifest.json (params, artifacts, summary)
-};
-
-struct ArtifactEntry {
-  std::string path;  // relative to the instance folder
-  std::string kind;  // "particle_frames", "xdmf", "report_html", "csv", "svg", ...
-};
+// What a stage reads of its upstream instances, and how it registers its own files: the
+// contract header report/ shares (workflows/contract/UpstreamInstance.hpp).
+using contract::ArtifactEntry;
+using contract::UpstreamInstance;
 
 // Thrown by a stage that saw stopRequested() (SIGTERM, SIGINT) and stopped cleanly.
 struct StageInterrupted {};

@@ -18,6 +18,8 @@ class StageRegistry {
   [[nodiscard]] const StageType* find(const std::string& name) const;
   [[nodiscard]] std::vector<std::string> names() const;
   [[nodiscard]] const std::vector<std::unique_ptr<StageType>>& all() const { return types_; }
+  // What a report shows of each type (its key results, the units of its parameters).
+  [[nodiscard]] contract::StageTypeLookup reportView() const;
 
  private:
   std::vector<std::unique_ptr<StageType>> types_;

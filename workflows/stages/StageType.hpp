@@ -18,12 +18,7 @@ enum class InputMode {
   Gather,       // one instance consuming every upstream instance (extract -> tabulate, report)
 };
 
-// A summary value worth a column (and a plot along a sweep) in the report, with its SI unit
-// ("–" when dimensionless). Its block-averaging error, if any, is the summary's <key>_err.
-struct ResultColumn {
-  std::string key;
-  std::string unit;
-};
+using contract::ResultColumn;
 
 // A closure table an instance reads from the workflow database, and the parameter naming it
 // (below the stage's /params, for messages).
@@ -56,7 +51,8 @@ class StageType {
   }
   // Checks across stages: called at config load, after every stage's own checks passed, with
   // the planned outputs of every upstream instance (one per sweep point of each stage in
-  // `from` whose type declares one). Stages never read another stage's params themselves.
+  // `from`; empty for a type that declares none). Stages never read another stage's params:
+  // they name the product they need and refuse an upstream whose plan lacks it.
   virtual void checkAgainstUpstream(const nlohmann::json& /*resolved*/, const std::string& /*pointer*/,
                                     const std::vector<UpstreamPlan>& /*upstream*/,
                                     core::json::Diagnostics& /*diagnostics*/) const {}

@@ -51,17 +51,25 @@ std::size_t indexOf(const std::vector<double>& axis, double x) {
 
 }  // namespace
 
+void TabulateStage::checkAgainstUpstream(const json& /*p*/, const std::string& ptr,
+                                         const std::vector<UpstreamPlan>& upstream, core::json::Diagnostics& d) const {
+  if (const auto* up = withoutClosurePoint(upstream)) {
+    d.add(ptr, "upstream stage " + up->stage + " records no closure point: tabulate takes stages that do (extract)");
+  }
+}
+
 void TabulateStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
   const std::string name = p.at("table");
   const std::string second = p.at("second_variable");
   std::vector<json> points;
   for (const auto& up : ctx.inputs()) {
-    if (up.stageType != "extract") {
-      throw Error("tabulate: upstream " + up.stage + " is a " + up.stageType + " stage; tabulate takes extract stages");
+    if (up.records("closure_points").empty()) {
+      throw Error("tabulate: upstream " + up.stage() + " (" + up.shortKey() +
+                  ") recorded no closure point; tabulate takes stages that do (extract)");
     }
-    json s = up.manifest.at("summary");
-    s["__key"] = up.key;
+    json s = up.summary();
+    s["__key"] = up.key();
     points.push_back(std::move(s));
   }
   if (points.empty()) throw Error("tabulate: no upstream extract instances; give it \"from\"");

@@ -28,6 +28,10 @@ class TabulateStage final : public StageType {
     out.closureTables = resolved.at("table").get<std::string>();
     return out;
   }
+  // Every upstream must record closure points (extract's plannedOutput says so).
+  void checkAgainstUpstream(const nlohmann::json& resolved, const std::string& pointer,
+                            const std::vector<UpstreamPlan>& upstream,
+                            core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
 
  private:

@@ -38,6 +38,28 @@ TEST(FieldFrameSerialization, RoundTripWithTwoSolidsPhases) {
   EXPECT_EQ(stamp.formatVersion, kFieldFormatVersion);
 }
 
+// A continuum frame carries what its fields are of (DESIGN.md, field frames): gravity and each
+// solids phase's name, diameter and density, so a reader needs no stage params.
+TEST(FieldFrameSerialization, MaterialsRoundTripAndMustNameTheSolidsPhases) {
+  const TempDir dir;
+  FieldFrameWriter writer(dir.path(), {"field-key"});
+  data::FieldFrame frame = sampleFieldFrame(3, 0.25);
+  frame.materials.gravity = Vec3(0.0, -9.81, 0.0);
+  frame.materials.species = {{"small", 1.5e-3, 2526.0}, {"large", 2.5e-3, 2526.0}};
+  const data::FieldFrame back = readFieldFrame(writer.write(frame));
+  EXPECT_EQ(back.materials, frame.materials);
+  EXPECT_EQ(back, frame);
+  // Without materials a frame reads back without them (coarse-grained DEM fields, older files).
+  EXPECT_TRUE(readFieldFrame(writer.write(sampleFieldFrame(4, 0.5))).materials.empty());
+
+  frame.materials.species = {{"large", 2.5e-3, 2526.0}, {"small", 1.5e-3, 2526.0}};
+  expectError([&] { writer.write(frame); }, {"materials species 0 is 'large'", "solids phase 'small'"});
+  frame.materials.species.pop_back();
+  expectError([&] { writer.write(frame); }, {"1 species for 2 solids phases"});
+  frame.materials.species = {{"small", 0.0, 2526.0}, {"large", 2.5e-3, 2526.0}};
+  expectError([&] { writer.write(frame); }, {"positive diameter"});
+}
+
 // Coarse-grained DEM carries more than the continuum fields: named scalar, vector and tensor
 // cell fields, in their own group, listed in the XDMF so ParaView shows them.
 TEST(FieldFrameSerialization, ExtraCellFieldsRoundTripAndAppearInTheXdmf) {

@@ -1,0 +1,161 @@
+// The run-time stage contract (DESIGN.md, "Stage contracts"): bed_compare reads products — a
+// summary's mean_height and pressure drop, series columns, field frames with their materials —
+// so it takes any stage type that declares them, here a test-only one that is not mfm, and
+// refuses at config load one that does not, naming the missing product.
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+#include "core/Files.hpp"
+#include "core/io/FieldFrameWriter.hpp"
+#include "core/json/Diagnostics.hpp"
+#include "tests/support/Cli.hpp"
+#include "workflows/config/WorkflowConfig.hpp"
+#include "workflows/exec/Scheduler.hpp"
+#include "workflows/exec/SerialDispatcher.hpp"
+#include "workflows/exec/StopSignal.hpp"
+#include "workflows/plan/Plan.hpp"
+#include "workflows/stages/BedCompareStage.hpp"
+#include "workflows/stages/StageRegistry.hpp"
+
+namespace fs = std::filesystem;
+using namespace grainbridge;
+using namespace grainbridge::workflows;
+using grainbridge::testing::readText;
+using grainbridge::testing::TempDir;
+using nlohmann::json;
+
+namespace {
+
+// A bed that is not a multi-fluid run: one phase "sand" whose frames, series and summary say the
+// bed stands `height` high. With `products` false it declares and writes only its summary.
+class ToyBed final : public stages::StageType {
+ public:
+  ToyBed(std::string name, bool products) : name_(std::move(name)), products_(products) {
+    schema_.add(params::ParamSpec::quantity("height", core::units::Dimension::lengthDim())
+                    .defaultValue(0.02)
+                    .positive()
+                    .doc("mean particle height"));
+  }
+  [[nodiscard]] std::string name() const override { return name_; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::string summary() const override { return "test-only bed"; }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] stages::InputMode inputMode() const override { return stages::InputMode::None; }
+  [[nodiscard]] std::optional<stages::PlannedOutput> plannedOutput(const json& /*resolved*/) const override {
+    stages::PlannedOutput out;
+    out.summaryKeys = {"mean_height", "pressure_drop", "pressure_drop_tap", "dp_bed", "closure"};
+    if (products_) {
+      out.fieldFrames = out.meanFieldFrames = true;
+      out.seriesColumns = {"dp_bed", "mean_height_sand"};
+    }
+    return out;
+  }
+  void run(stages::StageContext& ctx) const override {
+    const double h = ctx.params().at("height");
+    if (products_) {
+      core::data::FieldFrame frame;
+      frame.grid.cells = {2, 4, 1};
+      frame.grid.spacing = Vec3(0.01, 0.01, 0.01);
+      const std::size_t n = frame.grid.cellCount();
+      frame.ep_g.assign(n, 0.6);
+      frame.p_g.assign(n, 101325.0);
+      frame.u_g.assign(n, Vec3::Zero());
+      frame.solids.push_back({"sand", std::vector<double>(n, 0.4), std::vector<Vec3>(n, Vec3::Zero()),
+                              std::vector<double>(n, 0.0)});
+      frame.materials.gravity = Vec3(0.0, -9.81, 0.0);
+      frame.materials.species.push_back({"sand", 1e-3, 2500.0});
+      const core::io::ArtifactStamp stamp{ctx.key()};
+      core::io::FieldFrameWriter frames(ctx.outputDir(), stamp);
+      ctx.addArtifact(frames.write(frame).lexically_relative(ctx.outputDir()).string(), "field_frame");
+      core::io::FieldFrameWriter mean(ctx.outputDir() / "mean", stamp);
+      ctx.addArtifact(mean.write(frame).lexically_relative(ctx.outputDir()).string(), "mean_field_frame");
+      core::writeFileAtomically(ctx.outputDir() / "series.csv", "time,dp_bed,mean_height_sand\n0,100,0.01\n0.5,110," +
+                                                                    std::to_string(h) + "\n");
+      ctx.addArtifact("series.csv", "csv");
+    }
+    ctx.setSummary({{"mean_height", h},
+                    {"mean_height_err", 1e-4},
+                    {"pressure_drop", 110.0},
+                    {"pressure_drop_tap", "bed"},
+                    {"dp_bed", 110.0},
+                    {"closure", "toy"}});
+  }
+
+ private:
+  std::string name_;
+  bool products_;
+  params::ParamSchema schema_;
+};
+
+stages::StageRegistry toyRegistry() {
+  std::vector<std::unique_ptr<stages::StageType>> types;
+  types.push_back(std::make_unique<ToyBed>("toy_bed", true));
+  types.push_back(std::make_unique<ToyBed>("summary_only_bed", false));
+  types.push_back(std::make_unique<stages::BedCompareStage>());
+  return stages::StageRegistry(std::move(types));
+}
+
+json workflow(const std::string& bedType, const std::string& match) {
+  return {{"name", "contract"},
+          {"stages",
+           {{"bed", {{"type", bedType}, {"sweep", {{"height", {0.02, "3 cm"}}}}}},
+            {"beds",
+             {{"type", "bed_compare"},
+              {"from", "bed"},
+              {"params",
+               {{"references", {{{"label", "Table 5.3"}, {"mean_height", "2.1 cm"}, {"match", {match}}}}}}}}}}}};
+}
+
+// Every problem of a config, or "" when it loads.
+std::string loadProblems(const stages::StageRegistry& registry, const json& doc) {
+  try {
+    (void)config::parseWorkflow(doc, "contract.json", registry);
+  } catch (const core::json::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(BedCompareContract, TakesAnyStageThatProducesHeightsPressureDropsAndFieldFrames) {
+  const auto registry = toyRegistry();
+  TempDir work;
+  const auto cfg = config::parseWorkflow(workflow("toy_bed", "height=3 cm"), "contract.json", registry);
+  const auto plan = plan::makePlan(cfg);
+  exec::RunOptions options;
+  options.workDir = work.path();
+  exec::SerialDispatcher dispatcher(registry, exec::resultsRoot(work.path()), exec::stopFlag());
+  ASSERT_EQ(exec::runWorkflow(cfg, plan, options, dispatcher, 1).exitCode(), 0);
+
+  fs::path beds;
+  for (const auto& e : fs::directory_iterator(work.path() / "results/contract/beds")) beds = e.path();
+  const std::string csv = readText(beds / "beds.csv");
+  // The run swept to 3 cm met its reference, 2.1 cm: +42.86 %, with the toy's closure as colour key.
+  EXPECT_NE(csv.find("bed (height 3 cm),toy,0.03"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("Table 5.3,reference,0.021"), std::string::npos) << csv;
+  // The other run has no reference, so one row of its own.
+  EXPECT_NE(csv.find("bed (height 0.02),toy,0.02"), std::string::npos) << csv;
+  // The maps' vertical axis came from the frames' gravity; the height plot from the phase's column.
+  EXPECT_TRUE(fs::exists(beds / "solid_fraction_maps.svg"));
+  EXPECT_NE(readText(beds / "mean_height.svg").find("bed (height 3 cm)"), std::string::npos);
+}
+
+TEST(BedCompareContract, RefusesAtCheckAStageWithoutTheProductsNamingWhatIsMissing) {
+  const auto problems = loadProblems(toyRegistry(), workflow("summary_only_bed", "height=3 cm"));
+  EXPECT_NE(problems.find("/stages/beds/params"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("upstream stage bed does not produce field frames with their materials"), std::string::npos)
+      << problems;
+  EXPECT_NE(problems.find("time-averaged fields"), std::string::npos) << problems;
+}
+
+TEST(BedCompareContract, RefusesAtCheckAReferenceWhoseMatchSelectsNoRun) {
+  // 2.5 cm is not a value of the sweep: the reference would silently compare with nothing.
+  const auto problems = loadProblems(toyRegistry(), workflow("toy_bed", "height=2.5 cm"));
+  EXPECT_NE(problems.find("/stages/beds/params/references/0/match"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("matches no run"), std::string::npos) << problems;
+  // The values the sweep wrote are named, so the typo shows.
+  EXPECT_NE(problems.find("\"3 cm\""), std::string::npos) << problems;
+  EXPECT_EQ(loadProblems(toyRegistry(), workflow("toy_bed", "height=0.02")), "");
+}
