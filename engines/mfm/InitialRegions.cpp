@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 
 namespace grainbridge::mfm {
 
@@ -48,7 +48,7 @@ void initialise(MultiFluidEngine& engine, const InitialState& init) {
   }
   // The gas pressure: each cell carries the weight of the mixture above it, starting from the
   // reference at the top.
-  const VerticalAxis v = verticalAxis(engine.settings().gravity);
+  const fluid::VerticalAxis v = fluid::verticalAxis(engine.settings().gravity);
   const double g = engine.settings().gravity.norm();
   const double h = grid.spacing(v.axis);
   const int n = grid.cells(v.axis);

@@ -10,7 +10,7 @@
 #include "core/io/FieldFrameReader.hpp"
 #include "core/io/XdmfText.hpp"
 #include "core/text/NumberText.hpp"
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 #include "workflows/report/CsvField.hpp"
 #include "workflows/report/NumericCsv.hpp"
 #include "workflows/report/Plot.hpp"
@@ -110,7 +110,7 @@ report::FieldMap solidFractionMap(const Bed& bed) {
   const auto frame = core::io::readFieldFrame(file);
   const json gravity = up.manifest.at("params").at("gravity");
   const int vertical =
-      mfm::verticalAxis(Vec3(gravity[0].get<double>(), gravity[1].get<double>(), gravity[2].get<double>())).axis;
+      fluid::verticalAxis(Vec3(gravity[0].get<double>(), gravity[1].get<double>(), gravity[2].get<double>())).axis;
   const int horizontal = vertical == 0 ? 1 : 0;
   const int depth = 3 - vertical - horizontal;
   const auto& g = frame.grid;

@@ -9,7 +9,7 @@
 #include "core/averaging/DominantFrequency.hpp"
 #include "core/io/FieldFrameWriter.hpp"
 #include "engines/closures/MinimumFluidization.hpp"
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/MfmSeriesColumns.hpp"
@@ -331,11 +331,11 @@ void MfmStage::run(StageContext& ctx) const {
                                 setup.engine.limits);
     mfm::initialise(fresh, setup.initial);
     const auto& g = setup.engine.geometry;
-    const mfm::VerticalAxis vertical = mfm::verticalAxis(setup.engine.settings.gravity);
+    const fluid::VerticalAxis vertical = fluid::verticalAxis(setup.engine.settings.gravity);
     const double bottom = g.spacing.prod() * g.cellCount() /
                           (g.spacing[vertical.axis] * g.cells[static_cast<std::size_t>(vertical.axis)]);
     for (std::size_t m = 1; m <= solids.size(); ++m) {
-      const double v = mfm::solidsVolume(fresh.state(), m);
+      const double v = fluid::solidsVolume(fresh.state(), m);
       if (m == 1) initialVolume = v;
       initialWeight += v * (solids[m - 1].density - setup.engine.model.gas.densityAt(setup.initial.referencePressure)) *
                        setup.engine.settings.gravity.norm() / bottom;
@@ -399,7 +399,7 @@ void MfmStage::run(StageContext& ctx) const {
     }
   }
   if (!solids.empty() && initialVolume > 0.0) {
-    summary["solids_volume_change"] = mfm::solidsVolume(engine->engine().state(), 1) / initialVolume - 1.0;
+    summary["solids_volume_change"] = fluid::solidsVolume(engine->engine().state(), 1) / initialVolume - 1.0;
   }
   if (observed.fieldAverage().frames() > 0) {
     core::io::FieldFrameWriter mean(ctx.outputDir() / "mean", stamp);
