@@ -6,9 +6,8 @@
 
 namespace grainbridge::mfm {
 
-void initialise(MultiFluidEngine& engine, const InitialState& init) {
-  auto& st = engine.state();
-  const auto& grid = engine.grid();
+void applyRegions(fluid::FlowState& st, const InitialState& init) {
+  const auto& grid = st.grid();
   const std::size_t M = st.phases.size();
   std::mt19937_64 rng(init.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -46,6 +45,13 @@ void initialise(MultiFluidEngine& engine, const InitialState& init) {
       }
     }
   }
+}
+
+void initialise(MultiFluidEngine& engine, const InitialState& init) {
+  applyRegions(engine.state(), init);
+  auto& st = engine.state();
+  const auto& grid = engine.grid();
+  const std::size_t M = st.phases.size();
   // The gas pressure: each cell carries the weight of the mixture above it, starting from the
   // reference at the top.
   const fluid::VerticalAxis v = fluid::verticalAxis(engine.settings().gravity);

@@ -8,8 +8,8 @@
 #include "core/averaging/BlockAverage.hpp"
 #include "core/averaging/DominantFrequency.hpp"
 #include "core/io/FieldFrameWriter.hpp"
-#include "engines/closures/MinimumFluidization.hpp"
 #include "engines/fluid/BedMeasures.hpp"
+#include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/MfmSeriesColumns.hpp"
@@ -325,22 +325,9 @@ void MfmStage::run(StageContext& ctx) const {
   MfmSeriesColumns& observed = *columns;
   // The initial inventory (of a fresh start, also when this run resumes): solids volume and the
   // bed's buoyant weight per unit area of the bottom.
-  double initialVolume = 0.0, initialWeight = 0.0;
-  {
-    mfm::MultiFluidEngine fresh(setup.engine.geometry, setup.engine.patches, setup.engine.model, setup.engine.settings,
-                                setup.engine.limits);
-    mfm::initialise(fresh, setup.initial);
-    const auto& g = setup.engine.geometry;
-    const fluid::VerticalAxis vertical = fluid::verticalAxis(setup.engine.settings.gravity);
-    const double bottom = g.spacing.prod() * g.cellCount() /
-                          (g.spacing[vertical.axis] * g.cells[static_cast<std::size_t>(vertical.axis)]);
-    for (std::size_t m = 1; m <= solids.size(); ++m) {
-      const double v = fluid::solidsVolume(fresh.state(), m);
-      if (m == 1) initialVolume = v;
-      initialWeight += v * (solids[m - 1].density - setup.engine.model.gas.densityAt(setup.initial.referencePressure)) *
-                       setup.engine.settings.gravity.norm() / bottom;
-    }
-  }
+  const mfm::InitialInventory inventory = mfm::initialInventory(setup.engine, setup.initial);
+  const double initialVolume = inventory.solidsVolume.empty() ? 0.0 : inventory.solidsVolume.front();
+  const double initialWeight = inventory.buoyantWeight;
   loop.addColumns(std::move(columns));
   loop.run(*engine);
 
@@ -372,19 +359,7 @@ void MfmStage::run(StageContext& ctx) const {
   // implies at the first region's void fraction (engines/closures/MinimumFluidization).
   if (!solids.empty()) {
     summary["bed_weight"] = initialWeight;
-    for (const auto& region : setup.initial.regions) {
-      double solidsFraction = 0.0;
-      for (double f : region.solidsFractions) solidsFraction += f;
-      if (solidsFraction <= 0.0) continue;
-      const closures::PackedBed bed{1.0 - solidsFraction,
-                                    solids[0].diameter,
-                                    solids[0].density,
-                                    setup.engine.model.gas.densityAt(setup.initial.referencePressure),
-                                    setup.engine.model.gas.viscosity,
-                                    setup.engine.settings.gravity.norm()};
-      summary["drag_umf"] = closures::minimumFluidizationVelocity(setup.engine.model.drag, bed);
-      break;
-    }
+    if (const auto umf = mfm::dragMinimumFluidizationVelocity(setup.engine, setup.initial)) summary["drag_umf"] = *umf;
   }
   if (setup.engine.model.closure.kind() == "table") {
     // The share of the bed the tables covered, by cell-steps and by solids volume, over every
