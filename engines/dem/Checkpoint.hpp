@@ -1,10 +1,14 @@
 #pragma once
-// Checkpoint files of the DEM engine: one HDF5 file holding an EngineState exactly (doubles
-// stored as doubles), written beside its destination and renamed into place, so a kill during
-// the write leaves the previous checkpoint intact. A run resumed from it continues bit for bit.
+// Checkpoint files of the DEM engine: an EngineState held exactly (doubles stored as doubles) in a
+// core/io checkpoint file (format version and fingerprint on "/", written beside its destination
+// and renamed into place, so a kill during the write leaves the previous checkpoint intact). A run
+// resumed from it continues bit for bit. The state goes into a group of the open file, the root
+// for the dem engine, so a coupled engine (TF-DEM) can keep it in its own group beside the fluid's.
 #include <filesystem>
 #include <string>
 
+#include "core/io/H5InputFile.hpp"
+#include "core/io/H5OutputFile.hpp"
 #include "engines/dem/Simulation.hpp"
 
 namespace grainbridge::dem {
@@ -12,8 +16,13 @@ namespace grainbridge::dem {
 // 2: every per-particle array by name (inverse mass and inertia instead of a frozen flag)
 inline constexpr int kCheckpointFormatVersion = 2;
 
+// `state` into `group` of an open file, created unless it is the root.
+void writeEngineState(core::io::H5OutputFile& file, const EngineState& state, const std::string& group = "/");
+// Throws grainbridge::Error naming the file and the array if one is missing or of another shape.
+[[nodiscard]] EngineState readEngineState(const core::io::H5InputFile& file, const std::string& group = "/");
+
 // `fingerprint` identifies the run configuration (the stage key): a checkpoint of another
-// configuration is never resumed.
+// configuration is never resumed. The state is at the root.
 void writeCheckpoint(const std::filesystem::path& path, const EngineState& state, const std::string& fingerprint);
 // Throws grainbridge::Error naming the file if it is unreadable, of another format version, or
 // of another configuration.

@@ -2,13 +2,12 @@
 
 #include <random>
 
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 
 namespace grainbridge::mfm {
 
-void initialise(MultiFluidEngine& engine, const InitialState& init) {
-  auto& st = engine.state();
-  const auto& grid = engine.grid();
+void applyRegions(fluid::FlowState& st, const InitialState& init) {
+  const auto& grid = st.grid();
   const std::size_t M = st.phases.size();
   std::mt19937_64 rng(init.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -46,9 +45,16 @@ void initialise(MultiFluidEngine& engine, const InitialState& init) {
       }
     }
   }
+}
+
+void initialise(MultiFluidEngine& engine, const InitialState& init) {
+  applyRegions(engine.state(), init);
+  auto& st = engine.state();
+  const auto& grid = engine.grid();
+  const std::size_t M = st.phases.size();
   // The gas pressure: each cell carries the weight of the mixture above it, starting from the
   // reference at the top.
-  const VerticalAxis v = verticalAxis(engine.settings().gravity);
+  const fluid::VerticalAxis v = fluid::verticalAxis(engine.settings().gravity);
   const double g = engine.settings().gravity.norm();
   const double h = grid.spacing(v.axis);
   const int n = grid.cells(v.axis);

@@ -31,4 +31,9 @@ struct InitialState {
 // Cells no region covers are gas at rest.
 void initialise(MultiFluidEngine& engine, const InitialState& initial);
 
+// The regions' part of initialise() alone: every cell's fractions (perturbed), granular
+// temperatures and velocities; the pressure is left as it is. What the initial bed holds
+// (InitialBed.hpp) is read from these without building an engine.
+void applyRegions(fluid::FlowState& state, const InitialState& initial);
+
 }  // namespace grainbridge::mfm

@@ -3,10 +3,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/Error.hpp"
-#include "core/Files.hpp"
-#include "core/io/H5InputFile.hpp"
-#include "core/io/H5OutputFile.hpp"
+#include "core/io/CheckpointFile.hpp"
+#include "engines/fluid/FlowStateIo.hpp"
 
 namespace grainbridge::mfm {
 
@@ -108,14 +106,11 @@ bool MfmEngine::writeFramesIfUsable() {
 }
 
 void MfmEngine::saveState(const fs::path& path, const std::string& fingerprint) const {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    core::io::H5OutputFile f(tmp);
-    const auto& st = engine_->state();
+  core::io::writeCheckpointFile(path, {kCheckpointFormatVersion, fingerprint}, [this](core::io::H5OutputFile& f) {
+    // The flow state at the root, where format 2 keeps it; beside it what is mfm's own: the
+    // driver's step, the adaptive step and the statistics.
+    fluid::writeFlowState(f, "/", engine_->state());
     const auto& stats = engine_->statistics();
-    f.writeAttribute("/", "format_version", static_cast<std::int32_t>(kCheckpointFormatVersion));
-    f.writeAttribute("/", "fingerprint", fingerprint);
-    f.writeAttribute("/", "time", st.time);
     f.writeAttribute("/", "step", static_cast<std::int64_t>(step_));
     f.writeAttribute("/", "dt", engine_->timeStep().current());
     f.writeAttribute("/", "solver_steps", static_cast<std::int64_t>(stats.steps));
@@ -126,38 +121,15 @@ void MfmEngine::saveState(const fs::path& path, const std::string& fingerprint) 
     f.writeAttribute("/", "covered_cell_steps", static_cast<std::int64_t>(stats.coveredCellSteps));
     f.writeAttribute("/", "table_solids_steps", stats.tableSolidsSteps);
     f.writeAttribute("/", "covered_solids_steps", stats.coveredSolidsSteps);
-    // The padded arrays (ghosts included), exactly as held.
-    f.writeDataset("pressure", st.pressure.values());
-    for (std::size_t m = 0; m < st.phases.size(); ++m) {
-      const std::string p = "phase_" + std::to_string(m);
-      f.writeDataset(p + "_fraction", st.phases[m].fraction.values());
-      f.writeDataset(p + "_granular_temperature", st.phases[m].granularTemperature.values());
-      for (int a = 0; a < 3; ++a)
-        f.writeDataset(p + "_velocity_" + std::to_string(a),
-                       st.phases[m].velocity[static_cast<std::size_t>(a)].values());
-    }
-    f.close();
-  }
-  fs::rename(tmp, path);
-  core::syncDirectory(path.parent_path());
+  });
 }
 
 std::unique_ptr<MfmEngine> MfmEngine::restore(const MultiFluidSetup& setup, const fs::path& stateFile,
                                               const std::string& fingerprint, const fs::path& outputDir,
                                               core::io::ArtifactStamp stamp) {
   std::unique_ptr<MfmEngine> e(new MfmEngine(setup, outputDir, std::move(stamp)));
-  core::io::H5InputFile f(stateFile);
-  const auto version = f.readIntAttribute("/", "format_version");
-  if (version != kCheckpointFormatVersion) {
-    throw Error("checkpoint '" + stateFile.string() + "' has format_version " + std::to_string(version) +
-                ", this build reads " + std::to_string(kCheckpointFormatVersion));
-  }
-  if (f.readStringAttribute("/", "fingerprint") != fingerprint) {
-    throw Error("checkpoint '" + stateFile.string() + "' belongs to another configuration");
-  }
-  auto& st = e->engine_->state();
-  const hsize_t n = st.pressure.values().size();
-  st.time = f.readDoubleAttribute("/", "time");
+  const auto f = core::io::openCheckpointFile(stateFile, {kCheckpointFormatVersion, fingerprint});
+  fluid::readFlowState(f, "/", e->engine_->state());
   e->step_ = f.readIntAttribute("/", "step");
   e->engine_->timeStep().restore(f.readDoubleAttribute("/", "dt"));
   StepStatistics stats;
@@ -170,15 +142,6 @@ std::unique_ptr<MfmEngine> MfmEngine::restore(const MultiFluidSetup& setup, cons
   stats.tableSolidsSteps = f.readDoubleAttribute("/", "table_solids_steps");
   stats.coveredSolidsSteps = f.readDoubleAttribute("/", "covered_solids_steps");
   e->engine_->restoreStatistics(stats);
-  st.pressure.values() = f.readDoubles("pressure", {n});
-  for (std::size_t m = 0; m < st.phases.size(); ++m) {
-    const std::string p = "phase_" + std::to_string(m);
-    st.phases[m].fraction.values() = f.readDoubles(p + "_fraction", {n});
-    st.phases[m].granularTemperature.values() = f.readDoubles(p + "_granular_temperature", {n});
-    for (int a = 0; a < 3; ++a)
-      st.phases[m].velocity[static_cast<std::size_t>(a)].values() =
-          f.readDoubles(p + "_velocity_" + std::to_string(a), {n});
-  }
   return e;
 }
 

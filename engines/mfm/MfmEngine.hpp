@@ -27,7 +27,8 @@ struct MultiFluidSetup {
   double interval = 0.01;  // the driver's step [s]
 };
 
-// 2: each phase's granular temperature too.
+// 2: each phase's granular temperature too. The flow state is fluid/FlowStateIo's layout at the
+// root, the step, adaptive step and statistics attributes beside it.
 inline constexpr int kCheckpointFormatVersion = 2;
 
 class MfmEngine final : public core::engine::SteppedEngine {

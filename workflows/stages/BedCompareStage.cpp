@@ -10,7 +10,7 @@
 #include "core/io/FieldFrameReader.hpp"
 #include "core/io/XdmfText.hpp"
 #include "core/text/NumberText.hpp"
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 #include "workflows/report/CsvField.hpp"
 #include "workflows/report/NumericCsv.hpp"
 #include "workflows/report/Plot.hpp"
@@ -109,7 +109,7 @@ report::FieldMap solidFractionMap(const Bed& bed) {
     throw Error("bed_compare: the mean fields of " + bed.label + " ('" + files.back().string() +
                 "') carry no materials (gravity): rerun it with this grainbridge");
   }
-  const int vertical = mfm::verticalAxis(frame.materials.gravity).axis;
+  const int vertical = fluid::verticalAxis(frame.materials.gravity).axis;
   const int horizontal = vertical == 0 ? 1 : 0;
   const int depth = 3 - vertical - horizontal;
   const auto& g = frame.grid;

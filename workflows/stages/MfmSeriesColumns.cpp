@@ -3,7 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/text/NumberText.hpp"
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -19,15 +19,15 @@ MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup&
 
 void MfmSeriesColumns::sample(driver::SeriesRow& row) {
   const auto& state = engine_.engine().state();
-  const mfm::VerticalAxis vertical = mfm::verticalAxis(setup_.engine.settings.gravity);
+  const fluid::VerticalAxis vertical = fluid::verticalAxis(setup_.engine.settings.gravity);
   std::vector<double> values;
   for (const auto& tap : setup_.taps) {
-    values.push_back(mfm::pressureAtHeight(state, vertical, tap.low) -
-                     mfm::pressureAtHeight(state, vertical, tap.high));
+    values.push_back(fluid::pressureAtHeight(state, vertical, tap.low) -
+                     fluid::pressureAtHeight(state, vertical, tap.high));
   }
   const std::size_t M = setup_.engine.model.solids.size();
-  for (std::size_t m = 1; m <= M; ++m) values.push_back(mfm::meanParticleHeight(state, vertical, m));
-  for (std::size_t m = 1; m <= M; ++m) values.push_back(mfm::solidsVolume(state, m));
+  for (std::size_t m = 1; m <= M; ++m) values.push_back(fluid::meanParticleHeight(state, vertical, m));
+  for (std::size_t m = 1; m <= M; ++m) values.push_back(fluid::solidsVolume(state, m));
   const auto& stats = engine_.engine().statistics();
   values.push_back(stats.lastDt);
   values.push_back(static_cast<double>(stats.steps));

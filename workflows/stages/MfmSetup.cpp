@@ -7,7 +7,7 @@
 #include "core/text/NumberText.hpp"
 #include "engines/closures/SyamlalOBrien.hpp"
 #include "engines/closures/TabulatedClosure.hpp"
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -279,7 +279,7 @@ MfmSetup makeMfmSetup(const json& p, const json* closureTables) {
   s.initial.seed = p.at("seed").get<std::uint64_t>();
 
   // Pressure taps, heights along gravity.
-  const mfm::VerticalAxis vertical = mfm::verticalAxis(settings.gravity);
+  const fluid::VerticalAxis vertical = fluid::verticalAxis(settings.gravity);
   const double height = lengths[vertical.axis];
   const json taps = p.value("pressure_taps", json::array());  // optional lists: absent when not given
   for (std::size_t k = 0; k < taps.size(); ++k) {

@@ -8,8 +8,8 @@
 #include "core/averaging/BlockAverage.hpp"
 #include "core/averaging/DominantFrequency.hpp"
 #include "core/io/FieldFrameWriter.hpp"
-#include "engines/closures/MinimumFluidization.hpp"
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
+#include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/closures/ClosureCatalog.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
@@ -319,23 +319,9 @@ void MfmStage::run(StageContext& ctx) const {
   MfmSeriesColumns& observed = *columns;
   // The initial inventory (of a fresh start, also when this run resumes): solids volume and the
   // bed's buoyant weight per unit area of the bottom.
-  std::vector<double> initialVolumes;
-  double initialWeight = 0.0;
-  {
-    mfm::MultiFluidEngine fresh(setup.engine.geometry, setup.engine.patches, setup.engine.model, setup.engine.settings,
-                                setup.engine.limits);
-    mfm::initialise(fresh, setup.initial);
-    const auto& g = setup.engine.geometry;
-    const mfm::VerticalAxis vertical = mfm::verticalAxis(setup.engine.settings.gravity);
-    const double bottom = g.spacing.prod() * g.cellCount() /
-                          (g.spacing[vertical.axis] * g.cells[static_cast<std::size_t>(vertical.axis)]);
-    for (std::size_t m = 1; m <= solids.size(); ++m) {
-      const double v = mfm::solidsVolume(fresh.state(), m);
-      initialVolumes.push_back(v);
-      initialWeight += v * (solids[m - 1].density - setup.engine.model.gas.densityAt(setup.initial.referencePressure)) *
-                       setup.engine.settings.gravity.norm() / bottom;
-    }
-  }
+  const mfm::InitialInventory inventory = mfm::initialInventory(setup.engine, setup.initial);
+  const std::vector<double>& initialVolumes = inventory.solidsVolume;
+  const double initialWeight = inventory.buoyantWeight;
   loop.addColumns(std::move(columns));
   loop.run(*engine);
 
@@ -383,22 +369,10 @@ void MfmStage::run(StageContext& ctx) const {
   summary["window_samples"] = observed.fieldAverage().frames();
   // What a fluidization curve is read against: the initial bed's buoyant weight per unit area of
   // the bottom, (1 - eps) (rho_s - rho_g) g H, and the minimum fluidization velocity the drag law
-  // implies at the first region's void fraction (engines/closures/MinimumFluidization).
+  // implies at the first region holding solids (engines/mfm/InitialBed).
   if (!solids.empty()) {
     summary["bed_weight"] = initialWeight;
-    for (const auto& region : setup.initial.regions) {
-      double solidsFraction = 0.0;
-      for (double f : region.solidsFractions) solidsFraction += f;
-      if (solidsFraction <= 0.0) continue;
-      const grainbridge::closures::PackedBed bed{1.0 - solidsFraction,
-                                    solids[0].diameter,
-                                    solids[0].density,
-                                    setup.engine.model.gas.densityAt(setup.initial.referencePressure),
-                                    setup.engine.model.gas.viscosity,
-                                    setup.engine.settings.gravity.norm()};
-      summary["drag_umf"] = grainbridge::closures::minimumFluidizationVelocity(setup.engine.model.drag, bed);
-      break;
-    }
+    if (const auto umf = mfm::dragMinimumFluidizationVelocity(setup.engine, setup.initial)) summary["drag_umf"] = *umf;
   }
   if (setup.engine.model.closure.kind() == "table") {
     // The share of the bed the tables covered, by cell-steps and by solids volume, over every
@@ -415,7 +389,7 @@ void MfmStage::run(StageContext& ctx) const {
   // The relative change of the solids inventory over the run, per phase and of all solids.
   double totalNow = 0.0, totalInitial = 0.0;
   for (std::size_t m = 0; m < solids.size(); ++m) {
-    const double now = mfm::solidsVolume(engine->engine().state(), m + 1);
+    const double now = fluid::solidsVolume(engine->engine().state(), m + 1);
     totalNow += now;
     totalInitial += initialVolumes[m];
     if (initialVolumes[m] > 0.0) summary["solids_volume_change_" + solids[m].name] = now / initialVolumes[m] - 1.0;

@@ -3,12 +3,14 @@
 // contact history, neighbour rebuilds, re-sorting and periodic images all matter.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <type_traits>
 
 #include <filesystem>
 
+#include "core/io/CheckpointFile.hpp"
 #include "engines/dem/Checkpoint.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
@@ -139,4 +141,52 @@ TEST(Restart, CheckpointFileHoldsEveryParticleArray) {
   Particles::forEachParticleArray(state.particles, compare);
   Particles::forEachOwnedArray(state.particles, compare);
   EXPECT_EQ(arrays, 14);
+}
+
+// A coupled engine (TF-DEM) keeps the DEM state in a group of its checkpoint beside the fluid's:
+// the state read from "/dem" equals the one the dem engine's own checkpoint holds at the root.
+TEST(Restart, EngineStateInAGroupEqualsTheRootCheckpoint) {
+  Simulation sim(packingSetup(), packingParticles());
+  sim.run(200);
+  const EngineState state = sim.captureState();
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto root = dir / "grainbridge-restart-root.ckpt";
+  const auto coupled = dir / "grainbridge-restart-coupled.ckpt";
+  writeCheckpoint(root, state, "fingerprint");
+  core::io::writeCheckpointFile(coupled, {1, "coupled"}, [&](core::io::H5OutputFile& f) {
+    writeEngineState(f, state, "/dem");
+    f.createGroup("/fluid");
+    f.writeAttribute("/fluid", "time", 99.0);
+  });
+  const EngineState fromRoot = readCheckpoint(root, "fingerprint");
+  const EngineState fromGroup = readEngineState(core::io::openCheckpointFile(coupled, {1, "coupled"}), "/dem");
+  std::filesystem::remove(root);
+  std::filesystem::remove(coupled);
+  EXPECT_EQ(fromGroup.time, fromRoot.time);
+  EXPECT_EQ(fromGroup.step, fromRoot.step);
+  EXPECT_EQ(fromGroup.rebuildsSinceSort, fromRoot.rebuildsSinceSort);
+  ASSERT_EQ(fromGroup.particles.nOwned, state.particles.nOwned);
+  int arrays = 0;
+  auto compare = [&](const char* name, const auto& a) {
+    auto match = [&](const char* otherName, const auto& b) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(a)>, std::decay_t<decltype(b)>>) {
+        if (std::string(otherName) == name) {
+          ++arrays;
+          EXPECT_TRUE(a == b) << name;
+        }
+      }
+    };
+    Particles::forEachParticleArray(fromRoot.particles, match);
+    Particles::forEachOwnedArray(fromRoot.particles, match);
+  };
+  Particles::forEachParticleArray(fromGroup.particles, compare);
+  Particles::forEachOwnedArray(fromGroup.particles, compare);
+  EXPECT_EQ(arrays, 14);
+  EXPECT_EQ(fromGroup.buildPositions, fromRoot.buildPositions);
+  auto samePair = [](const PairHistory& a, const PairHistory& b) {
+    return a.low == b.low && a.high == b.high && a.ut == b.ut;
+  };
+  EXPECT_TRUE(std::equal(fromGroup.pairHistory.begin(), fromGroup.pairHistory.end(), fromRoot.pairHistory.begin(),
+                         fromRoot.pairHistory.end(), samePair));
+  EXPECT_EQ(fromGroup.wallHistory, fromRoot.wallHistory);
 }

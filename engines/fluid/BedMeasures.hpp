@@ -1,5 +1,6 @@
 #pragma once
-// What a researcher reads off a fluidized bed while it runs (the series of an mfm stage):
+// What a researcher reads off a fluidized bed while it runs (the series of an mfm stage; from the
+// grid and the FlowState only, so any engine with a gas phase, TF-DEM too, reads the same):
 //   the gas pressure drop between two heights along gravity, interpolated linearly between cell
 //   centres and averaged across the bed (Fig. 4.5's Delta P, with the heights the experiment's
 //   taps had);
@@ -10,7 +11,7 @@
 
 #include "engines/fluid/FlowState.hpp"
 
-namespace grainbridge::mfm {
+namespace grainbridge::fluid {
 
 // The axis gravity points along (the largest |g| component) and its sign: heights grow
 // against gravity.
@@ -22,13 +23,13 @@ struct VerticalAxis {
 
 // P_g at height h [m] above the domain's bottom, averaged over the cells of that height; between
 // cell centres linearly, below the first centre extrapolated from the first two (the inlet face).
-[[nodiscard]] double pressureAtHeight(const fluid::FlowState& state, VerticalAxis vertical, double height);
+[[nodiscard]] double pressureAtHeight(const FlowState& state, VerticalAxis vertical, double height);
 
 // Eq. 5.22 for solids phase m [m]; 0 when the phase holds no solids.
-[[nodiscard]] double meanParticleHeight(const fluid::FlowState& state, VerticalAxis vertical, std::size_t m);
+[[nodiscard]] double meanParticleHeight(const FlowState& state, VerticalAxis vertical, std::size_t m);
 
 // The volume of solids phase m in the domain [m^3] (per unit depth in 2D: the cell volume uses
 // the z spacing, which a 2D grid sets to its depth).
-[[nodiscard]] double solidsVolume(const fluid::FlowState& state, std::size_t m);
+[[nodiscard]] double solidsVolume(const FlowState& state, std::size_t m);
 
-}  // namespace grainbridge::mfm
+}  // namespace grainbridge::fluid

@@ -1,9 +1,9 @@
-#include "engines/mfm/BedMeasures.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace grainbridge::mfm {
+namespace grainbridge::fluid {
 
 VerticalAxis verticalAxis(const Vec3& gravity) {
   VerticalAxis v;
@@ -17,14 +17,14 @@ VerticalAxis verticalAxis(const Vec3& gravity) {
 namespace {
 
 // Height of cell row r along the vertical axis, from the low (up = +1) or high (up = -1) side.
-double rowHeight(const fluid::StaggeredGrid& grid, VerticalAxis v, int row) {
+double rowHeight(const StaggeredGrid& grid, VerticalAxis v, int row) {
   const int n = grid.cells(v.axis);
   const int fromBottom = v.up > 0.0 ? row : n - 1 - row;
   return (fromBottom + 0.5) * grid.spacing(v.axis);
 }
 
 // Mean P_g over the cells of one row.
-double rowPressure(const fluid::FlowState& state, VerticalAxis v, int row) {
+double rowPressure(const FlowState& state, VerticalAxis v, int row) {
   const auto& grid = state.grid();
   double sum = 0.0;
   long count = 0;
@@ -43,7 +43,7 @@ double rowPressure(const fluid::FlowState& state, VerticalAxis v, int row) {
 
 }  // namespace
 
-double pressureAtHeight(const fluid::FlowState& state, VerticalAxis v, double height) {
+double pressureAtHeight(const FlowState& state, VerticalAxis v, double height) {
   const auto& grid = state.grid();
   const int n = grid.cells(v.axis);
   const double h = grid.spacing(v.axis);
@@ -56,7 +56,7 @@ double pressureAtHeight(const fluid::FlowState& state, VerticalAxis v, double he
   return (1.0 - w) * rowPressure(state, v, row(below)) + w * rowPressure(state, v, row(below + 1));
 }
 
-double meanParticleHeight(const fluid::FlowState& state, VerticalAxis v, std::size_t m) {
+double meanParticleHeight(const FlowState& state, VerticalAxis v, std::size_t m) {
   const auto& grid = state.grid();
   double weighted = 0.0, total = 0.0;
   for (int k = 0; k < grid.cells(2); ++k) {
@@ -72,7 +72,7 @@ double meanParticleHeight(const fluid::FlowState& state, VerticalAxis v, std::si
   return total > 0.0 ? weighted / total : 0.0;
 }
 
-double solidsVolume(const fluid::FlowState& state, std::size_t m) {
+double solidsVolume(const FlowState& state, std::size_t m) {
   const auto& grid = state.grid();
   double total = 0.0;
   for (int k = 0; k < grid.cells(2); ++k)
@@ -81,4 +81,4 @@ double solidsVolume(const fluid::FlowState& state, std::size_t m) {
   return total * grid.cellVolume();
 }
 
-}  // namespace grainbridge::mfm
+}  // namespace grainbridge::fluid

@@ -1,0 +1,50 @@
+// The bed measures (engines/fluid/BedMeasures) on a small column whose answers are known by hand:
+// heights grow against gravity whichever axis and sign it has, Eq. 5.22's mean height is the
+// centroid of the solids, the pressure between cell centres is linear, and the solids volume is
+// the sum of eps_s times the cell volume.
+#include "engines/fluid/BedMeasures.hpp"
+
+#include <gtest/gtest.h>
+
+namespace grainbridge::fluid {
+namespace {
+
+// 2 x 4 cells of 0.1 m x 0.25 m, 0.5 m deep; gas plus one solids phase.
+core::data::GridGeometry column() {
+  core::data::GridGeometry g;
+  g.spacing = Vec3(0.1, 0.25, 0.5);
+  g.cells = {2, 4, 1};
+  return g;
+}
+
+TEST(BedMeasures, VerticalAxisPointsAgainstGravity) {
+  EXPECT_EQ(verticalAxis(Vec3(0.0, -9.81, 0.0)).axis, 1);
+  EXPECT_EQ(verticalAxis(Vec3(0.0, -9.81, 0.0)).up, 1.0);
+  EXPECT_EQ(verticalAxis(Vec3(0.0, 0.0, 9.81)).axis, 2);
+  EXPECT_EQ(verticalAxis(Vec3(0.0, 0.0, 9.81)).up, -1.0);
+}
+
+TEST(BedMeasures, MeanHeightPressureAndVolumeOfAColumn) {
+  const StaggeredGrid grid(column());
+  FlowState st(grid, 2);
+  // Solids in the two lowest rows: 0.6 in row 0, 0.2 in row 1; pressure falls 100 Pa per row.
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      st.phases[1].fraction(i, j, 0) = j == 0 ? 0.6 : (j == 1 ? 0.2 : 0.0);
+      st.pressure(i, j, 0) = 1000.0 - 100.0 * j;
+    }
+  }
+  const VerticalAxis up = verticalAxis(Vec3(0.0, -9.81, 0.0));
+  // Row centres at 0.125 and 0.375 m, weighted 3 : 1.
+  EXPECT_DOUBLE_EQ(meanParticleHeight(st, up, 1), (0.6 * 0.125 + 0.2 * 0.375) / 0.8);
+  EXPECT_DOUBLE_EQ(meanParticleHeight(st, up, 0), 0.0);  // the gas holds no fraction here
+  EXPECT_DOUBLE_EQ(pressureAtHeight(st, up, 0.25), 950.0);
+  EXPECT_DOUBLE_EQ(pressureAtHeight(st, up, 0.0), 1050.0);  // extrapolated to the inlet face
+  EXPECT_DOUBLE_EQ(solidsVolume(st, 1), 2 * (0.6 + 0.2) * 0.1 * 0.25 * 0.5);
+  // Gravity along +y: the same column read upside down.
+  const VerticalAxis down = verticalAxis(Vec3(0.0, 9.81, 0.0));
+  EXPECT_DOUBLE_EQ(meanParticleHeight(st, down, 1), (0.6 * 0.875 + 0.2 * 0.625) / 0.8);
+}
+
+}  // namespace
+}  // namespace grainbridge::fluid
