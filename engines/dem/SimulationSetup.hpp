@@ -10,17 +10,14 @@
 #include <vector>
 
 #include "core/Types.hpp"
+#include "core/engine/SetupProblem.hpp"
 #include "engines/dem/Material.hpp"
 #include "engines/dem/Walls.hpp"
 #include "engines/dem/contact/ContactModels.hpp"
 
 namespace grainbridge::dem {
 
-// A setup the engine cannot run: the JSON pointer of the key at fault ("/box_hi/0") and why.
-struct SetupProblem {
-  std::string pointer;
-  std::string message;
-};
+using core::engine::SetupProblem;
 
 struct SimulationSetup {
   Vec3 lo = Vec3::Zero();
