@@ -6,6 +6,7 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/StencilSystemTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/ConvectionDiffusionTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/BoundariesTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FluidSetupTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
 
