@@ -47,7 +47,8 @@ std::string listed(const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter) const {
+std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter,
+                                                    std::optional<std::int64_t> insertedParticles) const {
   std::vector<SetupProblem> out;
   auto add = [&out](std::string pointer, std::string message) {
     out.push_back({std::move(pointer), std::move(message)});
@@ -102,6 +103,10 @@ std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter) cons
   if (species < 1 || pairMaterial.size() != static_cast<std::size_t>(species * species)) {
     add("/pair_materials",
         text("need one material per species pair: ", species, " species, ", pairMaterial.size(), " materials"));
+  }
+  if (insertedParticles && *insertedParticles == 0) {
+    add("/species", text("no species inserts a particle (every count is 0) and no state is read from a file "
+                         "(lammps_data or initial_frame): the run would have no particles; give a species a count"));
   }
   for (std::size_t w = 0; w < walls.size(); ++w) {
     if (walls[w].material.size() != static_cast<std::size_t>(species)) {

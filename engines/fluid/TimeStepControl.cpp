@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/text/NumberText.hpp"
+
 namespace grainbridge::fluid {
 
 std::vector<core::engine::SetupProblem> TimeStepLimits::problems() const {
@@ -9,7 +11,9 @@ std::vector<core::engine::SetupProblem> TimeStepLimits::problems() const {
   if (!(minimum > 0.0)) {
     out.push_back({"/dt", "the minimum time step must be positive"});
   } else if (!(maximum >= minimum)) {
-    out.push_back({"/dt", "the maximum time step must not be below the minimum"});
+    out.push_back({"/dt_min", "dt_min = " + core::humanNumber(minimum) +
+                                  " s is above dt_max = " + core::humanNumber(maximum) +
+                                  " s: the smallest step must not exceed the largest (equal: a fixed step)"});
   } else if (!(initial >= minimum && initial <= maximum)) {
     out.push_back({"/dt", "the initial time step must lie between the minimum and the maximum"});
   }

@@ -79,7 +79,8 @@ void initialise(MultiFluidEngine& engine, const InitialState& init) {
   }
 }
 
-std::vector<core::engine::SetupProblem> InitialState::problems(std::size_t solidsPhases, double packedFraction) const {
+std::vector<core::engine::SetupProblem> InitialState::problems(const core::data::GridGeometry& domain,
+                                                               std::size_t solidsPhases, double packedFraction) const {
   std::vector<core::engine::SetupProblem> out;
   for (std::size_t k = 0; k < regions.size(); ++k) {
     const InitialRegion& r = regions[k];
@@ -95,6 +96,18 @@ std::vector<core::engine::SetupProblem> InitialState::problems(std::size_t solid
                        "the solids fractions add up to " + core::humanNumber(solids) +
                            ", above the packed solids fraction eps_s,max = " + core::humanNumber(packedFraction)});
       }
+    }
+    // Inside the domain along every axis, to round-off: a box past a side would start the run
+    // with fewer grains than the config describes, silently.
+    for (int a = 0; a < 3; ++a) {
+      const double low = domain.origin[a];
+      const double high = low + domain.cells[static_cast<std::size_t>(a)] * domain.spacing[a];
+      const double slack = 1e-9 * (high - low);
+      const std::string along = std::string(" along ") + "xyz"[a] + " is ";
+      const std::string domainText =
+          " m, outside the domain (" + core::humanNumber(low) + " to " + core::humanNumber(high) + " m)";
+      if (r.lo[a] < low - slack) out.push_back({at + "/lo", "lo" + along + core::humanNumber(r.lo[a]) + domainText});
+      if (r.hi[a] > high + slack) out.push_back({at + "/hi", "hi" + along + core::humanNumber(r.hi[a]) + domainText});
     }
   }
   return out;

@@ -31,10 +31,12 @@ struct InitialState {
   double perturbation = 0.0;            // relative amplitude, solids fractions only lowered
   std::uint64_t seed = 1;
 
-  // Every reason these regions cannot start `solidsPhases` solids phases, each at the
-  // JSON pointer of its key ("/regions/1/solids_fractions"): a fraction count other than the
-  // phases', solids above the packed fraction. Empty when the run can start.
-  [[nodiscard]] std::vector<core::engine::SetupProblem> problems(std::size_t solidsPhases, double packedFraction) const;
+  // Every reason these regions cannot start `solidsPhases` solids phases in `domain`, each at the
+  // JSON pointer of its key ("/regions/1/hi"): a fraction count other than the phases', solids
+  // above the packed fraction, a box partly outside the domain (a 2D grid's z against its depth).
+  // Empty when the run can start.
+  [[nodiscard]] std::vector<core::engine::SetupProblem> problems(const core::data::GridGeometry& domain,
+                                                                 std::size_t solidsPhases, double packedFraction) const;
 };
 
 // The JSON form uses the `mfm` stage's keys: regions (lo, hi, solids_fractions, gas_velocity,

@@ -145,7 +145,7 @@ MfmSetup makeMfmSetup(const json& p, const json* closureTables) {
   addProblems(s, fluidSetup.problems(M, packed));
   if (s.problems.size() == fluidProblems) s.engine.patches = fluidSetup.patches(M);
   s.initial = p.get<mfm::InitialState>();
-  addProblems(s, s.initial.problems(M, packed));
+  addProblems(s, s.initial.problems(s.engine.geometry, M, packed));
 
   // Pressure taps, heights along gravity.
   const mfm::VerticalAxis vertical = mfm::verticalAxis(settings.gravity);

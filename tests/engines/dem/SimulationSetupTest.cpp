@@ -72,6 +72,13 @@ TEST(SimulationSetup, EachRuleNamesItsKey) {
       << problems.at(0).message;
 }
 
+TEST(SimulationSetup, ARunWithoutParticlesIsRefusedAtTheSpeciesWhenTheCountIsKnown) {
+  const SimulationSetup s = twoSpeciesWithWalls();
+  EXPECT_EQ(pointersOf(s.problems(1.0, 0)), (std::vector<std::string>{"/species"}));
+  EXPECT_TRUE(s.problems(1.0, 1).empty());
+  EXPECT_TRUE(s.problems(1.0).empty());  // read from a file: not known before the run
+}
+
 TEST(SimulationSetup, ANeighbourGridTooLargeToAllocateIsRefusedNamingTheBox) {
   SimulationSetup s = twoSpeciesWithWalls();
   s.hi = s.lo + Vec3::Constant(1.0e4);  // 10^4 diameters per side: 5.9e11 cells

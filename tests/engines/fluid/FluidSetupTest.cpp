@@ -126,6 +126,12 @@ TEST(FluidSetup, AFixedStepRefusesAnInletAboveTheCourantLimit) {
 
 TEST(FluidSetup, TimeStepAndGridProblemsNameTheirKeys) {
   FluidSetup s = jetBed();
+  s.timeStep.minimum = 2e-3;  // above dt_max
+  const auto problems = s.problems(1, 0.6);
+  ASSERT_EQ(pointersOf(problems), (std::vector<std::string>{"/dt_min"}));
+  EXPECT_NE(problems[0].message.find("dt_min = 0.002 s is above dt_max = 0.001 s"), std::string::npos)
+      << problems[0].message;
+  s = jetBed();
   s.timeStep.initial = 1.0;  // the other limits' problems stay at /dt
   EXPECT_EQ(pointersOf(s.problems(1, 0.6)), (std::vector<std::string>{"/dt"}));
   s = jetBed();
