@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/json/Vec3Json.hpp"
 #include "engines/dem/NeighborList.hpp"
 
 namespace grainbridge::dem {
@@ -21,9 +22,6 @@ std::string text(const Pieces&... pieces) {
   (out << ... << pieces);
   return out.str();
 }
-
-json vec(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
-Vec3 vec(const json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()); }
 
 json materialJson(const PairMaterial& m) {
   return {{"kn", m.kn},     {"kt", m.kt},       {"gamma_n", m.gammaN}, {"gamma_t", m.gammaT},
@@ -49,7 +47,8 @@ std::string listed(const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter) const {
+std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter,
+                                                    std::optional<std::int64_t> insertedParticles) const {
   std::vector<SetupProblem> out;
   auto add = [&out](std::string pointer, std::string message) {
     out.push_back({std::move(pointer), std::move(message)});
@@ -105,6 +104,10 @@ std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter) cons
     add("/pair_materials",
         text("need one material per species pair: ", species, " species, ", pairMaterial.size(), " materials"));
   }
+  if (insertedParticles && *insertedParticles == 0) {
+    add("/species", text("no species inserts a particle (every count is 0) and no state is read from a file "
+                         "(lammps_data or initial_frame): the run would have no particles; give a species a count"));
+  }
   for (std::size_t w = 0; w < walls.size(); ++w) {
     if (walls[w].material.size() != static_cast<std::size_t>(species)) {
       add("/walls/" + std::to_string(w),
@@ -127,18 +130,18 @@ void to_json(json& j, const SimulationSetup& s) {
     json materials = json::array();
     for (const auto& m : w.material) materials.push_back(materialJson(m));
     walls.push_back({{"kind", w.kind == Wall::Kind::Cylinder ? "cylinder" : "plane"},
-                     {"point", vec(w.origin)},
-                     {"direction", vec(w.direction)},
+                     {"point", core::json::vec3Json(w.origin)},
+                     {"direction", core::json::vec3Json(w.direction)},
                      {"radius", w.radius},
                      {"vibration_amplitude", w.vibration.amplitude},
                      {"vibration_frequency", w.vibration.frequency},
-                     {"vibration_direction", vec(w.vibration.direction)},
+                     {"vibration_direction", core::json::vec3Json(w.vibration.direction)},
                      {"materials", materials}});
   }
-  j = {{"box_lo", vec(s.lo)},
-       {"box_hi", vec(s.hi)},
+  j = {{"box_lo", core::json::vec3Json(s.lo)},
+       {"box_hi", core::json::vec3Json(s.hi)},
        {"periodic", periodic},
-       {"gravity", vec(s.gravity)},
+       {"gravity", core::json::vec3Json(s.gravity)},
        {"background_damping", s.backgroundDamping},
        {"shear_rate", s.shearRate},
        {"planar", planar},
@@ -154,11 +157,11 @@ void to_json(json& j, const SimulationSetup& s) {
 }
 
 void from_json(const json& j, SimulationSetup& s) {
-  s.lo = vec(j.at("box_lo"));
-  s.hi = vec(j.at("box_hi"));
+  s.lo = core::json::vec3FromJson(j.at("box_lo"));
+  s.hi = core::json::vec3FromJson(j.at("box_hi"));
   const std::string periodic = j.at("periodic");
   for (int a = 0; a < 3; ++a) s.periodic[static_cast<std::size_t>(a)] = periodic.find(kAxes[a]) != std::string::npos;
-  s.gravity = vec(j.at("gravity"));
+  s.gravity = core::json::vec3FromJson(j.at("gravity"));
   s.backgroundDamping = j.at("background_damping");
   s.shearRate = j.at("shear_rate");
   const std::string planar = j.at("planar");
@@ -175,12 +178,12 @@ void from_json(const json& j, SimulationSetup& s) {
   for (const auto& wj : j.at("walls")) {
     Wall w;
     w.kind = wj.at("kind") == "cylinder" ? Wall::Kind::Cylinder : Wall::Kind::Plane;
-    w.origin = vec(wj.at("point"));
-    w.direction = vec(wj.at("direction"));
+    w.origin = core::json::vec3FromJson(wj.at("point"));
+    w.direction = core::json::vec3FromJson(wj.at("direction"));
     w.radius = wj.at("radius");
     w.vibration.amplitude = wj.at("vibration_amplitude");
     w.vibration.frequency = wj.at("vibration_frequency");
-    w.vibration.direction = vec(wj.at("vibration_direction"));
+    w.vibration.direction = core::json::vec3FromJson(wj.at("vibration_direction"));
     for (const auto& m : wj.at("materials")) w.material.push_back(material(m));
     s.walls.push_back(std::move(w));
   }

@@ -5,22 +5,21 @@
 // gravity, shear_rate, dt, skin, planar, ...), so a problem found here is reported at the JSON
 // pointer of the key the user wrote, and the engine and the stage check each rule once, here.
 #include <array>
+#include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/Types.hpp"
+#include "core/engine/SetupProblem.hpp"
 #include "engines/dem/Material.hpp"
 #include "engines/dem/Walls.hpp"
 #include "engines/dem/contact/ContactModels.hpp"
 
 namespace grainbridge::dem {
 
-// A setup the engine cannot run: the JSON pointer of the key at fault ("/box_hi/0") and why.
-struct SetupProblem {
-  std::string pointer;
-  std::string message;
-};
+using core::engine::SetupProblem;
 
 struct SimulationSetup {
   Vec3 lo = Vec3::Zero();
@@ -50,8 +49,10 @@ struct SimulationSetup {
   // Every reason this setup cannot run grains up to `largestDiameter` across: a box that is
   // empty along an axis, a periodic length that would need two images of one neighbour, shear
   // without the periodic axes it needs, a neighbour grid too large to allocate, missing
-  // materials. Empty when it can run.
-  [[nodiscard]] std::vector<SetupProblem> problems(double largestDiameter) const;
+  // materials, and (when `insertedParticles` is known: no state is read from a file) a run
+  // without a single particle. Empty when it can run.
+  [[nodiscard]] std::vector<SetupProblem> problems(double largestDiameter,
+                                                   std::optional<std::int64_t> insertedParticles = std::nullopt) const;
 };
 
 // The interaction range of the neighbour list: the largest contact distance plus the skin.

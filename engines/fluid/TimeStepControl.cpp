@@ -2,17 +2,27 @@
 
 #include <algorithm>
 
+#include "core/text/NumberText.hpp"
+
 namespace grainbridge::fluid {
 
-std::string TimeStepLimits::problem() const {
-  if (!(minimum > 0.0)) return "the minimum time step must be positive";
-  if (!(maximum >= minimum)) return "the maximum time step must not be below the minimum";
-  if (!(initial >= minimum && initial <= maximum))
-    return "the initial time step must lie between the minimum and the maximum";
-  if (!(courant > 0.0)) return "the Courant number must be positive";
-  if (!(growth >= 1.0) || !(shrink > 0.0 && shrink <= 1.0)) return "growth must be >= 1 and shrink in (0, 1]";
-  if (fewIterations < 1 || manyIterations < fewIterations) return "need 1 <= few iterations <= many iterations";
-  return {};
+std::vector<core::engine::SetupProblem> TimeStepLimits::problems() const {
+  std::vector<core::engine::SetupProblem> out;
+  if (!(minimum > 0.0)) {
+    out.push_back({"/dt", "the minimum time step must be positive"});
+  } else if (!(maximum >= minimum)) {
+    out.push_back({"/dt_min", "dt_min = " + core::humanNumber(minimum) +
+                                  " s is above dt_max = " + core::humanNumber(maximum) +
+                                  " s: the smallest step must not exceed the largest (equal: a fixed step)"});
+  } else if (!(initial >= minimum && initial <= maximum)) {
+    out.push_back({"/dt", "the initial time step must lie between the minimum and the maximum"});
+  }
+  if (!(courant > 0.0)) out.push_back({"/dt", "the Courant number must be positive"});
+  if (!(growth >= 1.0) || !(shrink > 0.0 && shrink <= 1.0))
+    out.push_back({"/dt", "growth must be >= 1 and shrink in (0, 1]"});
+  if (fewIterations < 1 || manyIterations < fewIterations)
+    out.push_back({"/dt", "need 1 <= few iterations <= many iterations"});
+  return out;
 }
 
 double TimeStepControl::next(double speedOverSpacing) const {

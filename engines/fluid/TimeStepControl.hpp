@@ -4,7 +4,9 @@
 // did not converge is retried at half the step, and the CFL number of the fastest phase caps it.
 // Only below the minimum step does the run stop. The controller's state (the current step) goes
 // into checkpoints, so a resumed run takes the steps the uninterrupted one takes.
-#include <string>
+#include <vector>
+
+#include "core/engine/SetupProblem.hpp"
 
 namespace grainbridge::fluid {
 
@@ -20,8 +22,9 @@ struct TimeStepLimits {
   int manyIterations = 35;  // converged in more: shrink by `shrink`
   double growth = 1.05;
   double shrink = 0.9;
-  // Why these limits cannot be used, naming the field; empty when they can.
-  [[nodiscard]] std::string problem() const;
+  // Why these limits cannot be used, each at the pointer of its key in the fluid set-up's JSON
+  // form (dt, dt_min; fluid/FluidSetup.hpp); empty when they can.
+  [[nodiscard]] std::vector<core::engine::SetupProblem> problems() const;
 };
 
 class TimeStepControl {

@@ -1,7 +1,10 @@
 #include "engines/mfm/InitialRegions.hpp"
 
 #include <random>
+#include <string>
 
+#include "core/json/Vec3Json.hpp"
+#include "core/text/NumberText.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 
 namespace grainbridge::mfm {
@@ -80,6 +83,72 @@ void initialise(MultiFluidEngine& engine, const InitialState& init) {
       }
     }
   }
+}
+
+std::vector<core::engine::SetupProblem> InitialState::problems(const core::data::GridGeometry& domain,
+                                                               std::size_t solidsPhases, double packedFraction) const {
+  std::vector<core::engine::SetupProblem> out;
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    const InitialRegion& r = regions[k];
+    const std::string at = "/regions/" + std::to_string(k);
+    if (r.solidsFractions.size() != solidsPhases) {
+      out.push_back({at + "/solids_fractions", "gives " + std::to_string(r.solidsFractions.size()) + " fractions for " +
+                                                   std::to_string(solidsPhases) + " solids phases"});
+    } else {
+      double solids = 0.0;
+      for (const double f : r.solidsFractions) solids += f;
+      if (solids > packedFraction + 1e-12) {
+        out.push_back({at + "/solids_fractions",
+                       "the solids fractions add up to " + core::humanNumber(solids) +
+                           ", above the packed solids fraction eps_s,max = " + core::humanNumber(packedFraction)});
+      }
+    }
+    // Inside the domain along every axis, to round-off: a box past a side would start the run
+    // with fewer grains than the config describes, silently.
+    for (int a = 0; a < 3; ++a) {
+      const double low = domain.origin[a];
+      const double high = low + domain.cells[static_cast<std::size_t>(a)] * domain.spacing[a];
+      const double slack = 1e-9 * (high - low);
+      const std::string along = std::string(" along ") + "xyz"[a] + " is ";
+      const std::string domainText =
+          " m, outside the domain (" + core::humanNumber(low) + " to " + core::humanNumber(high) + " m)";
+      if (r.lo[a] < low - slack) out.push_back({at + "/lo", "lo" + along + core::humanNumber(r.lo[a]) + domainText});
+      if (r.hi[a] > high + slack) out.push_back({at + "/hi", "hi" + along + core::humanNumber(r.hi[a]) + domainText});
+    }
+  }
+  return out;
+}
+
+void to_json(nlohmann::json& j, const InitialRegion& r) {
+  j = {{"lo", core::json::vec3Json(r.lo)},
+       {"hi", core::json::vec3Json(r.hi)},
+       {"solids_fractions", r.solidsFractions},
+       {"gas_velocity", core::json::vec3Json(r.velocities.empty() ? Vec3::Zero() : r.velocities[0])},
+       {"solids_velocity", core::json::vec3Json(r.velocities.size() < 2 ? Vec3::Zero() : r.velocities[1])},
+       {"granular_temperature", r.granularTemperature}};
+}
+
+void from_json(const nlohmann::json& j, InitialRegion& r) {
+  r.lo = core::json::vec3FromJson(j.at("lo"));
+  r.hi = core::json::vec3FromJson(j.at("hi"));
+  r.solidsFractions = j.at("solids_fractions").get<std::vector<double>>();
+  r.granularTemperature = j.at("granular_temperature");
+  r.velocities.assign(1 + r.solidsFractions.size(), core::json::vec3FromJson(j.at("solids_velocity")));
+  r.velocities[0] = core::json::vec3FromJson(j.at("gas_velocity"));
+}
+
+void to_json(nlohmann::json& j, const InitialState& s) {
+  j = {{"regions", s.regions},
+       {"reference_pressure", s.referencePressure},
+       {"perturbation", s.perturbation},
+       {"seed", s.seed}};
+}
+
+void from_json(const nlohmann::json& j, InitialState& s) {
+  s.regions = j.contains("regions") ? j.at("regions").get<std::vector<InitialRegion>>() : std::vector<InitialRegion>{};
+  s.referencePressure = j.at("reference_pressure");
+  s.perturbation = j.at("perturbation");
+  s.seed = j.at("seed").get<std::uint64_t>();
 }
 
 }  // namespace grainbridge::mfm

@@ -6,10 +6,14 @@
 // falling through it). A seeded perturbation of the solids fraction breaks the symmetry of a
 // uniform bed between free-slip walls, which would otherwise stay one-dimensional and slug as a
 // piston.
+#include <cstddef>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "core/Types.hpp"
+#include "core/data/FieldFrame.hpp"
+#include "core/engine/SetupProblem.hpp"
 #include "engines/mfm/MultiFluidEngine.hpp"
 
 namespace grainbridge::mfm {
@@ -26,7 +30,22 @@ struct InitialState {
   double referencePressure = 101325.0;  // at the top of the domain (against gravity) [Pa]
   double perturbation = 0.0;            // relative amplitude, solids fractions only lowered
   std::uint64_t seed = 1;
+
+  // Every reason these regions cannot start `solidsPhases` solids phases in `domain`, each at the
+  // JSON pointer of its key ("/regions/1/hi"): a fraction count other than the phases', solids
+  // above the packed fraction, a box partly outside the domain (a 2D grid's z against its depth).
+  // Empty when the run can start.
+  [[nodiscard]] std::vector<core::engine::SetupProblem> problems(const core::data::GridGeometry& domain,
+                                                                 std::size_t solidsPhases, double packedFraction) const;
 };
+
+// The JSON form uses the `mfm` stage's keys: regions (lo, hi, solids_fractions, gas_velocity,
+// solids_velocity, granular_temperature), reference_pressure, perturbation, seed. A region gives
+// every solids phase one velocity, as the stage does.
+void to_json(nlohmann::json& j, const InitialRegion& r);
+void from_json(const nlohmann::json& j, InitialRegion& r);
+void to_json(nlohmann::json& j, const InitialState& s);
+void from_json(const nlohmann::json& j, InitialState& s);
 
 // Cells no region covers are gas at rest.
 void initialise(MultiFluidEngine& engine, const InitialState& initial);

@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/json/Vec3Json.hpp"
 #include "engines/dem/contact/Conversions.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -11,8 +12,6 @@ namespace grainbridge::workflows::stages {
 using nlohmann::json;
 
 namespace {
-
-Vec3 vec(const json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()); }
 
 // Material of a surface pair from a contact object, for the run's contact law. A restitution,
 // when given, sets the normal damping for this pair's effective mass and contact length
@@ -59,11 +58,11 @@ double effectiveMass(double ma, bool frozenA, double mb, bool frozenB) {
 DemSetup makeDemSetup(const json& p) {
   DemSetup out;
   auto& e = out.engine;
-  e.lo = vec(p.at("box_lo"));
-  e.hi = vec(p.at("box_hi"));
+  e.lo = core::json::vec3FromJson(p.at("box_lo"));
+  e.hi = core::json::vec3FromJson(p.at("box_hi"));
   const std::string periodic = p.at("periodic");
   for (int a = 0; a < 3; ++a) e.periodic[static_cast<std::size_t>(a)] = periodic.find("xyz"[a]) != std::string::npos;
-  e.gravity = vec(p.at("gravity"));
+  e.gravity = core::json::vec3FromJson(p.at("gravity"));
   out.materials.gravity = e.gravity;
   e.backgroundDamping = p.at("background_damping");
   for (const auto& id : p.at("track_ids")) out.trackedIds.push_back(std::llround(id.get<double>()));
@@ -118,12 +117,12 @@ DemSetup makeDemSetup(const json& p) {
       const json& wj = walls[w];
       dem::Wall wall;
       wall.kind = wj.at("kind") == "cylinder" ? dem::Wall::Kind::Cylinder : dem::Wall::Kind::Plane;
-      wall.origin = vec(wj.at("point"));
-      wall.direction = vec(wj.at("direction")).normalized();
+      wall.origin = core::json::vec3FromJson(wj.at("point"));
+      wall.direction = core::json::vec3FromJson(wj.at("direction")).normalized();
       wall.radius = wj.at("radius");
       wall.vibration.amplitude = wj.at("vibration_amplitude");
       wall.vibration.frequency = wj.at("vibration_frequency");
-      wall.vibration.direction = vec(wj.at("vibration_direction")).normalized();
+      wall.vibration.direction = core::json::vec3FromJson(wj.at("vibration_direction")).normalized();
       for (const auto& s : out.species) {
         wall.material.push_back(material(wj, *law, s.mass, 2.0 * s.radius));
         out.timings.push_back(timing(s.name + "-wall " + std::to_string(w), "/walls/" + std::to_string(w), wj, *law,

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -370,11 +371,15 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   }
   if (!d.empty()) return;
   const DemSetup setup = makeDemSetup(p);
-  // The engine's own rules (box, periodic lengths, shear, neighbour grid), written once in
-  // dem::SimulationSetup, at the pointers of the keys the engine setup shares with these params.
+  // The engine's own rules (box, periodic lengths, shear, neighbour grid, a run without
+  // particles), written once in dem::SimulationSetup, at the pointers of the keys the engine setup
+  // shares with these params. A state read from a file is not counted: an upstream stage may
+  // write it after this check.
   double maxDiameter = 0.0;
   for (const auto& s : setup.species) maxDiameter = std::max(maxDiameter, 2.0 * s.radius);
-  for (const auto& problem : setup.engine.problems(maxDiameter)) d.add(ptr + problem.pointer, problem.message);
+  const auto inserted = fromFile ? std::nullopt : std::optional<std::int64_t>(particleCount);
+  for (const auto& problem : setup.engine.problems(maxDiameter, inserted))
+    d.add(ptr + problem.pointer, problem.message);
   // Every pair must rebound (not overdamped) and be resolved in time: dt <= t_c/10.
   const double dt = p.at("dt");
   for (const auto& t : setup.timings) {

@@ -6,9 +6,11 @@
 #include "core/Error.hpp"
 #include "engines/dem/Simulation.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
+#include "tests/support/SetupProblems.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::dem;
+using grainbridge::testing::pointersOf;
 using nlohmann::json;
 
 namespace {
@@ -30,12 +32,6 @@ SimulationSetup twoSpeciesWithWalls() {
   cylinder.vibration = {Vec3(0, 0.6, 0.8), 0.01, 15.0};
   s.walls = {dem::testing::floorWall(dem::testing::table61Wall(), 0.25, 2), cylinder};
   return s;
-}
-
-std::vector<std::string> pointersOf(const std::vector<SetupProblem>& problems) {
-  std::vector<std::string> out;
-  for (const auto& p : problems) out.push_back(p.pointer);
-  return out;
 }
 
 TEST(SimulationSetup, JsonRoundTripIsExact) {
@@ -74,6 +70,13 @@ TEST(SimulationSetup, EachRuleNamesItsKey) {
   EXPECT_EQ(pointersOf(problems), (std::vector<std::string>{"/tangential_model"}));
   EXPECT_NE(problems.at(0).message.find("registered: history, lammps_history"), std::string::npos)
       << problems.at(0).message;
+}
+
+TEST(SimulationSetup, ARunWithoutParticlesIsRefusedAtTheSpeciesWhenTheCountIsKnown) {
+  const SimulationSetup s = twoSpeciesWithWalls();
+  EXPECT_EQ(pointersOf(s.problems(1.0, 0)), (std::vector<std::string>{"/species"}));
+  EXPECT_TRUE(s.problems(1.0, 1).empty());
+  EXPECT_TRUE(s.problems(1.0).empty());  // read from a file: not known before the run
 }
 
 TEST(SimulationSetup, ANeighbourGridTooLargeToAllocateIsRefusedNamingTheBox) {

@@ -8,5 +8,6 @@ grainbridge_add_test(test_mfm
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/GranularEnergyTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/TabulatedClosureRunTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/InitialBedTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/mfm/InitialRegionsTest.cpp
   LIBS engines_mfm
   LABELS "physics;mfm")
