@@ -81,4 +81,13 @@ double solidsVolume(const FlowState& state, std::size_t m) {
   return total * grid.cellVolume();
 }
 
+double mixtureMeanHeight(const std::vector<double>& heights, const std::vector<double>& volumes) {
+  double moment = 0.0, volume = 0.0;
+  for (std::size_t m = 0; m < heights.size() && m < volumes.size(); ++m) {
+    moment += volumes[m] * heights[m];
+    volume += volumes[m];
+  }
+  return volume > 0.0 ? moment / volume : 0.0;
+}
+
 }  // namespace grainbridge::fluid

@@ -28,6 +28,11 @@ struct VerticalAxis {
 // Eq. 5.22 for solids phase m [m]; 0 when the phase holds no solids.
 [[nodiscard]] double meanParticleHeight(const FlowState& state, VerticalAxis vertical, std::size_t m);
 
+// Eq. 5.22 over all solids from each phase's mean height and solids volume (the two above, one
+// entry per phase): sum_m h_m V_m / sum_m V_m, since each h_m is its phase's volume-weighted
+// mean; 0 when the bed holds no solids.
+[[nodiscard]] double mixtureMeanHeight(const std::vector<double>& heights, const std::vector<double>& volumes);
+
 // The volume of solids phase m in the domain [m^3] (per unit depth in 2D: the cell volume uses
 // the z spacing, which a 2D grid sets to its depth).
 [[nodiscard]] double solidsVolume(const FlowState& state, std::size_t m);

@@ -8,10 +8,10 @@
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/io/FieldFrameReader.hpp"
-#include "core/io/XdmfText.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "workflows/report/CsvField.hpp"
+#include "workflows/report/FindingsPage.hpp"
 #include "workflows/report/NumericCsv.hpp"
 #include "workflows/report/Plot.hpp"
 
@@ -440,27 +440,7 @@ void BedCompareStage::run(StageContext& ctx) const {
   addFigure(report::drawFigure(drop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");
   ctx.setFindings(findings);
 
-  std::ostringstream html;
-  const std::string title = core::io::xmlEscape(findings.title);
-  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << title
-       << "</title><style>body{font-family:sans-serif;margin:1.5em;max-width:90em}table{border-collapse:collapse}"
-       << "td,th{border:1px solid #ccc;padding:0.2em 0.5em}img{max-width:100%}</style></head><body>\n<h1>" << title
-       << "</h1>\n<p>" << core::io::xmlEscape(findings.headline) << "</p>\n<table><tr>";
-  for (const auto& c : findings.columns) html << "<th>" << core::io::xmlEscape(c) << "</th>";
-  html << "</tr>\n";
-  for (const auto& row : findings.rows) {
-    html << "<tr>";
-    for (const auto& c : row) html << "<td>" << core::io::xmlEscape(c) << "</td>";
-    html << "</tr>\n";
-  }
-  html << "</table>\n<p>Every number: <a href=\"beds.csv\">beds.csv</a>. PNG copies for slides sit beside each "
-          "SVG.</p>\n";
-  for (const auto& f : findings.figures) {
-    html << "<p><a href=\"" << f.png << "\"><img src=\"" << f.svg << "\" alt=\"" << core::io::xmlEscape(f.caption)
-         << "\"></a><br>" << core::io::xmlEscape(f.caption) << "</p>\n";
-  }
-  html << "</body></html>\n";
-  core::writeFileAtomically(ctx.outputDir() / "bed_compare.html", html.str());
+  report::writeFindingsPage(findings, "beds.csv", ctx.outputDir() / "bed_compare.html");
   ctx.addArtifact("bed_compare.html", "report_html");
   ctx.setSummary(summary);
 }

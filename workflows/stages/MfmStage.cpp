@@ -346,17 +346,15 @@ void MfmStage::run(StageContext& ctx) const {
   if (solids.size() == 1) {
     addAverage(summary, "mean_height", window.at("mean_height_" + solids[0].name));
   } else if (solids.size() > 1) {
-    // Eq. 5.22 over all solids: each sample's phase heights weighted by the phase volumes.
-    const std::size_t samples = window.at("mean_height_" + solids[0].name).size();
-    std::vector<double> mixture(samples, 0.0);
-    for (std::size_t k = 0; k < samples; ++k) {
-      double moment = 0.0, volume = 0.0;
+    // Eq. 5.22 over all solids, sample by sample.
+    std::vector<double> mixture;
+    for (std::size_t k = 0; k < window.at("mean_height_" + solids[0].name).size(); ++k) {
+      std::vector<double> heights, volumes;
       for (const auto& phase : solids) {
-        const double v = window.at("solids_volume_" + phase.name)[k];
-        moment += v * window.at("mean_height_" + phase.name)[k];
-        volume += v;
+        heights.push_back(window.at("mean_height_" + phase.name)[k]);
+        volumes.push_back(window.at("solids_volume_" + phase.name)[k]);
       }
-      mixture[k] = volume > 0.0 ? moment / volume : 0.0;
+      mixture.push_back(fluid::mixtureMeanHeight(heights, volumes));
     }
     addAverage(summary, "mean_height", mixture);
   }

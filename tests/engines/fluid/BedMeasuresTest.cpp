@@ -46,5 +46,23 @@ TEST(BedMeasures, MeanHeightPressureAndVolumeOfAColumn) {
   EXPECT_DOUBLE_EQ(meanParticleHeight(st, down, 1), (0.6 * 0.875 + 0.2 * 0.625) / 0.8);
 }
 
+// A mixture's Eq. 5.22 height is that of all its solids: the same column with its two rows
+// held by two phases gives the one-phase column's height.
+TEST(BedMeasures, MixtureMeanHeightIsEq522OverAllSolids) {
+  const StaggeredGrid grid(column());
+  FlowState st(grid, 3);
+  for (int i = 0; i < 2; ++i) {
+    st.phases[1].fraction(i, 0, 0) = 0.6;  // the lower row: phase 1
+    st.phases[2].fraction(i, 1, 0) = 0.2;  // the upper row: phase 2
+  }
+  const VerticalAxis up = verticalAxis(Vec3(0.0, -9.81, 0.0));
+  const std::vector<double> heights{meanParticleHeight(st, up, 1), meanParticleHeight(st, up, 2)};
+  const std::vector<double> volumes{solidsVolume(st, 1), solidsVolume(st, 2)};
+  EXPECT_DOUBLE_EQ(heights[0], 0.125);
+  EXPECT_DOUBLE_EQ(heights[1], 0.375);
+  EXPECT_DOUBLE_EQ(mixtureMeanHeight(heights, volumes), (0.6 * 0.125 + 0.2 * 0.375) / 0.8);
+  EXPECT_DOUBLE_EQ(mixtureMeanHeight({0.1}, {0.0}), 0.0);  // no solids
+}
+
 }  // namespace
 }  // namespace grainbridge::fluid
