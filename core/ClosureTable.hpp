@@ -40,6 +40,8 @@ class ClosureTable {
   [[nodiscard]] bool twoDimensional() const { return !second_.empty(); }
   [[nodiscard]] const std::vector<double>& solidFractions() const { return solidFraction_; }
   [[nodiscard]] const std::vector<double>& seconds() const { return second_; }
+  // values[iy * solidFractions().size() + ix], as constructed.
+  [[nodiscard]] const std::vector<double>& values() const { return values_; }
 
  private:
   double alongSolidFraction(std::size_t row, double x) const;

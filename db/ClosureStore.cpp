@@ -168,34 +168,8 @@ json ClosureStore::query(const ClosureQuery& q) {
   return out;
 }
 
-core::ClosureTable ClosureStore::loadTable(const std::string& name, const std::string& quantity) {
-  auto st = db_.prepare(
-      "SELECT solid_fractions_json, second_variable, seconds_json, values_json FROM closure_tables "
-      "WHERE name = ?1 AND quantity = ?2 ORDER BY run_id DESC, id DESC LIMIT 1");
-  st.bind(1, name).bind(2, quantity);
-  if (!st.step()) {
-    std::string known;
-    auto all = db_.prepare("SELECT DISTINCT name || '/' || quantity FROM closure_tables ORDER BY 1");
-    while (all.step()) known += (known.empty() ? "" : ", ") + all.columnText(0);
-    throw Error("closure database " + db_.path().string() + ": no closure table \"" + name + "\" of quantity \"" +
-                quantity + "\" (tables: " + (known.empty() ? "none" : known) + ")");
-  }
-  const auto x = json::parse(st.columnText(0)).get<std::vector<double>>();
-  const auto y = json::parse(st.columnText(2)).get<std::vector<double>>();
-  const auto v = json::parse(st.columnText(3)).get<std::vector<double>>();
-  return core::ClosureTable(quantity, x, st.columnText(1), y, v);
-}
-
-std::string ClosureStore::contentHash(const json& record) {
-  const json content = {{"quantity", record.at("quantity")},
-                        {"second_variable", record.at("second_variable")},
-                        {"solid_fractions", record.at("solid_fractions")},
-                        {"seconds", record.at("seconds")},
-                        {"values", record.at("values")}};
-  return core::sha256Hex(content.dump());
-}
-
-json ClosureStore::tableRecord(const std::string& name, const std::string& quantity, const std::string& runKey) {
+core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const std::string& quantity,
+                                                const std::string& runKey) {
   auto st = db_.prepare(
       "SELECT t.solid_fractions_json, t.second_variable, t.seconds_json, t.values_json, t.filters_json, r.key "
       "FROM closure_tables t JOIN runs r ON r.id = t.run_id "
@@ -209,16 +183,12 @@ json ClosureStore::tableRecord(const std::string& name, const std::string& quant
                 quantity + "\"" + (runKey.empty() ? "" : " from run " + runKey.substr(0, 12)) +
                 " (tables: " + (known.empty() ? "none" : known) + ")");
   }
-  json record = {{"name", name},
-                 {"quantity", quantity},
-                 {"solid_fractions", json::parse(st.columnText(0))},
-                 {"second_variable", st.columnText(1)},
-                 {"seconds", json::parse(st.columnText(2))},
-                 {"values", json::parse(st.columnText(3))},
-                 {"filters", json::parse(st.columnText(4))},
-                 {"run_key", st.columnText(5)}};
-  record["sha256"] = contentHash(record);
-  return record;
+  core::ClosureTable table(quantity, json::parse(st.columnText(0)).get<std::vector<double>>(), st.columnText(1),
+                           json::parse(st.columnText(2)).get<std::vector<double>>(),
+                           json::parse(st.columnText(3)).get<std::vector<double>>());
+  std::string sha256 = core::contentSha256(table);
+  return core::LoadedClosureTable{name, st.columnText(5), std::move(sha256),
+                                  json::parse(st.columnText(4)).value("friction", 0.0), std::move(table)};
 }
 
 }  // namespace grainbridge::db

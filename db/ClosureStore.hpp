@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/ClosureTable.hpp"
+#include "core/LoadedClosureTable.hpp"
 
 namespace grainbridge::db {
 
@@ -47,18 +47,13 @@ class ClosureStore {
   // Throws Error naming an unknown column in a range.
   nlohmann::json query(const ClosureQuery& query);
 
-  // The newest table `name` of `quantity` (highest run id). Throws Error listing the tables
-  // there are when none matches.
-  core::ClosureTable loadTable(const std::string& name, const std::string& quantity);
-
-  // Table `name` of `quantity` as a continuum stage receives it: {name, quantity,
-  // second_variable, solid_fractions, seconds, values, filters, run_key, sha256}, the sha256 over
-  // the content alone (quantity, axes, values), which is what enters a consuming stage's key.
-  // From the run of `runKey` when given (a table made upstream in the same workflow), else the
-  // newest. Throws Error like loadTable when there is none.
-  nlohmann::json tableRecord(const std::string& name, const std::string& quantity, const std::string& runKey = "");
-  // The sha256 of a record's content, as tableRecord computes it.
-  static std::string contentHash(const nlohmann::json& record);
+  // Table `name` of `quantity` as a continuum run receives it (core::LoadedClosureTable: the
+  // table, the run that made it, its content sha256, which is what enters a consuming stage's
+  // key, and its friction filter). From the run of `runKey` when given (a table made upstream in
+  // the same workflow), else the newest (highest run id). Throws Error listing the tables there
+  // are when none matches.
+  core::LoadedClosureTable loadTable(const std::string& name, const std::string& quantity,
+                                     const std::string& runKey = "");
 
   // Column names of a table, from the schema itself (so no list here can drift from it).
   std::vector<std::string> columns(const std::string& table);

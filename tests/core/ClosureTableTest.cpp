@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "core/Error.hpp"
+#include "core/LoadedClosureTable.hpp"
 
 using grainbridge::Error;
 using grainbridge::core::ClosureTable;
@@ -108,4 +110,31 @@ TEST(ClosureTable, RefusesMalformedTablesNamingTheProblem) {
               ClosureTable("eta_star", {0.1, 0.2}, "restitution", {0.9, 0.8}, {1, 2, 3, 4});
             }).find("restitution axis must be strictly increasing"),
             std::string::npos);
+}
+
+// A table travels to worker ranks as JSON inside the instance task and comes back whole.
+TEST(LoadedClosureTable, RoundTripsThroughJsonAndRefusesAMalformedRecord) {
+  const grainbridge::core::LoadedClosureTable loaded{
+      "shear", "key1", "", 0.3,
+      grainbridge::core::ClosureTable("p_theta", {0.1, 0.2, 0.3}, "restitution", {0.7, 0.9},
+                                      {1.0, 2.0, 3.0, 1.5, 2.5, 3.5})};
+  const nlohmann::json j = loaded;
+  const auto back = grainbridge::core::loadedClosureTableFromJson(j);
+  EXPECT_EQ(back.name, "shear");
+  EXPECT_EQ(back.runKey, "key1");
+  EXPECT_DOUBLE_EQ(back.friction, 0.3);
+  EXPECT_EQ(back.table.values(), loaded.table.values());
+  EXPECT_EQ(back.table.seconds(), loaded.table.seconds());
+  EXPECT_EQ(grainbridge::core::contentSha256(back.table), grainbridge::core::contentSha256(loaded.table));
+  // Another value, another hash.
+  nlohmann::json changed = j;
+  changed["values"][0] = 1.25;
+  EXPECT_NE(grainbridge::core::contentSha256(grainbridge::core::loadedClosureTableFromJson(changed).table),
+            grainbridge::core::contentSha256(loaded.table));
+  nlohmann::json missing = j;
+  missing.erase("values");
+  EXPECT_THROW((void)grainbridge::core::loadedClosureTableFromJson(missing), grainbridge::Error);
+  nlohmann::json short_ = j;
+  short_["values"] = {1.0};
+  EXPECT_THROW((void)grainbridge::core::loadedClosureTableFromJson(short_), grainbridge::Error);
 }

@@ -135,9 +135,19 @@ TEST(ClosureStore, AClosureTableLoadsIntoCoreClosureTableNewestFirst) {
   });
   ClosureStore store(db);
   const auto loaded = store.loadTable("shear", "p_theta");
-  EXPECT_TRUE(loaded.twoDimensional());
-  EXPECT_EQ(loaded.secondVariable(), "restitution");
-  EXPECT_DOUBLE_EQ(loaded(0.2, 0.8).value, 4.5);  // the newer run's table, halfway between 4 and 5
+  EXPECT_TRUE(loaded.table.twoDimensional());
+  EXPECT_EQ(loaded.table.secondVariable(), "restitution");
+  EXPECT_DOUBLE_EQ(loaded.table(0.2, 0.8).value, 4.5);  // the newer run's table, halfway between 4 and 5
+  EXPECT_EQ(loaded.name, "shear");
+  EXPECT_EQ(loaded.runKey, "k2");
+  EXPECT_EQ(loaded.sha256, core::contentSha256(loaded.table));
+  // A run key selects that run's table (one made upstream in the same workflow), whatever is newer.
+  const auto fromOlder = store.loadTable("shear", "p_theta", "k1");
+  EXPECT_EQ(fromOlder.runKey, "k1");
+  EXPECT_DOUBLE_EQ(fromOlder.table(0.2, 0.8).value, 2.25);
+  // The hash is over the content: the two runs' tables differ, so do their hashes.
+  EXPECT_NE(fromOlder.sha256, loaded.sha256);
+  EXPECT_THAT(errorOf([&] { store.loadTable("shear", "p_theta", "k3"); }), HasSubstr("from run k3"));
   EXPECT_THAT(errorOf([&] { store.loadTable("shear", "eta_theta"); }),
               HasSubstr("no closure table \"shear\" of quantity \"eta_theta\" (tables: shear/p_theta)"));
   json malformed = table;

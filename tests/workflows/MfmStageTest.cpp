@@ -225,7 +225,7 @@ TEST(MfmStage, ReadsClosureTablesMadeUpstreamOrNamedInTheDatabaseAndCountsTheirC
   auto database = grainbridge::db::Database::openReadOnly(work.path() / "results/loop/grainbridge.sqlite");
   grainbridge::db::ClosureStore store(database);
   for (const char* q : {"p_theta", "eta_theta", "j_theta"}) {
-    EXPECT_EQ(summary.at(std::string("table_sha256_") + q), store.tableRecord("t", q).at("sha256")) << q;
+    EXPECT_EQ(summary.at(std::string("table_sha256_") + q), store.loadTable("t", q).sha256) << q;
   }
   const double cells = summary.at("table_coverage_cell_steps"), solids = summary.at("table_coverage_solids");
   EXPECT_GT(summary.at("table_cell_steps").get<double>(), 0.0);

@@ -51,7 +51,7 @@ TEST(TabulateStage, AFullGridLoadsAsATwoDimensionalClosureTable) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
   db::ClosureStore store(database);
-  const auto table = store.loadTable("t", "p_theta");
+  const auto table = store.loadTable("t", "p_theta").table;
   ASSERT_TRUE(table.twoDimensional());
   EXPECT_EQ(table.solidFractions().size(), 2u);
   EXPECT_EQ(table.seconds(), (std::vector<double>{0.8, 0.9}));
@@ -88,5 +88,5 @@ TEST(TabulateStage, PointsOfSeveralFrictionsNeedTheFrictionParameter) {
   r = runGrainbridge(work.path(), "run wf.json -q");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
-  EXPECT_FALSE(db::ClosureStore(database).loadTable("t", "p_theta").twoDimensional());
+  EXPECT_FALSE(db::ClosureStore(database).loadTable("t", "p_theta").table.twoDimensional());
 }

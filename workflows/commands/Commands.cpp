@@ -49,7 +49,7 @@ plan::Plan planOf(const config::WorkflowConfig& cfg, const CommandOptions& opt) 
     if (!fs::exists(path)) return {};
     auto database = db::Database::openReadOnly(path);
     try {
-      return db::ClosureStore(database).tableRecord(name, quantity).at("sha256").get<std::string>();
+      return db::ClosureStore(database).loadTable(name, quantity).sha256;
     } catch (const Error&) {
       return {};
     }

@@ -7,6 +7,7 @@
 #include "core/Error.hpp"
 #include "core/FailPoint.hpp"
 #include "core/Files.hpp"
+#include "core/LoadedClosureTable.hpp"
 #include "core/Log.hpp"
 #include "core/Sha256.hpp"
 #include "core/Version.hpp"
@@ -77,7 +78,9 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
     stages::StageContext ctx(task.workflow, task.stage, task.key, task.params, partialDir, std::move(inputs), comm,
                              core::units::UnitSystem::fromJson(task.units), stop);
     ctx.setDatabasePath(task.database);
-    ctx.setClosureTables(task.closureTables);
+    std::vector<core::LoadedClosureTable> tables;
+    for (const auto& record : task.closureTables) tables.push_back(core::loadedClosureTableFromJson(record));
+    ctx.setClosureTables(std::move(tables));
     type->run(ctx);
     core::failPoint("stage.after_run");
     if (comm.isMpi() && comm.size() > 1) MPI_Barrier(comm.raw());

@@ -29,7 +29,7 @@ struct InstanceTask {
   nlohmann::json units;
   std::string instanceDir;  // relative to the results root
   std::vector<int> group;   // world ranks running it together (MPI executor)
-  // The closure tables the stage reads, as db::ClosureStore::tableRecord gives them (rank 0
+  // The closure tables the stage reads, as db::ClosureStore::loadTable gives them, in JSON (rank 0
   // loads them: workers never open the database).
   nlohmann::json closureTables = nlohmann::json::array();
 

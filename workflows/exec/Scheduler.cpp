@@ -60,7 +60,7 @@ RunSummary runWorkflow(const config::WorkflowConfig& config, const plan::Plan& p
       t.upstream.push_back({up.stage, up.type->name(), up.key, dirs[u]});
     }
     for (const auto& table : inst.tables) {
-      t.closureTables.push_back(db::ClosureStore(database).tableRecord(table.name, table.quantity, table.runKey));
+      t.closureTables.push_back(db::ClosureStore(database).loadTable(table.name, table.quantity, table.runKey));
     }
     return t;
   };

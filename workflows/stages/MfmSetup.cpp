@@ -32,7 +32,7 @@ std::string tableQuantity(const std::string& q) {
   return q == "pressure" ? "p_theta" : q == "shear_viscosity" ? "eta_theta" : "j_theta";
 }
 
-MfmSetup makeMfmSetup(const json& p, const json* closureTables) {
+MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>* closureTables) {
   MfmSetup s;
   auto problem = [&s](std::string where, std::string what) {
     s.problems.emplace_back(std::move(where), std::move(what));
@@ -89,17 +89,11 @@ MfmSetup makeMfmSetup(const json& p, const json* closureTables) {
       const auto policy = closures::outOfRangePolicyFromString(p.value("out_of_range", "error"));
       const auto fallback = closures::kineticModelFromString(kineticModel);
       std::optional<closures::TabulatedClosure> pressure, viscosity, dissipation;
-      for (const auto& record : *closureTables) {
-        const core::ClosureTable table(record.at("quantity").get<std::string>(),
-                                       record.at("solid_fractions").get<std::vector<double>>(),
-                                       record.at("second_variable").get<std::string>(),
-                                       record.at("seconds").get<std::vector<double>>(),
-                                       record.at("values").get<std::vector<double>>());
-        const double friction = record.at("filters").value("friction", 0.0);
-        if (model.rotation && friction > 0.0) {
-          problem("/rotation_model", "closure table \"" + record.at("name").get<std::string>() + "\" (" +
-                                         table.quantity() + ") was made from grains with friction " +
-                                         core::humanNumber(friction) +
+      for (const auto& loaded : *closureTables) {
+        const core::ClosureTable& table = loaded.table;
+        if (model.rotation && loaded.friction > 0.0) {
+          problem("/rotation_model", "closure table \"" + loaded.name + "\" (" + table.quantity() +
+                                         ") was made from grains with friction " + core::humanNumber(loaded.friction) +
                                          ": the rotation model would count their friction a second time");
         }
         closures::TabulatedClosure closure(table, policy, fallback);

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/LoadedClosureTable.hpp"
 #include "engines/mfm/InitialRegions.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 
@@ -31,7 +32,8 @@ struct MfmSetup {
 // Assumes individually valid parameters (the schema's checks passed). `closureTables` are the
 // tables a `table` closure reads (StageContext::closureTables); without them (a config check)
 // the closure is the kinetic theory and only the parameters are checked.
-MfmSetup makeMfmSetup(const nlohmann::json& params, const nlohmann::json* closureTables = nullptr);
+MfmSetup makeMfmSetup(const nlohmann::json& params,
+                      const std::vector<core::LoadedClosureTable>* closureTables = nullptr);
 
 // The quantity of the table each of table_quantities' names takes: p_theta, eta_theta, j_theta.
 [[nodiscard]] std::string tableQuantity(const std::string& closureQuantity);

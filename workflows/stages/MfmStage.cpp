@@ -380,9 +380,7 @@ void MfmStage::run(StageContext& ctx) const {
         stats.tableCellSteps > 0 ? static_cast<double>(stats.coveredCellSteps) / stats.tableCellSteps : 0.0;
     summary["table_coverage_solids"] =
         stats.tableSolidsSteps > 0.0 ? stats.coveredSolidsSteps / stats.tableSolidsSteps : 0.0;
-    for (const auto& record : ctx.closureTables()) {
-      summary["table_sha256_" + record.at("quantity").get<std::string>()] = record.at("sha256");
-    }
+    for (const auto& loaded : ctx.closureTables()) summary["table_sha256_" + loaded.quantity()] = loaded.sha256;
   }
   // The relative change of the solids inventory over the run, per phase and of all solids.
   double totalNow = 0.0, totalInitial = 0.0;

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/LoadedClosureTable.hpp"
 #include "core/parallel/Communicator.hpp"
 #include "core/units/UnitSystem.hpp"
 #include "workflows/contract/UpstreamInstance.hpp"
@@ -71,10 +72,10 @@ class StageContext {
   // Deterministic results worth showing in status and reports (no timings, no hosts).
   void setSummary(nlohmann::json summary) { summary_ = std::move(summary); }
 
-  // The closure tables the stage declared (StageType::closureTables), loaded by the executor:
-  // db::ClosureStore::tableRecord objects.
-  void setClosureTables(nlohmann::json tables) { closureTables_ = std::move(tables); }
-  [[nodiscard]] const nlohmann::json& closureTables() const { return closureTables_; }
+  // The closure tables the stage declared (StageType::closureTables), loaded by the executor
+  // through db::ClosureStore::loadTable, once per run.
+  void setClosureTables(std::vector<core::LoadedClosureTable> tables) { closureTables_ = std::move(tables); }
+  [[nodiscard]] const std::vector<core::LoadedClosureTable>& closureTables() const { return closureTables_; }
   // The workflow database's path, for a report to name (a stage never opens it).
   void setDatabasePath(std::string path) { databasePath_ = std::move(path); }
   [[nodiscard]] const std::string& databasePath() const { return databasePath_; }
@@ -106,7 +107,7 @@ class StageContext {
   nlohmann::json records_ = nlohmann::json::object();
   report::Findings findings_;
   std::string databasePath_;
-  nlohmann::json closureTables_ = nlohmann::json::array();
+  std::vector<core::LoadedClosureTable> closureTables_;
 };
 
 }  // namespace grainbridge::workflows::stages

@@ -1,0 +1,33 @@
+#pragma once
+// A closure table as a continuum run receives it from the workflow database: the table itself
+// plus where it came from (its name, the run that made it, the sha256 of its content, which is
+// what enters a consuming instance's key) and the filter it was made under. db::ClosureStore
+// loads it; it travels to worker ranks as JSON inside the instance task, and is converted back
+// once per run, so the engine never rebuilds a table from loose fields.
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+
+#include "core/ClosureTable.hpp"
+
+namespace grainbridge::core {
+
+struct LoadedClosureTable {
+  std::string name;    // the tables' name (tabulate's `table`)
+  std::string runKey;  // the run that made it
+  std::string sha256;  // over the content alone (contentSha256)
+  // The grains' friction the DEM runs behind the table had (tabulate's filter); 0 for frictionless.
+  double friction = 0.0;
+  ClosureTable table;
+
+  [[nodiscard]] const std::string& quantity() const { return table.quantity(); }
+};
+
+// The sha256 of a table's content (quantity, axes, values): equal tables hash equal whatever
+// their name or run.
+[[nodiscard]] std::string contentSha256(const ClosureTable& table);
+
+void to_json(nlohmann::json& j, const LoadedClosureTable& t);
+// Throws grainbridge::Error naming what is missing or wrong (ClosureTable's own checks).
+[[nodiscard]] LoadedClosureTable loadedClosureTableFromJson(const nlohmann::json& j);
+
+}  // namespace grainbridge::core
