@@ -22,7 +22,9 @@ std::string_view toString(KineticModelName model) {
   // The models own their names; this only picks the model.
   switch (model) {
     case KineticModelName::Lun1984:
-      return Lun1984::name();
+      return Lun1984{}.name();
+    case KineticModelName::Lun1984Mfix:
+      return Lun1984{Lun1984ViscosityForm::Mfix}.name();
     case KineticModelName::SyamlalAlgebraicPrinted:
       return syamlal(SyamlalViscosityForm::Printed).name();
     case KineticModelName::SyamlalAlgebraicMfix:
@@ -49,6 +51,8 @@ KineticTransport evaluate(KineticModelName model, const KineticState& state) {
   switch (model) {
     case KineticModelName::Lun1984:
       return Lun1984{}.evaluate(state);
+    case KineticModelName::Lun1984Mfix:
+      return Lun1984{Lun1984ViscosityForm::Mfix}.evaluate(state);
     case KineticModelName::SyamlalAlgebraicPrinted:
       return syamlal(SyamlalViscosityForm::Printed).evaluate(state);
     case KineticModelName::SyamlalAlgebraicMfix:

@@ -12,6 +12,7 @@ namespace grainbridge::closures {
 
 enum class KineticModelName {
   Lun1984,                  // "lun1984": Lun et al. 1984 + Ma-Ahmadi (Lun1984.hpp), the default
+  Lun1984Mfix,              // "lun1984_mfix": the same with MFIX's shear viscosity factor 1.2
   SyamlalAlgebraicPrinted,  // "syamlal_algebraic": Eqs. 3.21-3.25 as printed (SyamlalAlgebraic.hpp)
   SyamlalAlgebraicMfix,     // "syamlal_algebraic_mfix": Eq. 3.25 with MFIX's (3e + 1)/2
 };
@@ -20,10 +21,11 @@ enum class KineticModelName {
 inline constexpr KineticModelName kDefaultKineticModel = KineticModelName::Lun1984;
 
 // Every model, in enum order, for tests and listings that must cover all of them.
-inline constexpr std::array<KineticModelName, 3> kAllKineticModels = {
-    KineticModelName::Lun1984, KineticModelName::SyamlalAlgebraicPrinted, KineticModelName::SyamlalAlgebraicMfix};
+inline constexpr std::array<KineticModelName, 4> kAllKineticModels = {
+    KineticModelName::Lun1984, KineticModelName::Lun1984Mfix, KineticModelName::SyamlalAlgebraicPrinted,
+    KineticModelName::SyamlalAlgebraicMfix};
 
-// The config name: "lun1984", "syamlal_algebraic" or "syamlal_algebraic_mfix".
+// The config name: "lun1984", "lun1984_mfix", "syamlal_algebraic" or "syamlal_algebraic_mfix".
 [[nodiscard]] std::string_view toString(KineticModelName model);
 
 // Exact, case-sensitive match of toString(); anything else throws grainbridge::Error naming the

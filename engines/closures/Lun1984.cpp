@@ -49,8 +49,9 @@ KineticTransport Lun1984::evaluate(const KineticState& s) const {
   const double mu0 = 5.0 * sqrtPi / 96.0 * rhoDSqrtTheta;
   const double muStar = gasModified(mu0, 2.0, beta, rho, eps, g0, theta);
   out.shearViscosity =
-      muStar / (eta * (2.0 - eta) * g0) * (1.0 + 1.6 * eta * epsG0) * (1.0 + 1.6 * eta * (3.0 * eta - 2.0) * epsG0) +
-      0.6 * out.bulkViscosity;
+      viscosityFactor() *
+      (muStar / (eta * (2.0 - eta) * g0) * (1.0 + 1.6 * eta * epsG0) * (1.0 + 1.6 * eta * (3.0 * eta - 2.0) * epsG0) +
+       0.6 * out.bulkViscosity);
 
   const double kappa0 = 25.0 * sqrtPi / (16.0 * eta * (41.0 - 33.0 * eta)) * rhoDSqrtTheta;
   const double kappaStar = gasModified(kappa0, 1.2, beta, rho, eps, g0, theta);

@@ -8,9 +8,10 @@
 //
 // Source of the formulas as written here: MFIX's LUN_1984 option, subroutine gt_pde_lun in
 // model/calc_mu_s.f (read in MFIX 21.3 and a 2005 version), for one solids phase (MFIX's
-// SUM_EpsGo = eps g0). One deliberate difference: MFIX multiplies the shear viscosity by
-// (2 + alpha)/3 with alpha = 1.6 (its own comment says Lun's theory has alpha = 1); this is the
-// published alpha = 1 form (VALIDATION.md), so MFIX's viscosity is 1.2 times this one.
+// SUM_EpsGo = eps g0). MFIX multiplies the whole shear viscosity (with its 3/5 xi) by
+// (2 + alpha)/3 with alpha = 1.6 (its own comment says Lun's theory has alpha = 1): the form
+// "lun1984" is the published alpha = 1 one (VALIDATION.md), "lun1984_mfix" is MFIX's, whose
+// viscosity is 1.2 times it (and whose second viscosity lambda = xi - 2/3 mu follows).
 //
 // With eta = (1 + e)/2, g0 = carnahanStarlingG0(eps), mu0 = 5 sqrt(pi)/96 rho d sqrt(theta)
 // (Chapman-Enskog viscosity of elastic hard spheres) and
@@ -35,8 +36,21 @@
 
 namespace grainbridge::closures {
 
+enum class Lun1984ViscosityForm {
+  Published,  // "lun1984": alpha = 1
+  Mfix,       // "lun1984_mfix": mu times (2 + alpha)/3 = 1.2, alpha = 1.6, as MFIX calc_mu_s.f
+};
+
 struct Lun1984 {
-  [[nodiscard]] static constexpr std::string_view name() { return "lun1984"; }
+  Lun1984ViscosityForm viscosityForm = Lun1984ViscosityForm::Published;
+
+  [[nodiscard]] constexpr std::string_view name() const {
+    return viscosityForm == Lun1984ViscosityForm::Published ? "lun1984" : "lun1984_mfix";
+  }
+  // MFIX's (2 + alpha)/3 with its alpha = 1.6, or 1.
+  [[nodiscard]] constexpr double viscosityFactor() const {
+    return viscosityForm == Lun1984ViscosityForm::Published ? 1.0 : (2.0 + 1.6) / 3.0;
+  }
   // Validates the state (validate(KineticState)) and returns all five coefficients.
   [[nodiscard]] KineticTransport evaluate(const KineticState& state) const;
 };

@@ -52,6 +52,11 @@ fluid::StencilSystem assembleGranularEnergy(const GranularEnergyInputs& in, std:
           system.ap(c) = count > 0.0 ? count : 1.0;
           continue;
         }
+        if (terms.pinned[c] != 0) {
+          system.ap(c) = 1.0;
+          system.b(c) = terms.pinnedTheta;
+          continue;
+        }
         double sumNb = 0.0, b = terms.source[c] * V, diagonal = terms.sink[c] * V, correction = 0.0;
         for (int axis = 0; axis < grid.dimensions(); ++axis) {
           const double area = grid.faceArea(axis), h = grid.spacing(axis);

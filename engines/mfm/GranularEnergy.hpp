@@ -23,9 +23,11 @@
 // outlets: the ghost repeats the interior (Boundaries::apply), so only convection crosses them.
 // A cell below the dilute fraction has no meaningful balance (every term vanishes with eps_s):
 // there theta is the mean of its neighbours that hold solids, which carries the bed's values one
-// cell into the freeboard, and zero beyond.
+// cell into the freeboard, and zero beyond. A pinned cell (MFIX's plastic cells) has the row
+// theta = pinnedTheta; its neighbours see it as a known value.
 #include <array>
 #include <cstddef>
+#include <vector>
 
 #include "engines/fluid/Boundaries.hpp"
 #include "engines/fluid/FlowState.hpp"
@@ -41,7 +43,8 @@ struct GranularEnergyTerms {
         source(grid),
         sink(grid),
         wallProduction{fluid::CellField(grid), fluid::CellField(grid), fluid::CellField(grid)},
-        wallSink{fluid::CellField(grid), fluid::CellField(grid), fluid::CellField(grid)} {}
+        wallSink{fluid::CellField(grid), fluid::CellField(grid), fluid::CellField(grid)},
+        pinned(grid.paddedCount(), 0) {}
   fluid::CellField conductivity;  // kappa_s [kg/(m s)]
   fluid::CellField source;        // energy produced [W/m^3], >= 0
   fluid::CellField sink;          // energy removed per unit theta [kg/(m^3 s)], >= 0
@@ -49,6 +52,9 @@ struct GranularEnergyTerms {
   // [W/m^2] and dissipation per unit theta [kg/(m^2 s)]; zero: adiabatic.
   std::array<fluid::CellField, 3> wallProduction;
   std::array<fluid::CellField, 3> wallSink;
+  // Cells whose theta is held at pinnedTheta instead of solved for (MultiFluidParams::plasticTheta).
+  std::vector<unsigned char> pinned;
+  double pinnedTheta = 0.0;
 };
 
 struct GranularEnergyInputs {

@@ -207,11 +207,17 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
     fluid::PhaseFields& phase = state.phases[m];
     const SolidsPhase& solids = params_.solids[m - 1];
     GranularEnergyTerms terms(grid);
+    terms.pinnedTheta = params_.pinnedTheta;
     double scale = 1e-6;  // the residual's theta scale: the phase's largest, or this floor [m^2/s^2]
     for (int k = 0; k < grid.cells(2); ++k) {
       for (int j = 0; j < grid.cells(1); ++j) {
         for (int i = 0; i < grid.cells(0); ++i) {
           const std::size_t c = grid.index(i, j, k);
+          if (params_.plasticTheta == PlasticTheta::Pinned &&
+              closureVoidFraction(state, c) < params_.plastic.params.criticalVoidFraction) {
+            terms.pinned[c] = 1;
+            continue;
+          }
           const KineticCell kin = kineticCell(state, props, m, c);
           const closures::KineticTransport& t = kin.transport;
           const double theta = kin.state.granularTemperature;

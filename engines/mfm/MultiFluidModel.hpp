@@ -35,6 +35,7 @@
 #include "engines/closures/GasSolidsDrag.hpp"
 #include "engines/closures/JohnsonJackson.hpp"
 #include "engines/closures/PlasticRegime.hpp"
+#include "engines/closures/SolidsSolidsDrag.hpp"
 #include "engines/closures/SyamlalAlgebraic.hpp"
 #include "engines/fluid/SimpleStep.hpp"
 #include "engines/fluid/StrainRate.hpp"
@@ -73,9 +74,25 @@ struct SolidsPhase {
 
 enum class GranularEnergyForm { Pde, Algebraic };
 
+// Two solids phases l < m (1-based, as in FlowState) and the parameters of their drag, Eq. 3.18.
+struct SolidsPair {
+  std::size_t l = 1, m = 2;
+  closures::SolidsSolidsDrag::Params drag;
+};
+
+// Theta where the solids are packed beyond the plastic regime's onset (eps_g < eps_g*):
+// Solved, the granular-energy equation there as everywhere, so the kinetic stress adds to the
+// plastic one; Pinned, theta held at pinnedTheta in those cells, so they carry the plastic stress
+// alone, as MFIX does (solve_granular_energy.f with SCHAEFFER, 2005 and 21.3: "Adjusting the
+// values of theta_m to zero when Ep_g < EP_star (Schaeffer, 1987)").
+enum class PlasticTheta { Solved, Pinned };
+
 struct MultiFluidParams {
   GasPhase gas;
   std::vector<SolidsPhase> solids;
+  // The solids pairs that exchange momentum by Eq. 3.18; with several solids phases, every pair
+  // (the set-up fills an unlisted one with C_f 0 and the mean of the two restitutions).
+  std::vector<SolidsPair> solidsPairs;
   closures::GasSolidsDrag drag = closures::GasSolidsDrag::byName("syamlal_obrien");
   GranularEnergyForm granularEnergy = GranularEnergyForm::Pde;
   closures::ClosureModel closure = closures::ClosureModel::kineticTheory();  // the pde form's
@@ -84,6 +101,9 @@ struct MultiFluidParams {
   // Johnson-Jackson walls for the solids (pde form): phi' and eps_s,max; e_w is per phase.
   std::optional<closures::JohnsonJackson::Params> wall;
   bool rotation = false;  // the particle-rotation model (pde form)
+  PlasticTheta plasticTheta = PlasticTheta::Solved;  // (pde form)
+  // The theta of a pinned cell: MFIX's smallTheta, ZERO_EP_S = 1e-8 in cm^2/s^2 [m^2/s^2].
+  double pinnedTheta = 1e-12;
   // The gas's terms in the granular energy (gamma_slip, J_vis) and in the transport coefficients
   // (Ma-Ahmadi); off only to compare with a granular flow without gas (DEM closures, Haff's law).
   bool granularGasCoupling = true;

@@ -75,7 +75,7 @@ std::shared_ptr<ParamSchema> kineticInputs(bool withGasDrag) {
 }
 
 ClosureEntry kinetic(gc::KineticModelName model, std::string summary, std::string equations, std::string source) {
-  const bool lun = model == gc::KineticModelName::Lun1984;
+  const bool lun = model == gc::KineticModelName::Lun1984 || model == gc::KineticModelName::Lun1984Mfix;
   return {std::string(gc::toString(model)),
           std::move(summary),
           std::move(equations),
@@ -208,6 +208,9 @@ std::vector<ClosureEntry> makeCatalog() {
   out.push_back(kinetic(gc::KineticModelName::Lun1984,
                         "kinetic theory of Lun et al. with the Ma-Ahmadi gas modification (the default)",
                         "Eqs. 3.34, 5.5-5.7", "Lun et al. 1984, Ma and Ahmadi 1988; MFIX calc_mu_s.f LUN_1984"));
+  out.push_back(kinetic(gc::KineticModelName::Lun1984Mfix,
+                        "lun1984 with MFIX's shear viscosity, (2 + alpha)/3 = 1.2 times Lun's (alpha 1.6)",
+                        "Eqs. 3.34, 5.5-5.7", "MFIX calc_mu_s.f (2005, 21.3): Mu_s = ((2d0+ALPHA)/3d0)*(...)"));
   out.push_back(kinetic(gc::KineticModelName::SyamlalAlgebraicPrinted,
                         "Syamlal's algebraic closure as printed (leading term 1 in K3)", "Eqs. 3.21-3.25, 5.7",
                         "Syamlal 1987; MFIX theory guide (conductivity)"));

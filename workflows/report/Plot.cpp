@@ -102,6 +102,7 @@ std::string seriesColour(std::string_view model) {
   // Okabe–Ito: distinguishable with the common colour-vision deficiencies, and in grey print.
   if (model == "DEM") return "#000000";
   if (model == "lun1984") return "#0072B2";
+  if (model == "lun1984_mfix") return "#56B4E9";  // sky blue beside lun1984's blue
   if (model == "syamlal_algebraic") return "#D55E00";
   if (model == "syamlal_algebraic_mfix") return "#009E73";
   if (model == "table") return "#E69F00";

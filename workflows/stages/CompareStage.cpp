@@ -26,7 +26,7 @@ CompareStage::CompareStage() {
   schema_
       .add(ParamSpec::string("model")
                .defaultValue("lun1984")
-               .options({"lun1984", "syamlal_algebraic", "syamlal_algebraic_mfix"})
+               .options({"lun1984", "lun1984_mfix", "syamlal_algebraic", "syamlal_algebraic_mfix"})
                .doc("the model the summary's deviations refer to (every model is in the CSV and plots)"))
       .add(ParamSpec::number("summary_max_solid_fraction")
                .defaultValue(0.2)

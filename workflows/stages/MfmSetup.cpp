@@ -104,10 +104,15 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
       model.closure = closures::ClosureModel::tabulated(fallback, pressure, viscosity, dissipation);
     }
   }
+  model.plasticTheta =
+      p.at("plastic_theta").get<std::string>() == "pinned" ? mfm::PlasticTheta::Pinned : mfm::PlasticTheta::Solved;
   if (model.granularEnergy == mfm::GranularEnergyForm::Algebraic) {
-    if (kineticModel == "lun1984")
-      problem("/granular_energy", "the algebraic balance is written for the syamlal kinetic models; lun1984 needs pde");
+    if (kineticModel.starts_with("lun1984"))
+      problem("/granular_energy",
+              "the algebraic balance is written for the syamlal kinetic models; " + kineticModel + " needs pde");
     if (model.rotation) problem("/rotation_model", "the rotation model needs granular_energy pde");
+    if (model.plasticTheta == mfm::PlasticTheta::Pinned)
+      problem("/plastic_theta", "pins the granular-energy equation's theta: needs granular_energy pde");
     if (johnsonJackson) problem("/solids_walls", "Johnson-Jackson walls need granular_energy pde");
   }
   model.plastic.params.criticalVoidFraction = p.at("critical_void_fraction").get<double>();

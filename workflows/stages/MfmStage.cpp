@@ -158,7 +158,7 @@ MfmStage::MfmStage() {
       .add(catalog::closureParameter("syamlal_obrien", "d").renamed("drag_d"))
       .add(ParamSpec::string("kinetic_model")
                .defaultValue("lun1984")
-               .options({"lun1984", "syamlal_algebraic", "syamlal_algebraic_mfix"})
+               .options({"lun1984", "lun1984_mfix", "syamlal_algebraic", "syamlal_algebraic_mfix"})
                .doc("kinetic theory of the viscous regime: Lun et al. 1984 with Ma-Ahmadi (Chapter 5), or "
                     "Eqs. 3.21-3.25 as printed or with MFiX's (3e+1)/2"))
       .add(ParamSpec::string("closure")
@@ -183,6 +183,11 @@ MfmStage::MfmStage() {
                .options({"pde", "algebraic"})
                .doc("theta from the granular-energy equation (Eq. 3.34), or MFiX's algebraic balance "
                     "(syamlal kinetic models only)"))
+      .add(ParamSpec::string("plastic_theta")
+               .defaultValue("solved")
+               .options({"solved", "pinned"})
+               .doc("theta where eps_g < critical_void_fraction: solved there too (kinetic stress adds to the "
+                    "plastic one), or pinned near zero as MFiX does (the plastic stress alone)"))
       .add(ParamSpec::string("solids_walls")
                .defaultValue("no_slip")
                .options({"no_slip", "johnson_jackson"})

@@ -14,6 +14,7 @@ using grainbridge::closures::carnahanStarlingG0;
 using grainbridge::closures::KineticState;
 using grainbridge::closures::KineticTransport;
 using grainbridge::closures::Lun1984;
+using grainbridge::closures::Lun1984ViscosityForm;
 
 namespace {
 
@@ -145,6 +146,23 @@ TEST(Lun1984, DissipationIsEquation57) {
   expectRel(Lun1984{}.evaluate(state(eps, theta, d, rho, e)).dissipationRate, expected, 1e-13, "J");
 }
 
-TEST(Lun1984, Name) { EXPECT_EQ(Lun1984::name(), "lun1984"); }
+TEST(Lun1984, Name) { EXPECT_EQ(Lun1984{}.name(), "lun1984"); }
 
 }  // namespace
+
+// MFIX's form (calc_mu_s.f: Mu_s = ((2 + ALPHA)/3) (... + 0.6 Mu_b Eta), ALPHA = 1.6): the whole
+// shear viscosity, its 3/5 xi included and after the Ma-Ahmadi reduction, 1.2 times the
+// published one; nothing else changes, so MFIX's lambda = eta Mu_b - 2/3 mu follows.
+TEST(Lun1984, MfixFormMultipliesTheShearViscosityAloneBy1Point2) {
+  const Lun1984 mfix{Lun1984ViscosityForm::Mfix};
+  EXPECT_EQ(mfix.name(), "lun1984_mfix");
+  const KineticTransport dense = mfix.evaluate(state(0.45, 0.05, 2.49e-3, 2526.0, 0.97));
+  expectRel(dense.shearViscosity, 1.2 * 1.6781066452064621, 1e-12, "dense shear viscosity");
+  expectRel(dense.pressure, 526.2297565740045, 1e-12, "pressure");
+  expectRel(dense.bulkViscosity, 1.9660129921228275, 1e-12, "bulk viscosity");
+  expectRel(dense.conductivity, 6.274651869675434, 1e-12, "conductivity");
+  expectRel(dense.dissipationRate, 4280.765696304607, 1e-12, "dissipation");
+  expectRel(dense.secondViscosity(), 1.9660129921228275 - 2.0 / 3.0 * 1.2 * 1.6781066452064621, 1e-12, "lambda");
+  const KineticTransport gas = mfix.evaluate(state(0.2, 0.02, 2.49e-3, 2526.0, 0.9, 2.0e4));
+  expectRel(gas.shearViscosity, 1.2 * 0.13012908854226649, 1e-12, "gas shear viscosity");
+}

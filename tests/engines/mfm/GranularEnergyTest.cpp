@@ -132,6 +132,51 @@ TEST(GranularEnergy, TemperatureStaysNonNegativeInABedThatCollapses) {
   EXPECT_GE(packed, 4 * 4) << "the bed should have packed";
 }
 
+// plastic_theta pinned (MFIX's Schaeffer branch of solve_granular_energy.f): in every cell packed
+// beyond the plastic onset, eps_g < eps_g*, theta is pinnedTheta after each step, while the cells
+// above the packing keep a solved theta; solved, the same bed keeps fluctuations in its packed cells.
+TEST(GranularEnergy, PinnedPlasticThetaHoldsThePackedCellsAtTheSmallTheta) {
+  GrainBedSpec spec;
+  spec.nx = 4;
+  spec.ny = 12;
+  spec.bedCells = 8;
+  spec.voidFraction = 0.55;
+  spec.inflow = 0.25;
+  spec.perturbation = 0.05;
+  auto run = [&](mfm::PlasticTheta mode) {
+    GrainBed bed = kineticTheoryBed(spec, 0.05);
+    bed.setup.model.plasticTheta = mode;
+    auto engine = std::make_unique<mfm::MultiFluidEngine>(bed.setup.geometry, bed.setup.patches, bed.setup.model,
+                                                          bed.setup.settings, bed.setup.limits);
+    mfm::initialise(*engine, bed.initial);
+    engine->advanceTo(0.3);
+    return engine;
+  };
+  const auto pinned = run(mfm::PlasticTheta::Pinned);
+  const auto solved = run(mfm::PlasticTheta::Solved);
+  const double small = mfm::MultiFluidParams{}.pinnedTheta;
+  int plasticCells = 0, solvedAbove = 0, solvedWarmer = 0;
+  const auto& grid = pinned->grid();
+  for (int j = 0; j < grid.cells(1); ++j) {
+    for (int i = 0; i < grid.cells(0); ++i) {
+      const std::size_t c = grid.index(i, j, 0);
+      const auto& phase = pinned->state().phases[1];
+      if (1.0 - phase.fraction[c] < spec.criticalVoidFraction) {
+        ++plasticCells;
+        EXPECT_EQ(phase.granularTemperature[c], small) << "cell " << i << ", " << j;
+      } else if (phase.fraction[c] > 1e-3 && phase.granularTemperature[c] > 10.0 * small) {
+        ++solvedAbove;
+      }
+      const auto& other = solved->state().phases[1];
+      if (1.0 - other.fraction[c] < spec.criticalVoidFraction && other.granularTemperature[c] > 10.0 * small)
+        ++solvedWarmer;
+    }
+  }
+  EXPECT_GE(plasticCells, 4) << "the bed should have packed beyond eps_g*";
+  EXPECT_GE(solvedAbove, 1) << "the cells above the packing still solve for theta";
+  EXPECT_GE(solvedWarmer, 1) << "solved, some packed cell keeps a theta above the pinned one";
+}
+
 TEST(GranularEnergy, TheRotationModelChangesTheDissipationAndNothingElse) {
   GrainBedSpec spec;
   spec.nx = 4;
