@@ -29,6 +29,12 @@ void validate(const KineticState& s) {
   if (!(finite(s.gasDragCoefficient) && s.gasDragCoefficient >= 0.0)) {
     refuse("gas drag coefficient [kg/(m^3 s)]", "finite and >= 0", s.gasDragCoefficient);
   }
+  if (s.g0 != 0.0) {
+    if (!(finite(s.g0) && s.g0 > 0.0)) refuse("g0", "finite and > 0", s.g0);
+    if (!(finite(s.contactSum) && s.contactSum >= 0.0)) refuse("sum eps_l g0_ml", "finite and >= 0", s.contactSum);
+    if (!(finite(s.dissipationSum) && s.dissipationSum >= 0.0))
+      refuse("sum eps_l g0_ll", "finite and >= 0", s.dissipationSum);
+  }
 }
 
 }  // namespace grainbridge::closures

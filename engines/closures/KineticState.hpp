@@ -1,6 +1,6 @@
 #pragma once
-// Input and output of a kinetic-theory (KTGF) closure for one monodisperse solids phase, in SI
-// units. Every model (Lun1984, SyamlalAlgebraic) maps a KineticState to a KineticTransport, so
+// Input and output of a kinetic-theory (KTGF) closure for one solids phase, in SI units; a phase
+// of a mixture carries the mixture's contact sums (below). Every model (Lun1984, SyamlalAlgebraic) maps a KineticState to a KineticTransport, so
 // the compare stage can put DEM-extracted values and each model's prediction side by side.
 namespace grainbridge::closures {
 
@@ -14,6 +14,16 @@ struct KineticState {
   // [kg/(m^3 s)] (MFIX F_gs). Only Lun1984 reads it (Ma-Ahmadi modification); 0 for a granular
   // flow without interstitial gas, such as the DEM shear cells the compare stage checks.
   double gasDragCoefficient = 0.0;
+  // A phase of a mixture, or one phase with another radial distribution than Carnahan-Starling:
+  // g0_mm at contact with its own kind, and over every solids phase l the sums MFIX writes
+  // SUM_EpsGo (calc_mu_s.f and source_granular_energy.f, 2005): sum_l eps_l g0_ml, which replaces
+  // eps_s g0 in the pressure, viscosities and conductivity, and sum_l eps_l g0_ll, which replaces
+  // it in the collisional dissipation. Then two identical phases add up to the one phase (their
+  // stresses and dissipation are additive). g0 = 0: one phase, Carnahan-Starling g0 of
+  // solidFraction, both sums eps_s g0. Only Lun1984 reads the sums; SyamlalAlgebraic reads g0.
+  double g0 = 0.0;
+  double contactSum = 0.0;
+  double dissipationSum = 0.0;
 };
 
 struct KineticTransport {
@@ -31,7 +41,8 @@ struct KineticTransport {
 
 // Throws grainbridge::Error naming the first quantity out of range and its value (NaN included):
 // solid fraction outside [0, 1), negative granular temperature, diameter or density not
-// positive, restitution outside (0, 1], negative gas drag coefficient.
+// positive, restitution outside (0, 1], negative gas drag coefficient; a given g0 not finite and
+// positive, or its sums negative.
 void validate(const KineticState& state);
 
 }  // namespace grainbridge::closures

@@ -22,6 +22,21 @@ double gasModified(double dilute, double factor, double beta, double rho, double
   return dilute * a / (a + factor * beta * dilute);
 }
 
+// The same for phase m of a mixture, as MFIX writes it with S = sum_l eps_l g0_ml (calc_mu_s.f,
+// 2005): c* = rho eps g0_mm theta c0 / (rho S theta + factor beta c0 / (rho eps)), that is
+// c0 (eps g0_mm / S) a / (a + factor beta c0) with a = rho^2 eps S theta. The share eps g0_mm / S
+// makes the dilute coefficients additive over identical phases; without gas (beta = 0) it stays,
+// as MFIX 21.3's own comment says it should ("the proper extension for M>1 when ro_g=0").
+double gasModifiedInMixture(double dilute, double factor, double beta, double rho, double eps, double g0, double sum,
+                            double theta) {
+  if (!(sum > 0.0)) return dilute;  // no solids anywhere: the one-phase dilute limit
+  const double share = eps * g0 / sum;
+  if (beta == 0.0) return dilute * share;
+  const double a = rho * rho * eps * sum * theta;
+  if (a == 0.0) return 0.0;
+  return dilute * share * a / (a + factor * beta * dilute);
+}
+
 }  // namespace
 
 KineticTransport Lun1984::evaluate(const KineticState& s) const {
@@ -34,8 +49,14 @@ KineticTransport Lun1984::evaluate(const KineticState& s) const {
   const double e = s.restitution;
   const double beta = s.gasDragCoefficient;
   const double eta = 0.5 * (1.0 + e);  // Lun et al.'s eta
-  const double g0 = carnahanStarlingG0(eps);
-  const double epsG0 = eps * g0;
+  const bool mixture = s.g0 > 0.0;
+  const double g0 = mixture ? s.g0 : carnahanStarlingG0(eps);  // g0_mm
+  const double epsG0 = mixture ? s.contactSum : eps * g0;       // sum_l eps_l g0_ml
+  const double dissipationSum = mixture ? s.dissipationSum : epsG0;
+  const auto gasReduced = [&](double dilute, double factor) {
+    return mixture ? gasModifiedInMixture(dilute, factor, beta, rho, eps, g0, epsG0, theta)
+                   : gasModified(dilute, factor, beta, rho, eps, g0, theta);
+  };
   const double sqrtTheta = std::sqrt(theta);
   const double rhoDSqrtTheta = rho * d * sqrtTheta;
 
@@ -47,19 +68,21 @@ KineticTransport Lun1984::evaluate(const KineticState& s) const {
   out.bulkViscosity = 8.0 * eta / (3.0 * sqrtPi) * rhoDSqrtTheta * eps * epsG0;
 
   const double mu0 = 5.0 * sqrtPi / 96.0 * rhoDSqrtTheta;
-  const double muStar = gasModified(mu0, 2.0, beta, rho, eps, g0, theta);
+  const double muStar = gasReduced(mu0, 2.0);
   out.shearViscosity =
       viscosityFactor() *
       (muStar / (eta * (2.0 - eta) * g0) * (1.0 + 1.6 * eta * epsG0) * (1.0 + 1.6 * eta * (3.0 * eta - 2.0) * epsG0) +
        0.6 * out.bulkViscosity);
 
   const double kappa0 = 25.0 * sqrtPi / (16.0 * eta * (41.0 - 33.0 * eta)) * rhoDSqrtTheta;
-  const double kappaStar = gasModified(kappa0, 1.2, beta, rho, eps, g0, theta);
+  const double kappaStar = gasReduced(kappa0, 1.2);
   out.conductivity = kappaStar / g0 * (1.0 + 2.4 * eta * epsG0) * (1.0 + 2.4 * eta * eta * (4.0 * eta - 3.0) * epsG0) +
                      4.0 * eta / sqrtPi * rhoDSqrtTheta * eps * epsG0;
 
-  // Eq. 5.7 (Lun et al.'s 48/sqrt(pi) eta (1 - eta) written with e).
-  out.dissipationRate = 12.0 / sqrtPi * (1.0 - e * e) * rho * eps * epsG0 * theta * sqrtTheta / d;
+  // Eq. 5.7 (Lun et al.'s 48/sqrt(pi) eta (1 - eta) written with e), eps_s^2 g0 read as
+  // eps_s sum_l eps_l g0_ll (MFIX source_granular_energy.f): as printed, eps_sm^2 g0_mm would halve
+  // the dissipation of two identical halves.
+  out.dissipationRate = 12.0 / sqrtPi * (1.0 - e * e) * rho * eps * dissipationSum * theta * sqrtTheta / d;
   return out;
 }
 

@@ -27,7 +27,11 @@
 // Ma-Ahmadi, as MFIX writes it with beta the gas drag coefficient:
 //   mu*    = mu0    / (1 + 2   beta mu0    / (rho^2 eps^2 g0 theta))
 //   kappa* = kappa0 / (1 + 1.2 beta kappa0 / (rho^2 eps^2 g0 theta))
-// so beta = 0 gives the pure Lun et al. (1984) coefficients, and in the dilute limit
+// so beta = 0 gives the pure Lun et al. (1984) coefficients. A phase of a mixture (KineticState's
+// g0, contactSum, dissipationSum) reads eps g0 as S = sum_l eps_l g0_ml everywhere above, g0 as
+// g0_mm, the collisional conductivity as 4 eta/sqrt(pi) rho d eps S sqrt(theta), J with
+// sum_l eps_l g0_ll, and c* = c0 (eps g0_mm / S) a / (a + factor beta c0), a = rho^2 eps S theta,
+// as MFIX does since 2005, so that identical phases add up to one; and in the dilute limit
 // (eps -> 0, beta = 0, e = 1) mu -> 5/96 rho d sqrt(pi theta) and kappa -> 25 sqrt(pi)/128
 // rho d sqrt(theta), the Chapman-Enskog values; for e < 1 the dilute mu carries 1/(eta (2 - eta)).
 #include <string_view>

@@ -6,6 +6,79 @@
 
 namespace grainbridge::fluid {
 
+namespace {
+
+// What one face's phases bring to the point-coupled solve.
+struct FaceTerms {
+  explicit FaceTerms(std::size_t M) : H(M), a(M), u(M), dilute(M, 0), X(Eigen::MatrixXd::Zero(M, M)) {}
+  std::vector<double> H;      // neighbour sum plus b of each phase's equation
+  std::vector<double> a;      // its diagonal
+  std::vector<double> u;      // its velocity at the iterate
+  std::vector<char> dilute;   // a dilute face (Momentum.hpp): kept out of the coupling
+  Eigen::MatrixXd X;          // momentum-exchange coefficient times dV between phases, symmetric
+};
+
+// One solids phase (and no solids-solids drag): the closed form of Syamlal's partial elimination,
+// written out as it has been since the engine's first bed (its results bit for bit).
+void coupleGasAndOneSolids(std::vector<StencilSystem>& systems, const FaceTerms& t, std::size_t f) {
+  const double drag = t.X(0, 1);
+  const double gasDiagonal = t.a[0] + drag;
+  if (t.dilute[1] != 0) {
+    // The gas sees the dilute solids' drag at their current velocity.
+    systems[0].ap(f) = gasDiagonal;
+    systems[0].b(f) += drag * t.u[1];
+    return;
+  }
+  const double solidsDiagonal = t.a[1] + drag;
+  systems[0].ap(f) = gasDiagonal - drag * drag / solidsDiagonal;
+  systems[0].b(f) += drag * t.H[1] / solidsDiagonal;
+  systems[1].ap(f) = t.a[1] + drag - drag * drag / gasDiagonal;
+  systems[1].b(f) += drag * t.H[0] / gasDiagonal;
+}
+
+// Any number of phases and exchanges: the point-coupled system K u = r over the phases with an
+// equation here (K_mm = a_m + sum_l X_ml, K_ml = -X_ml; a dilute phase's exchange at its current
+// velocity in r) is what the face's velocities satisfy when every neighbour is held at the
+// iterate. Phase m's row of u = K^-1 r, divided by (K^-1)_mm, is again an equation for u_m alone,
+//   u_m / (K^-1)_mm = r_m + sum_{l != m} (K^-1)_ml / (K^-1)_mm r_l,
+// so each phase sees every exchange implicitly (Syamlal 1998's partial elimination, of which
+// coupleGasAndOneSolids is the two-phase case).
+void couplePointMatrix(std::vector<StencilSystem>& systems, const FaceTerms& t, std::size_t f) {
+  const std::size_t M = systems.size();
+  std::vector<std::size_t> coupled;
+  for (std::size_t m = 0; m < M; ++m) {
+    if (t.dilute[m] == 0) coupled.push_back(m);
+  }
+  const auto n = static_cast<Eigen::Index>(coupled.size());
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd r(n), explicitPart = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::size_t m = coupled[static_cast<std::size_t>(i)];
+    K(i, i) = t.a[m];
+    for (std::size_t l = 0; l < M; ++l) {
+      if (l == m) continue;
+      K(i, i) += t.X(m, l);
+      if (t.dilute[l] != 0) explicitPart[i] += t.X(m, l) * t.u[l];
+    }
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (j != i) K(i, j) = -t.X(m, coupled[static_cast<std::size_t>(j)]);
+    }
+    r[i] = t.H[m] + explicitPart[i];
+  }
+  const Eigen::MatrixXd inverse = K.inverse();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::size_t m = coupled[static_cast<std::size_t>(i)];
+    double b = systems[m].b(f) + explicitPart[i];
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (j != i) b += inverse(i, j) / inverse(i, i) * r[j];
+    }
+    systems[m].ap(f) = 1.0 / inverse(i, i);
+    systems[m].b(f) = b;
+  }
+}
+
+}  // namespace
+
 CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
                                       const FlowProperties& properties, int axis, double relaxation,
                                       double diluteFraction) {
@@ -17,51 +90,33 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
     out.pressure.emplace_back(grid, axis);
     out.solidsPressure.emplace_back(grid, axis);
   }
-  std::vector<double> H(M), a(M), dragV(M, 0.0), u(M);
-  std::vector<char> dilute(M, 0);
+  const bool closedForm = M == 2 && properties.solidsDrag.empty();
+  FaceTerms t(M);
   for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
     if (!systems[0].active(f)) continue;
+    t.X.setZero();
     for (std::size_t m = 0; m < M; ++m) {
       const auto& v = state.phases[m].velocity[static_cast<std::size_t>(axis)].values();
-      H[m] = systems[m].neighbourSum(f, v);
-      a[m] = systems[m].ap(f);
-      u[m] = v[f];
-      dragV[m] = m == 0 ? 0.0 : meanOnFace(properties.dragCoefficient[m], axis, f) * V;
-      dilute[m] = diluteFace(state, m, axis, f, diluteFraction) ? 1 : 0;
+      t.H[m] = systems[m].neighbourSum(f, v);
+      t.a[m] = systems[m].ap(f);
+      t.u[m] = v[f];
+      t.dilute[m] = diluteFace(state, m, axis, f, diluteFraction) ? 1 : 0;
+      if (m > 0) t.X(0, m) = t.X(m, 0) = meanOnFace(properties.dragCoefficient[m], axis, f) * V;
     }
-    double gasDiagonal = a[0];
-    for (std::size_t m = 1; m < M; ++m) gasDiagonal += dragV[m];
-    // The gas: each solids velocity eliminated through its own equation; a dilute phase's drag
-    // at its current velocity.
-    double apGas = gasDiagonal, bGas = systems[0].b(f);
-    for (std::size_t m = 1; m < M; ++m) {
-      if (dilute[m] != 0) {
-        bGas += dragV[m] * u[m];
-        continue;
-      }
-      const double solidsDiagonal = a[m] + dragV[m];
-      apGas -= dragV[m] * dragV[m] / solidsDiagonal;
-      bGas += dragV[m] * H[m] / solidsDiagonal;
+    for (const SolidsPairDrag& pair : properties.solidsDrag)
+      t.X(pair.l, pair.m) = t.X(pair.m, pair.l) = meanOnFace(pair.coefficient, axis, f) * V;
+    if (closedForm) {
+      coupleGasAndOneSolids(systems, t, f);
+    } else {
+      couplePointMatrix(systems, t, f);
     }
-    // Each solids phase: the gas velocity eliminated through the gas equation, the other solids
-    // phases at their current iterate.
-    for (std::size_t m = 1; m < M; ++m) {
-      if (dilute[m] != 0) continue;
-      double gasSide = H[0];
-      for (std::size_t l = 1; l < M; ++l) {
-        if (l != m) gasSide += dragV[l] * u[l];
-      }
-      systems[m].ap(f) = a[m] + dragV[m] - dragV[m] * dragV[m] / gasDiagonal;
-      systems[m].b(f) += dragV[m] * gasSide / gasDiagonal;
-    }
-    systems[0].ap(f) = apGas;
-    systems[0].b(f) = bGas;
 
     // The point-coupled matrix of the corrections over the phases with an equation here, its
-    // diagonal relaxed as the systems are.
+    // diagonal relaxed as the systems are. A dilute phase's exchange stays out of it, as that
+    // phase's velocity is not corrected.
     std::vector<std::size_t> coupled;
     for (std::size_t m = 0; m < M; ++m) {
-      if (dilute[m] == 0) coupled.push_back(m);
+      if (t.dilute[m] == 0) coupled.push_back(m);
     }
     const auto n = static_cast<Eigen::Index>(coupled.size());
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
@@ -69,11 +124,12 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
     for (Eigen::Index i = 0; i < n; ++i) {
       const std::size_t m = coupled[static_cast<std::size_t>(i)];
       fractions[i] = meanOnFace(state.phases[m].fraction, axis, f) * A;
-      K(i, i) += a[m] / relaxation;
-      if (m > 0) {
-        K(i, i) += dragV[m];
-        K(0, 0) += dragV[m];
-        K(0, i) = K(i, 0) = -dragV[m];
+      K(i, i) += t.a[m] / relaxation;
+      for (Eigen::Index j = 0; j < n; ++j) {
+        if (j == i) continue;
+        const double x = t.X(m, coupled[static_cast<std::size_t>(j)]);
+        K(i, i) += x;
+        K(i, j) = -x;
       }
     }
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(K);

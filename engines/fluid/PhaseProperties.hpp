@@ -5,6 +5,7 @@
 // (Eqs. 3.19-3.20 for the gas, 3.22 and 3.27 for solids): `shearViscosity` and `bulkViscosity`
 // are mu_m and lambda_m as they multiply D_m there, so the gas's carry its eps_g (eps_g mu_g,
 // Eq. 3.20) and the solids' are the kinetic-theory and plastic viscosities as they stand.
+#include <cstddef>
 #include <vector>
 
 #include "engines/fluid/Fields.hpp"
@@ -34,12 +35,23 @@ struct PhaseProperties {
   CellField wallSlipCoefficient;
 };
 
+// The solids-solids drag coefficient F_sml (Eq. 3.18) of one pair of solids phases l < m, in
+// cells [kg/(m^3 s)]: the momentum exchange -F_sml (v_sl - v_sm) on phase l and its opposite on m.
+struct SolidsPairDrag {
+  SolidsPairDrag(const StaggeredGrid& grid, std::size_t lPhase, std::size_t mPhase)
+      : l(lPhase), m(mPhase), coefficient(grid) {}
+  std::size_t l, m;
+  CellField coefficient;
+};
+
 struct FlowProperties {
   std::vector<PhaseProperties> phases;  // [0] the gas
   // Gas-solids drag coefficient F_gm (Eq. 3.10) per solids phase m = 1..M, in cells [kg/(m^3 s)];
   // dragCoefficient[0] is unused. The solver interpolates it to the faces once, so the gas and
   // the solids momentum equations see the same face value.
   std::vector<CellField> dragCoefficient;
+  // Per pair of solids phases the model couples (FlowModel::solidsPairs); empty with one.
+  std::vector<SolidsPairDrag> solidsDrag;
 };
 
 }  // namespace grainbridge::fluid

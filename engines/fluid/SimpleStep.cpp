@@ -15,12 +15,13 @@ namespace {
 
 std::string phaseName(std::size_t m) { return m == 0 ? "gas" : "solids " + std::to_string(m); }
 
-FlowProperties propertiesFor(const StaggeredGrid& grid, std::size_t phases) {
+FlowProperties propertiesFor(const StaggeredGrid& grid, std::size_t phases, const FlowModel& model) {
   FlowProperties p;
   for (std::size_t m = 0; m < phases; ++m) {
     p.phases.emplace_back(grid);
     p.dragCoefficient.emplace_back(grid);
   }
+  for (const auto& [l, m] : model.solidsPairs()) p.solidsDrag.emplace_back(grid, l, m);
   return p;
 }
 
@@ -32,6 +33,7 @@ void copyPropertiesToGhosts(FlowProperties& p, const Boundaries& boundaries) {
     }
   }
   for (CellField& f : p.dragCoefficient) boundaries.copyToGhosts(f);
+  for (SolidsPairDrag& pair : p.solidsDrag) boundaries.copyToGhosts(pair.coefficient);
 }
 
 // Keeps the largest residual of an iteration with the equation and cell it belongs to.
@@ -119,9 +121,9 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
   const StaggeredGrid& grid = state.grid();
   const std::size_t M = state.phases.size();
   const int dims = grid.dimensions();
-  FlowProperties props = propertiesFor(grid, M);
+  FlowProperties props = propertiesFor(grid, M, model);
   // The last time level's properties (its densities, for the transient terms), evaluated once.
-  FlowProperties oldProps = propertiesFor(grid, M);
+  FlowProperties oldProps = propertiesFor(grid, M, model);
   model.evaluate(old, oldProps);
   copyPropertiesToGhosts(oldProps, boundaries);
   MomentumInputs in;
@@ -218,7 +220,11 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
         if (!grid.interior(c)) continue;
         double& correction = fractionCorrection[c];
-        if (phase.fraction[c] + correction > settings.packedFraction && correction > 0.0) {
+        // Eq. 3.68 on the total solids fraction: a mixture packs as a whole, each of its phases
+        // far below eps_s,max (the phases corrected before m already hold their new values).
+        double solids = 0.0;
+        for (std::size_t l = 1; l < M; ++l) solids += state.phases[l].fraction[c];
+        if (solids + correction > settings.packedFraction && correction > 0.0) {
           withheld += (1.0 - settings.fractionRelaxation) * correction;
           correction *= settings.fractionRelaxation;  // Eq. 3.68
         }

@@ -6,11 +6,13 @@
 //   3. the gas pressure correction from the gas continuity, P += omega_P P', every phase's
 //      velocity corrected (the correction coefficients carry the drag);
 //   4. per solids phase, the fraction correction from its continuity, under-relaxed as Eq. 3.68
-//      says where the bed is packed, eps_s += eps_s' (Eq. 3.69), its velocity corrected;
+//      says where the bed (all solids phases together) is packed, eps_s += eps_s' (Eq. 3.69),
+//      its velocity corrected;
 //      eps_g = 1 - sum eps_s. No fraction is ever clipped: clipping would break conservation.
 // The step either converges (the state is the new time level) or reports which equation, cell
 // and residual kept it from converging, and leaves the state at the old level, so the caller can
 // retry with a smaller step.
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -35,6 +37,9 @@ class FlowModel {
  public:
   virtual ~FlowModel() = default;
   virtual void evaluate(const FlowState& state, FlowProperties& properties) const = 0;
+  // The pairs (l, m), 1 <= l < m, of solids phases that exchange momentum (Eq. 3.18): evaluate()
+  // fills FlowProperties::solidsDrag for them, in this order.
+  [[nodiscard]] virtual std::vector<std::array<std::size_t, 2>> solidsPairs() const { return {}; }
   // Equations of the model's own beyond mass and momentum (a kinetic-theory model's granular
   // energy, Eq. 3.34), solved once per outer iteration after the continuity corrections, at the
   // iterate's velocities and fractions and the `properties` evaluated at its start. Each returns

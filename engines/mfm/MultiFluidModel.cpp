@@ -34,6 +34,16 @@ double closureSolidFraction(const fluid::FlowState& state, std::size_t m, std::s
   return std::clamp(state.phases[m].fraction[c], 0.0, 1.0 - closureVoidFraction(state, c));
 }
 
+// Phase m's share of the plastic viscosity (Eq. 3.27). Schaeffer's mu^p is written with P*, not
+// eps_sm P* (PlasticRegime.hpp), so each phase of a mixture takes eps_sm / eps_s of it, as MFIX
+// does (calc_mu_s.f: EP_s(M)/SUM_EPS_CP), and identical phases add up to one; one phase takes it all.
+double plasticViscosityShare(const fluid::FlowState& state, std::size_t m, std::size_t c) {
+  if (state.phases.size() == 2) return 1.0;
+  double total = 0.0;
+  for (std::size_t l = 1; l < state.phases.size(); ++l) total += closureSolidFraction(state, l, c);
+  return total > 0.0 ? closureSolidFraction(state, m, c) / total : 0.0;
+}
+
 // The cell-centred velocity of a phase.
 Vec3 centredVelocity(const fluid::PhaseFields& phase, std::size_t c) {
   const fluid::StaggeredGrid& grid = phase.fraction.grid();
@@ -70,6 +80,19 @@ MultiFluidModel::MultiFluidModel(MultiFluidParams params)
         "multi-fluid model: the rotation model and Johnson-Jackson walls need the granular-energy equation "
         "(granular_energy pde)");
   }
+  for (std::size_t k = 0; k < params_.solidsPairs.size(); ++k) {
+    const SolidsPair& pair = params_.solidsPairs[k];
+    if (!(pair.l >= 1 && pair.l < pair.m && pair.m <= params_.solids.size()))
+      throw Error("multi-fluid model: solids pair " + std::to_string(k) + " (" + std::to_string(pair.l) + ", " +
+                  std::to_string(pair.m) + ") is not two solids phases l < m of " +
+                  std::to_string(params_.solids.size()));
+    for (std::size_t j = 0; j < k; ++j) {
+      if (params_.solidsPairs[j].l == pair.l && params_.solidsPairs[j].m == pair.m)
+        throw Error("multi-fluid model: solids pair " + std::to_string(k) + " repeats pair " + std::to_string(j));
+    }
+  }
+  if (params_.radialDistribution == RadialDistributionModel::CarnahanStarling && params_.solids.size() > 1)
+    throw Error("multi-fluid model: Carnahan-Starling's g0 is of one solids phase; a mixture needs lebowitz");
   if (!params_.rotation) return;
   for (std::size_t m = 1; m <= params_.solids.size(); ++m) {
     const SolidsPhase& s = params_.solids[m - 1];
@@ -89,6 +112,31 @@ closures::JohnsonJackson MultiFluidModel::wallFor(std::size_t m) const {
   jj.params.wallRestitution = params_.solids[m - 1].wallRestitution;
   jj.params.wallEffectiveRestitution = wallEffective_[m];
   return jj;
+}
+
+std::vector<std::array<std::size_t, 2>> MultiFluidModel::solidsPairs() const {
+  std::vector<std::array<std::size_t, 2>> pairs;
+  for (const SolidsPair& pair : params_.solidsPairs) pairs.push_back({pair.l, pair.m});
+  return pairs;
+}
+
+void MultiFluidModel::evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& p,
+                                         std::size_t c) const {
+  std::vector<double> fractions, diameters;
+  for (std::size_t m = 1; m < state.phases.size(); ++m) {
+    fractions.push_back(closureSolidFraction(state, m, c));
+    diameters.push_back(params_.solids[m - 1].diameter);
+  }
+  for (std::size_t k = 0; k < params_.solidsPairs.size(); ++k) {
+    const SolidsPair& pair = params_.solidsPairs[k];
+    const SolidsPhase& l = params_.solids[pair.l - 1];
+    const SolidsPhase& m = params_.solids[pair.m - 1];
+    const double g0 = closures::lebowitzG0(fractions, diameters, pair.l - 1, pair.m - 1);
+    const double relative =
+        (centredVelocity(state.phases[pair.l], c) - centredVelocity(state.phases[pair.m], c)).norm();
+    p.solidsDrag[k].coefficient[c] = closures::SolidsSolidsDrag{pair.drag}.evaluate(
+        {fractions[pair.l - 1], l.density, l.diameter}, {fractions[pair.m - 1], m.density, m.diameter}, g0, relative);
+  }
 }
 
 void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowProperties& p) const {
@@ -119,6 +167,7 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
             evaluatePde(state, p, m, c, epsG);
           }
         }
+        if (!p.solidsDrag.empty()) evaluateSolidsDrag(state, p, c);
       }
     }
   }
@@ -133,7 +182,7 @@ void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::Fl
   const closures::SyamlalCoefficients& kc = now.coefficients;
   const closures::PlasticRegime::Result pl = params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant());
   out.solidsPressure[c] = kc.k1 * eps * eps * theta + pl.pressure;  // Eqs. 3.21 + 3.26
-  out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + pl.viscosity;
+  out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + plasticViscosityShare(state, m, c) * pl.viscosity;
   out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
   double slope = 2.0 * kc.k1 * eps * theta;
   if (pl.plastic) {
@@ -154,10 +203,32 @@ MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState
   k.state.density = solids.density;
   k.state.restitution = solids.restitution;
   k.state.gasDragCoefficient = params_.granularGasCoupling ? properties.dragCoefficient[m][c] : 0.0;
+  if (params_.radialDistribution == RadialDistributionModel::Lebowitz) {
+    setMixtureContacts(state, m, c, 0.0, k.state);
+    k.g0 = k.state.g0;
+  } else {
+    k.g0 = closures::carnahanStarlingG0(k.state.solidFraction);
+  }
   k.transport = params_.closure.evaluate(k.state);
   k.transport.dissipationRate *= dissipationScale_[m];  // Eq. 5.20 with the rotation model
-  k.g0 = closures::carnahanStarlingG0(k.state.solidFraction);
   return k;
+}
+
+void MultiFluidModel::setMixtureContacts(const fluid::FlowState& state, std::size_t m, std::size_t c, double shift,
+                                         closures::KineticState& ks) const {
+  std::vector<double> fractions, diameters;
+  for (std::size_t l = 1; l < state.phases.size(); ++l) {
+    fractions.push_back(closureSolidFraction(state, l, c) + (l == m ? shift : 0.0));
+    diameters.push_back(params_.solids[l - 1].diameter);
+  }
+  const std::size_t own = m - 1;
+  ks.g0 = closures::lebowitzG0(fractions, diameters, own, own);
+  ks.contactSum = 0.0;
+  ks.dissipationSum = 0.0;
+  for (std::size_t l = 0; l < fractions.size(); ++l) {
+    ks.contactSum += fractions[l] * closures::lebowitzG0(fractions, diameters, own, l);
+    ks.dissipationSum += fractions[l] * closures::lebowitzG0(fractions, diameters, l, l);
+  }
 }
 
 void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m,
@@ -169,7 +240,7 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   const closures::PlasticRegime::Result pl =
       params_.plastic.evaluate(epsG, eps, fluid::strainRate(state.phases[m], c).deviatorInvariant());
   out.solidsPressure[c] = kin.transport.pressure + pl.pressure;  // kinetic + Eq. 3.26
-  out.shearViscosity[c] = kin.transport.shearViscosity + pl.viscosity;
+  out.shearViscosity[c] = kin.transport.shearViscosity + plasticViscosityShare(state, m, c) * pl.viscosity;
   out.bulkViscosity[c] = kin.transport.secondViscosity();  // lambda_s; the plastic regime has none
   // The kinetic slope at the cell's theta, by a one-sided difference of the kinetic-theory
   // model's pressure (never the table's: the slope only steers the fraction correction, and the
@@ -177,6 +248,8 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   closures::KineticState shifted = kin.state;
   const double step = 1e-7;
   shifted.solidFraction = std::min(eps + step, 1.0 - 1e-12);
+  if (params_.radialDistribution == RadialDistributionModel::Lebowitz)
+    setMixtureContacts(state, m, c, shifted.solidFraction - eps, shifted);
   // Where no table supplies the pressure the closure's is the model's: no second evaluation.
   const double p0 = params_.closure.modelPressure(kin.state, kin.transport);
   const double p1 = closures::evaluate(params_.closure.kineticModel(), shifted).pressure;

@@ -27,6 +27,7 @@
 //            frictionless DEM's restitution) and scaled by (1 + e)(1 - e_eff) / (1 - e^2).
 // The solids-pressure slope dP_s/deps_s the fraction correction needs is the plastic one,
 // P* + eps_s n A (eps_g* - eps_g)^(n-1), plus the kinetic theory's at the cell's theta.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,6 +75,11 @@ struct SolidsPhase {
 
 enum class GranularEnergyForm { Pde, Algebraic };
 
+// g0 at contact in the kinetic theory and the solids-solids drag: Carnahan-Starling of the phase's
+// own fraction (one solids phase), or Lebowitz's for a mixture (closures/RadialDistribution.hpp),
+// with MFIX's mixture sums in the kinetic theory (KineticState).
+enum class RadialDistributionModel { CarnahanStarling, Lebowitz };
+
 // Two solids phases l < m (1-based, as in FlowState) and the parameters of their drag, Eq. 3.18.
 struct SolidsPair {
   std::size_t l = 1, m = 2;
@@ -93,6 +99,7 @@ struct MultiFluidParams {
   // The solids pairs that exchange momentum by Eq. 3.18; with several solids phases, every pair
   // (the set-up fills an unlisted one with C_f 0 and the mean of the two restitutions).
   std::vector<SolidsPair> solidsPairs;
+  RadialDistributionModel radialDistribution = RadialDistributionModel::CarnahanStarling;
   closures::GasSolidsDrag drag = closures::GasSolidsDrag::byName("syamlal_obrien");
   GranularEnergyForm granularEnergy = GranularEnergyForm::Pde;
   closures::ClosureModel closure = closures::ClosureModel::kineticTheory();  // the pde form's
@@ -115,10 +122,11 @@ struct MultiFluidParams {
 class MultiFluidModel final : public fluid::FlowModel {
  public:
   // Throws grainbridge::Error naming a combination the model cannot run (the rotation model or
-  // Johnson-Jackson walls with the algebraic form).
+  // Johnson-Jackson walls with the algebraic form; a solids pair naming no phase, or twice).
   explicit MultiFluidModel(MultiFluidParams params);
   [[nodiscard]] const MultiFluidParams& params() const { return params_; }
   void evaluate(const fluid::FlowState& state, fluid::FlowProperties& properties) const override;
+  [[nodiscard]] std::vector<std::array<std::size_t, 2>> solidsPairs() const override;
   // The pde form's granular energy of every solids phase (Eq. 3.34).
   std::vector<fluid::TransportResidual> solveTransport(fluid::FlowState& state, const fluid::FlowState& old,
                                                        const fluid::FlowProperties& properties,
@@ -142,6 +150,12 @@ class MultiFluidModel final : public fluid::FlowModel {
     closures::KineticTransport transport;
     double g0 = 1.0;
   };
+  // Phase m's g0_mm and mixture sums at cell c under the Lebowitz distribution, with eps_m raised
+  // by `shift` (the pressure slope's neighbouring state).
+  void setMixtureContacts(const fluid::FlowState& state, std::size_t m, std::size_t c, double shift,
+                          closures::KineticState& ks) const;
+  // F_sml of every solids pair at cell c (Eq. 3.18, g0_lm of the mixture).
+  void evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& properties, std::size_t c) const;
   [[nodiscard]] KineticCell kineticCell(const fluid::FlowState& state, const fluid::FlowProperties& properties,
                                         std::size_t m, std::size_t c) const;
   [[nodiscard]] closures::JohnsonJackson wallFor(std::size_t m) const;

@@ -66,6 +66,11 @@ class ParamSpec {
 
   ParamSpec& required();
   ParamSpec& defaultValue(nlohmann::json value);  // in the same forms a config accepts
+  // Drops the default a shared declaration carries, where the stage derives the value itself.
+  ParamSpec& withoutDefault() {
+    default_.reset();
+    return *this;
+  }
   ParamSpec& min(double value, bool inclusive = true);
   ParamSpec& max(double value, bool inclusive = true);
   ParamSpec& positive() { return min(0.0, false); }

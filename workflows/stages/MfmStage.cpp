@@ -56,6 +56,18 @@ std::shared_ptr<const ParamSchema> solidsSchema() {
   return s;
 }
 
+// A pair of solids phases and their drag, Eq. 3.18 (engines/closures/SolidsSolidsDrag).
+std::shared_ptr<const ParamSchema> solidsPairSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::stringList("phases").required().doc("the two solids phases, by name"))
+      .add(catalog::closureParameter("solids_drag", "friction_coefficient").renamed("friction"))
+      .add(catalog::closureParameter("solids_drag", "restitution")
+               .withoutDefault()
+               .doc("e_lm; default: the mean of the two phases' restitution (e, not e_eff, with the rotation "
+                    "model)"));
+  return s;
+}
+
 std::shared_ptr<const ParamSchema> boundarySchema() {
   auto s = std::make_shared<ParamSchema>();
   s->add(ParamSpec::string("side")
@@ -148,6 +160,9 @@ MfmStage::MfmStage() {
                .positive()
                .doc("gas viscosity mu_g (VALIDATION.md: the reference gives none; air)"))
       .add(ParamSpec::objectList("solids", solidsSchema()).required().doc("solids phases"))
+      .add(ParamSpec::objectList("solids_pairs", solidsPairSchema())
+               .doc("solids-solids drag (Eq. 3.18) of pairs of solids phases; a pair not listed has C_f 0 and "
+                    "e_lm the mean of the two restitutions"))
       .add(ParamSpec::string("drag")
                .defaultValue("syamlal_obrien")
                .options({"syamlal_obrien", "ergun_wen_yu", "gidaspow"})
@@ -183,6 +198,10 @@ MfmStage::MfmStage() {
                .options({"pde", "algebraic"})
                .doc("theta from the granular-energy equation (Eq. 3.34), or MFiX's algebraic balance "
                     "(syamlal kinetic models only)"))
+      .add(ParamSpec::string("radial_distribution")
+               .options({"carnahan_starling", "lebowitz"})
+               .doc("g0 at contact: Carnahan-Starling (one solids phase; its default) or Lebowitz (the default and "
+                    "only choice for several, with MFiX's mixture sums in the kinetic theory)"))
       .add(ParamSpec::string("plastic_theta")
                .defaultValue("solved")
                .options({"solved", "pinned"})

@@ -9,6 +9,7 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FlowStateIoTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/BedMeasuresTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FluidSetupTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/InterphaseCouplingTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
 

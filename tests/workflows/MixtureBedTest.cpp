@@ -1,0 +1,92 @@
+// Several solids phases in the mfm stage (issue 26): the mixture kinetic theory, the solids-solids
+// drag and the packing rule on the total solids fraction must reduce to the one-phase model when
+// the phases are identical. goldschmidt-mono-smoke's bed (Lun et al., granular-energy equation,
+// Johnson-Jackson walls) from rest without perturbation, run once with its one phase and once
+// split into two identical halves, both under Lebowitz's g0: the summed solids fraction and the
+// gas pressure agree to 1e-6 relative.
+//
+// Why 0.02 s and not the issue's 0.3 s: the bed surface amplifies any difference fast (about
+// x45 per 0.01 s early on), so after 0.05 s the same one-phase bed run at tolerance 1e-6 and at
+// 5e-7 already differs by 1.2e-5 in eps_s: beyond that time the comparison measures the solver
+// tolerance, not the model. At 0.02 s the bed has moved (0.12 in eps_s at the inlet) and the
+// split-minus-mono difference falls with the tolerance (1.0e-7, 1.1e-8, 1.3e-9 at tolerance
+// 1e-5, 1e-7, 1e-8): the two models agree, up to how far the steps are converged. The dilute
+// threshold is per phase (MFiX's DIL_EP_S is too), so a half crosses it at twice the total
+// fraction of the whole: a small, deliberate model difference, set out of the way here (1e-8).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "core/io/FieldFrameReader.hpp"
+#include "tests/support/Cli.hpp"
+
+namespace fs = std::filesystem;
+using namespace grainbridge;
+using namespace grainbridge::testing;
+using nlohmann::json;
+
+namespace {
+
+fs::path lastFrame(const fs::path& stageDir) {
+  fs::path instance;
+  for (const auto& e : fs::directory_iterator(stageDir)) {
+    if (e.is_directory() && e.path().extension() != ".partial") instance = e.path();
+  }
+  fs::path last;
+  for (const auto& e : fs::directory_iterator(instance / "frames")) {
+    if (e.path().extension() == ".h5" && (last.empty() || e.path().filename() > last.filename())) last = e.path();
+  }
+  return last;
+}
+
+}  // namespace
+
+TEST(MixtureBed, TwoIdenticalHalvesReproduceTheOnePhaseBed) {
+  json config = json::parse(readText(sourceDir() / "configs/goldschmidt-mono-smoke.json"));
+  json mono = config.at("stages").at("bed");
+  mono.erase("sweep");
+  json& p = mono.at("params");
+  p["perturbation"] = 0.0;
+  p["radial_distribution"] = "lebowitz";
+  p["rotation_model"] = false;
+  p["frames"] = 2;
+  p["duration"] = "0.02 s";
+  p["average_from"] = "0 s";
+  p["dt"] = p["dt_min"] = p["dt_max"] = "1e-4 s";
+  p["tolerance"] = 1e-7;
+  p["dilute_fraction"] = 1e-8;
+  json split = mono;
+  json& q = split.at("params");
+  json a = p.at("solids").at(0), b = a;
+  a["name"] = "a";
+  b["name"] = "b";
+  q["solids"] = json::array({a, b});
+  for (json& region : q.at("regions")) {
+    const double eps = region.at("solids_fractions").at(0).get<double>();
+    region["solids_fractions"] = json::array({eps / 2.0, eps / 2.0});
+  }
+  json workflow = {{"name", "halves"}, {"stages", {{"mono", mono}, {"split", split}}}};
+  TempDir work;
+  writeText(work.path() / "halves.json", workflow.dump(1));
+  const auto r = runGrainbridge(work.path(), "run halves.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+
+  const auto one = core::io::readFieldFrame(lastFrame(work.path() / "results/halves/mono"));
+  const auto two = core::io::readFieldFrame(lastFrame(work.path() / "results/halves/split"));
+  ASSERT_EQ(one.time, two.time);
+  ASSERT_EQ(two.solids.size(), 2u);
+  double worstFraction = 0.0, worstPressure = 0.0, moved = 0.0;
+  for (std::size_t c = 0; c < one.p_g.size(); ++c) {
+    const double summed = two.solids[0].ep_s[c] + two.solids[1].ep_s[c];
+    worstFraction = std::max(worstFraction, std::abs(summed - one.solids[0].ep_s[c]));
+    worstPressure = std::max(worstPressure, std::abs(two.p_g[c] - one.p_g[c]) / one.p_g[c]);
+    // The halves move as one: equal fractions everywhere.
+    EXPECT_NEAR(two.solids[0].ep_s[c], two.solids[1].ep_s[c], 1e-9) << "cell " << c;
+    moved = std::max(moved, std::abs(one.solids[0].ep_s[c] - (c < one.p_g.size() / 3 ? 0.583 : 0.0)));
+  }
+  EXPECT_LT(worstFraction, 1e-6 * 0.583);
+  EXPECT_LT(worstPressure, 1e-6);
+  // Not a bed at rest: the gas has rearranged it, so the agreement tests the dynamics.
+  EXPECT_GT(moved, 1e-3);
+}
