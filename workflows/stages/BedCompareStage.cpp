@@ -9,7 +9,7 @@
 #include "core/Files.hpp"
 #include "core/io/FieldFrameReader.hpp"
 #include "core/text/NumberText.hpp"
-#include "engines/fluid/BedMeasures.hpp"
+#include "engines/fluid/FrameMaps.hpp"
 #include "workflows/report/CsvField.hpp"
 #include "workflows/report/FindingsPage.hpp"
 #include "workflows/report/NumericCsv.hpp"
@@ -109,34 +109,8 @@ report::FieldMap solidFractionMap(const Bed& bed) {
     throw Error("bed_compare: the mean fields of " + bed.label + " ('" + files.back().string() +
                 "') carry no materials (gravity): rerun it with this grainbridge");
   }
-  const int vertical = fluid::verticalAxis(frame.materials.gravity).axis;
-  const int horizontal = vertical == 0 ? 1 : 0;
-  const int depth = 3 - vertical - horizontal;
-  const auto& g = frame.grid;
-  report::FieldMap map;
-  map.title = bed.panelTitle;
-  map.columns = g.cells[static_cast<std::size_t>(horizontal)];
-  map.rows = g.cells[static_cast<std::size_t>(vertical)];
-  map.x0 = g.origin[horizontal];
-  map.y0 = g.origin[vertical];
-  map.dx = g.spacing[horizontal];
-  map.dy = g.spacing[vertical];
-  map.values.assign(static_cast<std::size_t>(map.columns) * map.rows, 0.0);
-  const int layers = g.cells[static_cast<std::size_t>(depth)];
-  for (int r = 0; r < map.rows; ++r) {
-    for (int c = 0; c < map.columns; ++c) {
-      double sum = 0.0;
-      for (int l = 0; l < layers; ++l) {
-        std::array<int, 3> ijk{};
-        ijk[static_cast<std::size_t>(horizontal)] = c;
-        ijk[static_cast<std::size_t>(vertical)] = r;
-        ijk[static_cast<std::size_t>(depth)] = l;
-        const std::size_t cell = g.index(ijk[0], ijk[1], ijk[2]);
-        for (const auto& phase : frame.solids) sum += phase.ep_s[cell];
-      }
-      map.values[static_cast<std::size_t>(r) * map.columns + c] = sum / layers;
-    }
-  }
+  const fluid::PlaneMap plane = fluid::solidsFractionMap(frame);
+  report::FieldMap map{bed.panelTitle, plane.columns, plane.rows, plane.x0, plane.y0, plane.dx, plane.dy, plane.values};
   return map;
 }
 

@@ -1,11 +1,7 @@
 #include "workflows/stages/MfmSetup.hpp"
 
-#include <algorithm>
-#include <array>
 #include <cmath>
-#include <map>
 #include <optional>
-#include <set>
 
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
@@ -13,6 +9,7 @@
 #include "engines/closures/TabulatedClosure.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "engines/fluid/FluidSetup.hpp"
+#include "engines/mfm/SolidsPairs.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -67,54 +64,14 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
     model.solids.push_back(std::move(phase));
   }
   const std::size_t M = model.solids.size();
-  std::map<std::string, std::size_t> phaseIndex;  // name -> 1-based phase
-  for (std::size_t m = 0; m < M; ++m) {
-    if (!phaseIndex.emplace(model.solids[m].name, m + 1).second)
-      problem("/solids/" + std::to_string(m) + "/name", "\"" + model.solids[m].name + "\" names another phase too");
+  std::vector<mfm::SolidsPairRequest> requests;
+  for (const json& entry : p.value("solids_pairs", json::array())) {
+    requests.push_back({entry.at("phases").get<std::vector<std::string>>(), entry.at("friction").get<double>(),
+                        entry.contains("restitution") ? std::optional<double>(entry.at("restitution")) : std::nullopt});
   }
-  // Every pair of solids phases exchanges momentum (Eq. 3.18); a listed pair sets its own C_f and e_lm.
-  for (std::size_t l = 1; l <= M; ++l) {
-    for (std::size_t m = l + 1; m <= M; ++m) {
-      mfm::SolidsPair pair{l, m, {}};
-      pair.drag.restitution = 0.5 * (model.solids[l - 1].restitution + model.solids[m - 1].restitution);
-      model.solidsPairs.push_back(pair);
-    }
-  }
-  std::set<std::pair<std::size_t, std::size_t>> listed;
-  const json pairs = p.value("solids_pairs", json::array());
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const json& entry = pairs[k];
-    const std::string at = "/solids_pairs/" + std::to_string(k);
-    const auto names = entry.at("phases").get<std::vector<std::string>>();
-    if (names.size() != 2) {
-      problem(at + "/phases", "names " + std::to_string(names.size()) + " phases; a pair is two");
-      continue;
-    }
-    std::array<std::size_t, 2> index{0, 0};
-    for (std::size_t i = 0; i < 2; ++i) {
-      const auto found = phaseIndex.find(names[i]);
-      if (found == phaseIndex.end()) {
-        problem(at + "/phases/" + std::to_string(i), "no solids phase is named \"" + names[i] + "\"");
-      } else {
-        index[i] = found->second;
-      }
-    }
-    if (index[0] == 0 || index[1] == 0) continue;
-    if (index[0] == index[1]) {
-      problem(at + "/phases", "names \"" + names[0] + "\" twice; a pair is two phases");
-      continue;
-    }
-    const auto key = std::minmax(index[0], index[1]);
-    if (!listed.insert(key).second) {
-      problem(at, "the pair " + names[0] + ", " + names[1] + " is listed before");
-      continue;
-    }
-    for (auto& pair : model.solidsPairs) {
-      if (pair.l != key.first || pair.m != key.second) continue;
-      pair.drag.frictionCoefficient = entry.at("friction");
-      if (entry.contains("restitution")) pair.drag.restitution = entry.at("restitution");
-    }
-  }
+  mfm::SolidsPairsResult pairs = mfm::solidsPairsFor(model.solids, requests);
+  addProblems(s, pairs.problems);
+  model.solidsPairs = std::move(pairs.pairs);
   model.drag = closures::GasSolidsDrag::byName(p.at("drag").get<std::string>());
   if (auto* so = std::get_if<closures::SyamlalOBrien>(&model.drag.law)) {
     so->params = {p.at("drag_c").get<double>(), p.at("drag_d").get<double>()};
