@@ -9,18 +9,27 @@
 # Builds nothing: it uses build-release/bin/grainbridge (scripts/quickstart.sh builds it) or
 # $GRAINBRIDGE.
 #
-# Usage: bench/mfm-goldschmidt.sh [--duration SECONDS]
+# --bed binary runs configs/goldschmidt-binary.json's bed at 1.30 m/s instead (bench/mfm-binary.sh).
+#
+# Usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary]
 # Last line: wall_seconds_per_simulated_second = X
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 duration=10
+bed=mono
 while (($#)); do
   case "$1" in
     --duration) duration=$2; shift 2 ;;
-    *) echo "usage: bench/mfm-goldschmidt.sh [--duration SECONDS]" >&2; exit 2 ;;
+    --bed) bed=$2; shift 2 ;;
+    *) echo "usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary]" >&2; exit 2 ;;
   esac
 done
+case "$bed" in
+  mono) inflow="1.92 m/s" ;;
+  binary) inflow="1.30 m/s" ;;
+  *) echo "--bed: mono or binary, not $bed" >&2; exit 2 ;;
+esac
 gb=$(realpath -m "${GRAINBRIDGE:-$repo/build-release/bin/grainbridge}")
 [[ -x "$gb" ]] || { echo "no grainbridge binary at $gb: run scripts/quickstart.sh first (or set GRAINBRIDGE)" >&2; exit 2; }
 core=$(($(nproc) - 1))
@@ -29,14 +38,14 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # The shipped config's bed, one sweep point, the averaging window the last half of the run.
-python3 - "$repo/configs/goldschmidt-mono.json" "$work/bench.json" "$duration" <<'PY'
+python3 - "$repo/configs/goldschmidt-$bed.json" "$work/bench.json" "$duration" "$inflow" <<'PY'
 import json, sys
-source, target, duration = sys.argv[1], sys.argv[2], float(sys.argv[3])
+source, target, duration, inflow = sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4]
 config = json.load(open(source))
 stage = config["stages"]["bed"]
 stage.pop("sweep", None)
 params = stage["params"]
-params["boundaries"][0]["gas_inflow"] = "1.92 m/s"
+params["boundaries"][0]["gas_inflow"] = inflow
 params["rotation_model"] = False
 params["duration"] = f"{duration} s"
 params["average_from"] = f"{duration / 2} s"
@@ -66,6 +75,8 @@ print(f"simulated: {duration:g} s, solver steps {steps}, {s['iterations_per_step
       f"{s['retries']} retried")
 print(f"mean particle height (averaged over {duration / 2:g}-{duration:g} s): {s['mean_height']:.4f} +- "
       f"{s['mean_height_err']:.4f} m; pressure drop {s['pressure_drop']:.0f} +- {s['pressure_drop_err']:.0f} Pa")
+if "segregation_percentage" in s:
+    print(f"segregation percentage: {s['segregation_percentage']:.3f} +- {s['segregation_percentage_err']:.3f}")
 print(f"wall: {wall:.1f} s (stage); cell updates per second: {cells * steps / wall:.4g} "
       f"(x outer iterations: {cells * iterations / wall:.4g})")
 print(f"wall_seconds_per_simulated_second = {wall / duration:.2f}")

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "core/Error.hpp"
 
 namespace grainbridge::fluid {
 
@@ -88,6 +91,18 @@ double mixtureMeanHeight(const std::vector<double>& heights, const std::vector<d
     volume += volumes[m];
   }
   return volume > 0.0 ? moment / volume : 0.0;
+}
+
+double segregationPercentage(double smallHeight, double largeHeight, double smallShare) {
+  if (!(smallShare > 0.0 && smallShare < 1.0))
+    throw Error("segregation percentage: the small particles' share " + std::to_string(smallShare) +
+                " of the solids is not in (0, 1)");
+  if (!(smallHeight > 0.0 && largeHeight > 0.0))
+    throw Error("segregation percentage: mean heights " + std::to_string(smallHeight) + " m (small) and " +
+                std::to_string(largeHeight) + " m (large) must be positive");
+  const double ratio = smallHeight / largeHeight;                   // Eq. 5.24
+  const double ratioMax = (2.0 - smallShare) / (1.0 - smallShare);  // Eq. 5.25
+  return (ratio - 1.0) / (ratioMax - 1.0);                          // Eq. 5.23
 }
 
 }  // namespace grainbridge::fluid

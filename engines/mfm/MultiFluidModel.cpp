@@ -30,8 +30,16 @@ namespace {
 double closureVoidFraction(const fluid::FlowState& state, std::size_t c) {
   return std::clamp(state.phases[0].fraction[c], 1e-12, 1.0);
 }
+// An iterate of a mixture may overfill a cell (the step is then retried); its phases are scaled
+// to the room the clamped void fraction leaves, so that the closures (Lebowitz's g0 needs
+// sum eps < 1) see the cell as packed, as the one phase's clamp does.
 double closureSolidFraction(const fluid::FlowState& state, std::size_t m, std::size_t c) {
-  return std::clamp(state.phases[m].fraction[c], 0.0, 1.0 - closureVoidFraction(state, c));
+  const double room = 1.0 - closureVoidFraction(state, c);
+  if (state.phases.size() == 2) return std::clamp(state.phases[m].fraction[c], 0.0, room);
+  double total = 0.0;
+  for (std::size_t l = 1; l < state.phases.size(); ++l) total += std::clamp(state.phases[l].fraction[c], 0.0, 1.0);
+  const double eps = std::clamp(state.phases[m].fraction[c], 0.0, 1.0);
+  return total > room ? eps * (room / total) : eps;
 }
 
 // Phase m's share of the plastic viscosity (Eq. 3.27). Schaeffer's mu^p is written with P*, not

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/FieldFrameReader.hpp"
+#include "workflows/report/NumericCsv.hpp"
 #include "tests/support/Cli.hpp"
 
 namespace fs = std::filesystem;
@@ -89,4 +90,46 @@ TEST(MixtureBed, TwoIdenticalHalvesReproduceTheOnePhaseBed) {
   EXPECT_LT(worstPressure, 1e-6);
   // Not a bed at rest: the gas has rearranged it, so the agreement tests the dynamics.
   EXPECT_GT(moved, 1e-3);
+}
+
+// goldschmidt-binary-smoke (the CI-sized binary bed, without rotation): the segregation outputs
+// (series, window mean, 1 s blocks, per-phase profiles) and each phase's inventory over 0.3 s.
+TEST(MixtureBed, BinarySmokeWritesTheSegregationOutputsAndKeepsEachPhase) {
+  json config = json::parse(readText(sourceDir() / "configs/goldschmidt-binary-smoke.json"));
+  config["stages"]["bed"]["sweep"] = {{"rotation_model", {false}}};
+  TempDir work;
+  writeText(work.path() / "binary.json", config.dump(1));
+  const auto r = runGrainbridge(work.path(), "run binary.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  fs::path bed;
+  for (const auto& e : fs::directory_iterator(work.path() / "results/goldschmidt-binary-smoke/bed")) {
+    if (e.is_directory() && e.path().extension() != ".partial") bed = e.path();
+  }
+  const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
+  EXPECT_DOUBLE_EQ(summary.at("segregation_small_share").get<double>(), 0.5);  // 0.2915 + 0.2915
+  for (const char* phase : {"small", "large"}) {
+    EXPECT_LT(std::abs(summary.at(std::string("solids_volume_change_") + phase).get<double>()), 1e-10) << phase;
+  }
+  const auto series = workflows::report::readNumericCsv(bed / "series.csv");
+  const auto& sp = series.at("segregation_percentage");
+  ASSERT_EQ(sp.size(), 30u);
+  // Perfectly mixed at the start: s_p begins near zero, and Eq. 5.23 keeps it in [-1, 1] here.
+  EXPECT_LT(std::abs(sp.front()), 0.01);
+  for (double v : sp) EXPECT_LT(std::abs(v), 1.0);
+  double windowSum = 0.0;
+  int windowSamples = 0;
+  for (std::size_t k = 0; k < sp.size(); ++k) {
+    if (series.at("time")[k] >= 0.1 - 1e-9) windowSum += sp[k], ++windowSamples;
+  }
+  EXPECT_NEAR(summary.at("segregation_percentage").get<double>(), windowSum / windowSamples, 1e-12);
+  const auto blocks = workflows::report::readNumericCsv(bed / "segregation_blocks.csv");
+  ASSERT_EQ(blocks.at("samples").size(), 1u);  // 0.3 s: one (partial) 1 s block of 30 samples
+  EXPECT_EQ(blocks.at("samples")[0], 30.0);
+  const auto profiles = workflows::report::readNumericCsv(bed / "profiles.csv");
+  ASSERT_EQ(profiles.at("height").size(), 45u);
+  EXPECT_NEAR(profiles.at("height")[0], 0.005, 1e-15);
+  // The bed's lowest 10 cm holds both phases, the top of the freeboard neither.
+  EXPECT_GT(profiles.at("ep_s_small")[5], 0.1);
+  EXPECT_GT(profiles.at("ep_s_large")[5], 0.1);
+  EXPECT_LT(profiles.at("ep_s_small").back() + profiles.at("ep_s_large").back(), 1e-6);
 }

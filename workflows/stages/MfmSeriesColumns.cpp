@@ -15,6 +15,7 @@ MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup&
   // The solver's history: its last step, and its step and iteration counts so far (differences
   // of two rows give the iterations per step over an interval), the last step's worst residual.
   for (const char* n : {"dt", "solver_steps", "iterations", "residual"}) names_.push_back(n);
+  if (setup.segregation) names_.push_back("segregation_percentage");
 }
 
 void MfmSeriesColumns::sample(driver::SeriesRow& row) {
@@ -33,6 +34,10 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
   values.push_back(static_cast<double>(stats.steps));
   values.push_back(static_cast<double>(stats.iterations));
   values.push_back(stats.lastResidual);
+  if (const auto& seg = setup_.segregation) {
+    values.push_back(fluid::segregationPercentage(values[setup_.taps.size() + seg->small],
+                                                  values[setup_.taps.size() + seg->large], seg->smallShare));
+  }
   for (double v : values) row.add(v);
   // The residual history in the log, ten lines over the run: what the solver needed since the
   // last line (steps, iterations per step, retries) and where it stands.

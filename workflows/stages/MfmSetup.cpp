@@ -1,5 +1,6 @@
 #include "workflows/stages/MfmSetup.hpp"
 
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -9,6 +10,7 @@
 #include "engines/closures/TabulatedClosure.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "engines/fluid/FluidSetup.hpp"
+#include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/SolidsPairs.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -178,6 +180,33 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
               "the taps must satisfy 0 <= low < high <= " + core::humanNumber(height) + " m (the domain's height)");
     }
     s.taps.push_back(std::move(tap));
+  }
+
+  // The segregation percentage of a binary bed (Eqs. 5.23-5.25), x_small from the initial regions.
+  if (p.contains("segregation")) {
+    const json& seg = p.at("segregation");
+    if (M != 2) problem("/segregation", "the segregation percentage is of a binary bed; this one has " +
+                                            std::to_string(M) + " solids phase(s)");
+    std::array<std::size_t, 2> index{M, M};
+    const std::array<const char*, 2> roles{"small", "large"};
+    for (std::size_t r = 0; r < 2; ++r) {
+      const std::string name = seg.at(roles[r]);
+      for (std::size_t m = 0; m < M; ++m) {
+        if (model.solids[m].name == name) index[r] = m;
+      }
+      if (index[r] == M) problem("/segregation/" + std::string(roles[r]), "no solids phase is named \"" + name + "\"");
+    }
+    if (index[0] < M && index[0] == index[1])
+      problem("/segregation/large", "is the small phase too; name the two phases of the bed");
+    if (s.problems.empty()) {
+      const auto volumes = mfm::initialInventory(s.engine, s.initial).solidsVolume;
+      const double total = volumes[0] + volumes[1];
+      if (!(volumes[index[0]] > 0.0 && volumes[index[1]] > 0.0)) {
+        problem("/segregation", "the initial regions must hold both phases (small and large) to define x_small");
+      } else {
+        s.segregation = Segregation{index[0], index[1], volumes[index[0]] / total};
+      }
+    }
   }
   return s;
 }

@@ -4,6 +4,7 @@
 // of the parameter at fault (below /params). The stage's config check and its run both call it,
 // so both see the same numbers and each rule is written once.
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,12 +20,20 @@ struct PressureTap {
   double low = 0.0, high = 0.0;  // heights above the bottom along gravity [m]
 };
 
+// The two phases of a binary bed's segregation percentage (0-based among the solids) and the
+// small particles' share of the initial solids volume, x_small of Eq. 5.25.
+struct Segregation {
+  std::size_t small = 0, large = 1;
+  double smallShare = 0.5;
+};
+
 struct MfmSetup {
   mfm::MultiFluidSetup engine;
   mfm::InitialState initial;
   std::vector<PressureTap> taps;
   double duration = 0.0;
   double averageFrom = 0.0;
+  std::optional<Segregation> segregation;
   // (pointer below /params, message): empty when the run may start.
   std::vector<std::pair<std::string, std::string>> problems;
 };

@@ -1,18 +1,24 @@
 #include "workflows/stages/MfmStage.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include <spdlog/spdlog.h>
 #include "core/Error.hpp"
+#include "core/Files.hpp"
+#include "core/text/NumberText.hpp"
 
 #include "core/averaging/BlockAverage.hpp"
 #include "core/averaging/DominantFrequency.hpp"
+#include "core/averaging/TimeBlocks.hpp"
 #include "core/io/FieldFrameWriter.hpp"
 #include "engines/fluid/BedMeasures.hpp"
+#include "engines/fluid/FrameMaps.hpp"
 #include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/closures/ClosureCatalog.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
+#include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/MfmSeriesColumns.hpp"
 #include "workflows/stages/MfmSetup.hpp"
 
@@ -65,6 +71,14 @@ std::shared_ptr<const ParamSchema> solidsPairSchema() {
                .withoutDefault()
                .doc("e_lm; default: the mean of the two phases' restitution (e, not e_eff, with the rotation "
                     "model)"));
+  return s;
+}
+
+// The two phases of the segregation percentage, Eqs. 5.23-5.25.
+std::shared_ptr<const ParamSchema> segregationSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("small").required().doc("the small particles' phase, by name"))
+      .add(ParamSpec::string("large").required().doc("the large particles' phase, by name"));
   return s;
 }
 
@@ -135,6 +149,40 @@ void addAverage(json& summary, const std::string& key, const std::vector<double>
   summary[key + "_err"] = avg.standardError;
 }
 
+// segregation_blocks.csv: s_p's 1 s means over the whole run (the experiment's reporting), read
+// back from series.csv so that a resumed run's blocks hold the samples before the restart too.
+void writeSegregationBlocks(StageContext& ctx) {
+  const auto series = report::readNumericCsv(ctx.outputDir() / "series.csv");
+  const auto blocks =
+      core::averaging::timeBlockMeans(series.at("time"), series.at("segregation_percentage"), 1.0);
+  std::ostringstream csv;
+  csv << "block_start,block_end,segregation_percentage,samples\n";
+  for (const auto& b : blocks) {
+    csv << core::roundTripText(b.start) << ',' << core::roundTripText(b.end) << ',' << core::roundTripText(b.mean)
+        << ',' << b.samples << '\n';
+  }
+  core::writeFileAtomically(ctx.outputDir() / "segregation_blocks.csv", csv.str());
+  ctx.addArtifact("segregation_blocks.csv", "segregation_blocks_csv");
+}
+
+// profiles.csv: each phase's eps_s of the window's mean fields, averaged over the width, against
+// height (Fig. 5.6).
+void writeProfiles(StageContext& ctx, const core::data::FieldFrame& mean, const std::vector<mfm::SolidsPhase>& solids) {
+  std::vector<fluid::HeightProfile> profiles;
+  for (std::size_t m = 0; m < solids.size(); ++m) profiles.push_back(fluid::solidsFractionProfile(mean, m));
+  std::ostringstream csv;
+  csv << "height";
+  for (const auto& phase : solids) csv << ",ep_s_" << phase.name;
+  csv << '\n';
+  for (std::size_t k = 0; k < profiles.front().heights.size(); ++k) {
+    csv << core::roundTripText(profiles.front().heights[k]);
+    for (const auto& profile : profiles) csv << ',' << core::roundTripText(profile.fraction[k]);
+    csv << '\n';
+  }
+  core::writeFileAtomically(ctx.outputDir() / "profiles.csv", csv.str());
+  ctx.addArtifact("profiles.csv", "profiles_csv");
+}
+
 }  // namespace
 
 MfmStage::MfmStage() {
@@ -198,6 +246,9 @@ MfmStage::MfmStage() {
                .options({"pde", "algebraic"})
                .doc("theta from the granular-energy equation (Eq. 3.34), or MFiX's algebraic balance "
                     "(syamlal kinetic models only)"))
+      .add(ParamSpec::object("segregation", segregationSchema())
+               .doc("a binary bed's segregation percentage s_p (Eqs. 5.23-5.25): series, window mean, 1 s "
+                    "block means (segregation_blocks.csv) and per-phase eps_s against height (profiles.csv)"))
       .add(ParamSpec::string("radial_distribution")
                .options({"carnahan_starling", "lebowitz"})
                .doc("g0 at contact: Carnahan-Starling (one solids phase; its default) or Lebowitz (the default and "
@@ -415,6 +466,12 @@ void MfmStage::run(StageContext& ctx) const {
     if (initialVolumes[m] > 0.0) summary["solids_volume_change_" + solids[m].name] = now / initialVolumes[m] - 1.0;
   }
   if (totalInitial > 0.0) summary["solids_volume_change"] = totalNow / totalInitial - 1.0;
+  if (setup.segregation) {
+    addAverage(summary, "segregation_percentage", window.at("segregation_percentage"));
+    summary["segregation_small_share"] = setup.segregation->smallShare;
+    writeSegregationBlocks(ctx);
+    if (observed.fieldAverage().frames() > 0) writeProfiles(ctx, observed.fieldAverage().mean(), solids);
+  }
   if (observed.fieldAverage().frames() > 0) {
     core::io::FieldFrameWriter mean(ctx.outputDir() / "mean", stamp);
     const auto path = mean.write(observed.fieldAverage().mean());
@@ -449,6 +506,11 @@ std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
     keys.push_back("solids_volume_change_" + name);
     out.seriesColumns.push_back("mean_height_" + name);
     out.seriesColumns.push_back("solids_volume_" + name);
+  }
+  if (p.contains("segregation")) {
+    keys.push_back("segregation_percentage");
+    keys.push_back("segregation_small_share");
+    out.seriesColumns.push_back("segregation_percentage");
   }
   keys.push_back("closure");
   return out;

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/Error.hpp"
+
 namespace grainbridge::fluid {
 namespace {
 
@@ -62,6 +64,49 @@ TEST(BedMeasures, MixtureMeanHeightIsEq522OverAllSolids) {
   EXPECT_DOUBLE_EQ(heights[1], 0.375);
   EXPECT_DOUBLE_EQ(mixtureMeanHeight(heights, volumes), (0.6 * 0.125 + 0.2 * 0.375) / 0.8);
   EXPECT_DOUBLE_EQ(mixtureMeanHeight({0.1}, {0.0}), 0.0);  // no solids
+}
+
+}  // namespace
+}  // namespace grainbridge::fluid
+
+namespace grainbridge::fluid {
+namespace {
+
+// Eqs. 5.23-5.25 on beds whose heights are known by hand: the mixed start of a binary bed (both
+// phases everywhere in the bed) gives s_p = 0; the same inventory fully separated, the large
+// particles below the small with their interface on a cell face, gives s_p = 1, at equal and at
+// unequal shares x_small.
+TEST(BedMeasures, SegregationPercentageIsZeroMixedAndOneSeparated) {
+  const core::data::GridGeometry geometry = [] {
+    core::data::GridGeometry g;
+    g.spacing = Vec3(0.01, 0.01, 0.015);
+    g.cells = {3, 12, 1};
+    return g;
+  }();
+  const StaggeredGrid grid(geometry);
+  const VerticalAxis up = verticalAxis(Vec3(0.0, -9.81, 0.0));
+  for (const int smallRows : {4, 2}) {  // x_small 1/2 and 1/4 of an 8-row bed
+    const int rows = 8;
+    const double x = static_cast<double>(smallRows) / rows;
+    FlowState mixed(grid, 3), separated(grid, 3);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < rows; ++j) {
+        mixed.phases[1].fraction(i, j, 0) = 0.583 * x;
+        mixed.phases[2].fraction(i, j, 0) = 0.583 * (1.0 - x);
+        (j < rows - smallRows ? separated.phases[2] : separated.phases[1]).fraction(i, j, 0) = 0.583;
+      }
+    }
+    EXPECT_NEAR(solidsVolume(separated, 1), solidsVolume(mixed, 1), 1e-15);
+    EXPECT_NEAR(segregationPercentage(meanParticleHeight(mixed, up, 1), meanParticleHeight(mixed, up, 2), x), 0.0,
+                1e-12)
+        << "x_small " << x;
+    EXPECT_NEAR(
+        segregationPercentage(meanParticleHeight(separated, up, 1), meanParticleHeight(separated, up, 2), x), 1.0,
+        1e-12)
+        << "x_small " << x;
+  }
+  EXPECT_THROW((void)segregationPercentage(0.1, 0.1, 1.0), Error);
+  EXPECT_THROW((void)segregationPercentage(0.1, 0.0, 0.5), Error);
 }
 
 }  // namespace
