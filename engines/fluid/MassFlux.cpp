@@ -24,8 +24,25 @@ double faceFraction(const CellField& fraction, int axis, std::size_t face, doubl
   return std::max(superbeeFraction(fraction, axis, face, u), 0.0);
 }
 
-std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& density, const Boundaries& boundaries) {
+std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& density, const Boundaries& boundaries,
+                                    const OutflowBudget& budget) {
   const StaggeredGrid& grid = boundaries.grid();
+  const CellField& fraction = phase.fraction;
+  // Each face's upwind cell, and superbee's face value split into the upwind cell's value and
+  // the antidiffusive rest; with a budget, each interior cell's antidiffusive outflow rate.
+  std::array<FaceField, 3> value{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)};
+  CellField antidiffusiveOut(grid, 0.0);
+  for (int a = 0; a < grid.dimensions(); ++a) {
+    const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
+    for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+      if (!boundaries.openFace(a, f)) continue;
+      value[static_cast<std::size_t>(a)][f] = faceFraction(fraction, a, f, v[f]);
+      if (budget.start == nullptr) continue;
+      const std::size_t upwind = v[f] >= 0.0 ? f : grid.neighbour(f, a, +1);
+      const double extra = value[static_cast<std::size_t>(a)][f] - std::max(fraction[upwind], 0.0);
+      if (extra > 0.0) antidiffusiveOut[upwind] += std::abs(v[f]) * grid.faceArea(a) * extra;
+    }
+  }
   std::array<FaceField, 3> flux{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)};
   for (int a = 0; a < grid.dimensions(); ++a) {
     const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
@@ -35,7 +52,14 @@ std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& d
       if (!boundaries.openFace(a, f)) continue;
       const double u = v[f];
       const std::size_t upwind = u >= 0.0 ? f : grid.neighbour(f, a, +1);
-      F[f] = density[upwind] * faceFraction(phase.fraction, a, f, u) * u * area;
+      double face = value[static_cast<std::size_t>(a)][f];
+      if (budget.start != nullptr && grid.interior(upwind)) {
+        const double held = std::max((*budget.start)[upwind], 0.0) * grid.cellVolume() / budget.dt;
+        const double upwindValue = std::max(fraction[upwind], 0.0);
+        if (face > upwindValue && antidiffusiveOut[upwind] > held)
+          face = upwindValue + (face - upwindValue) * (held / antidiffusiveOut[upwind]);
+      }
+      F[f] = density[upwind] * face * u * area;
     }
   }
   return flux;

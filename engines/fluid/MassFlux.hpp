@@ -14,8 +14,21 @@ namespace grainbridge::fluid {
 // The face value of eps_m on the face (axis, face), for the velocity `u` on it.
 [[nodiscard]] double faceFraction(const CellField& fraction, int axis, std::size_t face, double u);
 
+// What a solids phase's face values may carry out of each cell over a step: the fraction at the
+// step's start and the step. Without it (the gas) the face values are superbee's.
+struct OutflowBudget {
+  const CellField* start = nullptr;
+  double dt = 0.0;
+};
+
 // F [kg/s] on every face of each active axis, positive along the axis; zero on wall faces.
+// With a budget the faces stay positivity-preserving: superbee's face value is the upwind cell's
+// value plus an antidiffusive part, and where the antidiffusive outflows of an interior cell,
+// sum |v| A (eps_f - eps_c) dt, would exceed what the cell held at the step's start, eps_c^n V,
+// they are scaled down to it (Zalesak's limiting of the outflows alone). The upwind part is
+// implicit and keeps the fraction non-negative by itself (an M-matrix), so then no face carries
+// more out of a cell than the cell holds over the step.
 [[nodiscard]] std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& density,
-                                                  const Boundaries& boundaries);
+                                                  const Boundaries& boundaries, const OutflowBudget& budget = {});
 
 }  // namespace grainbridge::fluid

@@ -15,6 +15,13 @@ namespace {
 
 std::string phaseName(std::size_t m) { return m == 0 ? "gas" : "solids " + std::to_string(m); }
 
+// A solids phase's faces carry no more out of a cell than it held at the step's start (MassFlux);
+// the gas fraction is what the solids leave.
+OutflowBudget outflowBudget(const FlowState& old, std::size_t m, double dt) {
+  if (m == 0 || !(dt > 0.0)) return {};
+  return {&old.phases[m].fraction, dt};
+}
+
 FlowProperties propertiesFor(const StaggeredGrid& grid, std::size_t phases, const FlowModel& model) {
   FlowProperties p;
   for (std::size_t m = 0; m < phases; ++m) {
@@ -150,7 +157,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     // 2. Momentum of every phase, component by component, with the drag eliminated.
     std::vector<std::array<FaceField, 3>> flux;
     for (std::size_t m = 0; m < M; ++m)
-      flux.push_back(massFluxes(state.phases[m], props.phases[m].density, boundaries));
+      flux.push_back(massFluxes(state.phases[m], props.phases[m].density, boundaries, outflowBudget(old, m, dt)));
     std::vector<double> speed(M, settings.velocityScale);
     for (std::size_t m = 0; m < M; ++m) {
       for (int a = 0; a < dims; ++a) {
@@ -203,7 +210,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     for (std::size_t m = 1; m < M; ++m) {
       boundaries.apply(state, &props);
       PhaseFields& phase = state.phases[m];
-      const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries);
+      const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt));
       offerContinuity(worst, phaseName(m), phase.fraction, old.phases[m].fraction, props.phases[m].density,
                       oldProps.phases[m].density, solidsFlux, dt);
       std::array<const FaceField*, 3> e{nullptr, nullptr, nullptr};

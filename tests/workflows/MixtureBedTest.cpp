@@ -132,4 +132,25 @@ TEST(MixtureBed, BinarySmokeWritesTheSegregationOutputsAndKeepsEachPhase) {
   EXPECT_GT(profiles.at("ep_s_small")[5], 0.1);
   EXPECT_GT(profiles.at("ep_s_large")[5], 0.1);
   EXPECT_LT(profiles.at("ep_s_small").back() + profiles.at("ep_s_large").back(), 1e-6);
+  // Positivity-preserving solids faces (MassFlux): before them undershoots down to -1e-4 were
+  // tolerated (and failed steps beyond). What is left, about -1e-9 in the first empty row above the
+  // rising bed, is what the outer iterations leave in cells far below the continuity residual's
+  // scale (the phase's inventory): it does not shrink with the tolerance (1e-4 to 1e-6 all leave
+  // -1.0e-9 to -1.4e-9), so issue 26's -1e-12 is not met yet; this holds the gain.
+  for (const auto& e : fs::directory_iterator(bed / "frames")) {
+    if (e.path().extension() != ".h5") continue;
+    const auto frame = core::io::readFieldFrame(e.path());
+    for (const auto& phase : frame.solids) {
+      for (std::size_t c = 0; c < phase.ep_s.size(); ++c)
+        EXPECT_GE(phase.ep_s[c], -1e-8) << phase.name << " cell " << c % 15 << "," << c / 15 << " in " << e.path().filename();
+    }
+  }
+  // bed_compare draws s_p against time with the 1 s means, and the profiles.
+  for (const char* figure : {"segregation_percentage.svg", "profiles.svg"}) {
+    bool found = false;
+    for (const auto& e : fs::directory_iterator(work.path() / "results/goldschmidt-binary-smoke/beds")) {
+      if (e.is_directory() && fs::exists(e.path() / figure)) found = true;
+    }
+    EXPECT_TRUE(found) << figure;
+  }
 }

@@ -412,6 +412,47 @@ void BedCompareStage::run(StageContext& ctx) const {
   }
   addFigure(report::drawFigure(height, ctx.outputDir(), "mean_height"), "Mean particle height against time");
   addFigure(report::drawFigure(drop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");
+
+  // Binary beds (a `segregation` key): s_p of every run against time with its 1 s block means,
+  // and each phase's solid fraction against height over the window (Figs. 5.6-5.8).
+  report::Figure segregation{"Segregation percentage (Eqs. 5.23-5.25): every sample and 1 s means", {"time", "s"},
+                             {"segregation percentage s_p", "–"}, {}};
+  report::Figure profiles{"Time-averaged solid fraction over the width (Fig. 5.6)", {"solid fraction", "–"},
+                          {"height", "m"}, {}};
+  variants.clear();
+  for (const auto& bed : beds) {
+    const auto series = bed.instance->seriesColumns();
+    const auto sp = series.find("segregation_percentage");
+    if (sp == series.end()) continue;
+    const int variant = variants[bed.closure]++;
+    segregation.series.push_back(
+        {bed.label, bed.closure, report::Series::Style::Line, variant, series.at("time"), sp->second, {}});
+    for (const auto& file : bed.instance->artifactsOfKind("segregation_blocks_csv")) {
+      const auto blocks = report::readNumericCsv(file);
+      std::vector<double> middle;
+      for (std::size_t k = 0; k < blocks.at("block_start").size(); ++k)
+        middle.push_back(0.5 * (blocks.at("block_start")[k] + blocks.at("block_end")[k]));
+      segregation.series.push_back({bed.label + ", 1 s means", bed.closure, report::Series::Style::Points, variant,
+                                    middle, blocks.at("segregation_percentage"), {}});
+    }
+    for (const auto& file : bed.instance->artifactsOfKind("profiles_csv")) {
+      const auto columns = report::readNumericCsv(file);
+      int phaseVariant = 0;
+      for (const auto& [name, values] : columns) {
+        if (name.rfind("ep_s_", 0) != 0) continue;
+        profiles.series.push_back({bed.label + ", " + name.substr(5), bed.closure, report::Series::Style::Line,
+                                   2 * variant + phaseVariant++, values, columns.at("height"), {}});
+      }
+    }
+  }
+  if (!segregation.series.empty()) {
+    addFigure(report::drawFigure(segregation, ctx.outputDir(), "segregation_percentage"),
+              "Segregation percentage against time: the samples (lines) and their 1 s means (points)");
+  }
+  if (!profiles.series.empty()) {
+    addFigure(report::drawFigure(profiles, ctx.outputDir(), "profiles"),
+              "Each phase's time-averaged solid fraction over the width against height");
+  }
   ctx.setFindings(findings);
 
   report::writeFindingsPage(findings, "beds.csv", ctx.outputDir() / "bed_compare.html");
