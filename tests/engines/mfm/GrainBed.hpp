@@ -7,6 +7,7 @@
 
 #include "engines/mfm/InitialRegions.hpp"
 #include "engines/mfm/MfmEngine.hpp"
+#include "engines/mfm/SolidsPairs.hpp"
 
 namespace grainbridge::testing {
 
@@ -85,6 +86,25 @@ inline GrainBed grainBed(const GrainBedSpec& s) {
                          {Vec3(0.0, bedTop, 0.0), top, {0.0}, {Vec3(0.0, s.inflow, 0.0), Vec3::Zero()}}};
   bed.initial.referencePressure = kOutletPressure;
   bed.initial.perturbation = s.perturbation;
+  return bed;
+}
+
+// The same bed as a binary mixture: half its solids volume a second, smaller grain (1.6 mm, same
+// density), every region's fraction split evenly, Lebowitz's g0 and Eq. 3.18's drag between them.
+inline GrainBed binaryGrainBed(const GrainBedSpec& s) {
+  GrainBed bed = grainBed(s);
+  auto& model = bed.setup.model;
+  model.solids.insert(model.solids.begin(), mfm::SolidsPhase{"small", 1.6e-3, kGrainDensity, 0.9});
+  model.radialDistribution = mfm::RadialDistributionModel::Lebowitz;
+  model.solidsPairs = mfm::solidsPairsFor(model.solids, {}).pairs;
+  for (auto& patch : bed.setup.patches) {
+    if (!patch.phases.empty()) patch.phases.push_back(fluid::PhaseInflow{0.0, Vec3::Zero()});
+  }
+  for (auto& region : bed.initial.regions) {
+    const double eps = region.solidsFractions.at(0);
+    region.solidsFractions = {eps / 2.0, eps / 2.0};
+    region.velocities.push_back(Vec3::Zero());
+  }
   return bed;
 }
 
