@@ -4,6 +4,7 @@
 
 #include "core/Error.hpp"
 #include "engines/closures/OutOfRange.hpp"
+#include "engines/closures/RadialDistribution.hpp"
 
 namespace grainbridge::closures {
 
@@ -14,6 +15,8 @@ void refuse(std::string_view what, std::string_view expected, double value) {
 }
 
 }  // namespace
+
+double contactG0(const KineticState& s) { return s.g0 > 0.0 ? s.g0 : carnahanStarlingG0(s.solidFraction); }
 
 void validate(const KineticState& s) {
   // Each test is written as !(valid) so that NaN is refused too; infinities are refused

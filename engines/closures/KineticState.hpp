@@ -1,7 +1,8 @@
 #pragma once
 // Input and output of a kinetic-theory (KTGF) closure for one solids phase, in SI units; a phase
-// of a mixture carries the mixture's contact sums (below). Every model (Lun1984, SyamlalAlgebraic) maps a KineticState to a KineticTransport, so
-// the compare stage can put DEM-extracted values and each model's prediction side by side.
+// of a mixture carries the mixture's contact sums (below). Every model (Lun1984,
+// SyamlalAlgebraic) maps a KineticState to a KineticTransport, so the compare stage can put
+// DEM-extracted values and each model's prediction side by side.
 namespace grainbridge::closures {
 
 struct KineticState {
@@ -38,6 +39,10 @@ struct KineticTransport {
   // LAMBDA_s): lambda_s = xi_s - 2 mu_s / 3, so it can be negative.
   [[nodiscard]] double secondViscosity() const { return bulkViscosity - 2.0 / 3.0 * shearViscosity; }
 };
+
+// g0 at contact of the state's phase with its own kind: the given g0, or Carnahan-Starling's of
+// solidFraction when none is given.
+[[nodiscard]] double contactG0(const KineticState& state);
 
 // Throws grainbridge::Error naming the first quantity out of range and its value (NaN included):
 // solid fraction outside [0, 1), negative granular temperature, diameter or density not

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "engines/closures/RadialDistribution.hpp"
 
 namespace grainbridge::closures {
 
@@ -50,8 +49,8 @@ KineticTransport Lun1984::evaluate(const KineticState& s) const {
   const double beta = s.gasDragCoefficient;
   const double eta = 0.5 * (1.0 + e);  // Lun et al.'s eta
   const bool mixture = s.g0 > 0.0;
-  const double g0 = mixture ? s.g0 : carnahanStarlingG0(eps);  // g0_mm
-  const double epsG0 = mixture ? s.contactSum : eps * g0;       // sum_l eps_l g0_ml
+  const double g0 = contactG0(s);                         // g0_mm
+  const double epsG0 = mixture ? s.contactSum : eps * g0;  // sum_l eps_l g0_ml
   const double dissipationSum = mixture ? s.dissipationSum : epsG0;
   const auto gasReduced = [&](double dilute, double factor) {
     return mixture ? gasModifiedInMixture(dilute, factor, beta, rho, eps, g0, epsG0, theta)

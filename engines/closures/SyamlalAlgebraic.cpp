@@ -3,7 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "engines/closures/RadialDistribution.hpp"
 
 namespace grainbridge::closures {
 
@@ -17,7 +16,7 @@ SyamlalCoefficients SyamlalAlgebraic::coefficients(const KineticState& s) const 
   const double e = s.restitution;
   const double rho = s.density;
   const double d = s.diameter;
-  const double g0 = s.g0 > 0.0 ? s.g0 : carnahanStarlingG0(s.solidFraction);
+  const double g0 = contactG0(s);
   const double epsG0 = s.solidFraction * g0;
   // The only difference between the two forms (see the header).
   const double leading = params.viscosityForm == SyamlalViscosityForm::Printed ? 1.0 : 0.5 * (3.0 * e + 1.0);
@@ -39,7 +38,7 @@ KineticTransport SyamlalAlgebraic::evaluate(const KineticState& s) const {
   const double theta = s.granularTemperature;
   const double sqrtTheta = std::sqrt(theta);
   const double e = s.restitution;
-  const double epsG0 = eps * (s.g0 > 0.0 ? s.g0 : carnahanStarlingG0(eps));
+  const double epsG0 = eps * contactG0(s);
 
   KineticTransport out;
   out.pressure = k.k1 * eps * eps * theta;  // Eq. 3.21

@@ -1,6 +1,8 @@
 #include "engines/fluid/MassFlux.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include "engines/fluid/SuperbeeOnGrid.hpp"
 
@@ -28,22 +30,32 @@ std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& d
                                     const OutflowBudget& budget) {
   const StaggeredGrid& grid = boundaries.grid();
   const CellField& fraction = phase.fraction;
-  // Each face's upwind cell, and superbee's face value split into the upwind cell's value and
-  // the antidiffusive rest; with a budget, each interior cell's antidiffusive outflow rate.
-  std::array<FaceField, 3> value{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)};
-  CellField antidiffusiveOut(grid, 0.0);
+  const auto upwindOf = [&](int a, std::size_t f, double u) { return u >= 0.0 ? f : grid.neighbour(f, a, +1); };
+  // First superbee's face values, held in the flux fields; with a budget, each interior cell's
+  // antidiffusive outflow rate (the face value beyond the upwind cell's own).
+  std::array<FaceField, 3> flux{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)};
   for (int a = 0; a < grid.dimensions(); ++a) {
     const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
+    FaceField& face = flux[static_cast<std::size_t>(a)];
     for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
-      if (!boundaries.openFace(a, f)) continue;
-      value[static_cast<std::size_t>(a)][f] = faceFraction(fraction, a, f, v[f]);
-      if (budget.start == nullptr) continue;
-      const std::size_t upwind = v[f] >= 0.0 ? f : grid.neighbour(f, a, +1);
-      const double extra = value[static_cast<std::size_t>(a)][f] - std::max(fraction[upwind], 0.0);
-      if (extra > 0.0) antidiffusiveOut[upwind] += std::abs(v[f]) * grid.faceArea(a) * extra;
+      if (boundaries.openFace(a, f)) face[f] = faceFraction(fraction, a, f, v[f]);
     }
   }
-  std::array<FaceField, 3> flux{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)};
+  std::optional<CellField> antidiffusiveOut;
+  if (budget.start != nullptr) {
+    antidiffusiveOut.emplace(grid, 0.0);
+    for (int a = 0; a < grid.dimensions(); ++a) {
+      const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
+      const FaceField& face = flux[static_cast<std::size_t>(a)];
+      for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+        if (!boundaries.openFace(a, f)) continue;
+        const std::size_t upwind = upwindOf(a, f, v[f]);
+        const double extra = face[f] - std::max(fraction[upwind], 0.0);
+        if (extra > 0.0) (*antidiffusiveOut)[upwind] += std::abs(v[f]) * grid.faceArea(a) * extra;
+      }
+    }
+  }
+  // Then each face value, limited where its upwind cell's budget requires, becomes its flux.
   for (int a = 0; a < grid.dimensions(); ++a) {
     const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
     FaceField& F = flux[static_cast<std::size_t>(a)];
@@ -51,13 +63,13 @@ std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& d
     for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
       if (!boundaries.openFace(a, f)) continue;
       const double u = v[f];
-      const std::size_t upwind = u >= 0.0 ? f : grid.neighbour(f, a, +1);
-      double face = value[static_cast<std::size_t>(a)][f];
-      if (budget.start != nullptr && grid.interior(upwind)) {
+      const std::size_t upwind = upwindOf(a, f, u);
+      double face = F[f];
+      if (antidiffusiveOut && grid.interior(upwind)) {
         const double held = std::max((*budget.start)[upwind], 0.0) * grid.cellVolume() / budget.dt;
         const double upwindValue = std::max(fraction[upwind], 0.0);
-        if (face > upwindValue && antidiffusiveOut[upwind] > held)
-          face = upwindValue + (face - upwindValue) * (held / antidiffusiveOut[upwind]);
+        const double out = (*antidiffusiveOut)[upwind];
+        if (face > upwindValue && out > held) face = upwindValue + (face - upwindValue) * (held / out);
       }
       F[f] = density[upwind] * face * u * area;
     }

@@ -42,14 +42,22 @@ double closureSolidFraction(const fluid::FlowState& state, std::size_t m, std::s
   return total > room ? eps * (room / total) : eps;
 }
 
+// Every solids phase's closure fraction in cell c, [l - 1] for phase l.
+std::vector<double> closureSolidFractions(const fluid::FlowState& state, std::size_t c) {
+  std::vector<double> fractions;
+  for (std::size_t l = 1; l < state.phases.size(); ++l) fractions.push_back(closureSolidFraction(state, l, c));
+  return fractions;
+}
+
 // Phase m's share of the plastic viscosity (Eq. 3.27). Schaeffer's mu^p is written with P*, not
 // eps_sm P* (PlasticRegime.hpp), so each phase of a mixture takes eps_sm / eps_s of it, as MFIX
 // does (calc_mu_s.f: EP_s(M)/SUM_EPS_CP), and identical phases add up to one; one phase takes it all.
 double plasticViscosityShare(const fluid::FlowState& state, std::size_t m, std::size_t c) {
   if (state.phases.size() == 2) return 1.0;
+  const std::vector<double> fractions = closureSolidFractions(state, c);
   double total = 0.0;
-  for (std::size_t l = 1; l < state.phases.size(); ++l) total += closureSolidFraction(state, l, c);
-  return total > 0.0 ? closureSolidFraction(state, m, c) / total : 0.0;
+  for (double eps : fractions) total += eps;
+  return total > 0.0 ? fractions[m - 1] / total : 0.0;
 }
 
 // The cell-centred velocity of a phase.
@@ -83,6 +91,7 @@ MultiFluidModel::MultiFluidModel(MultiFluidParams params)
     : params_(std::move(params)),
       dissipationScale_(params_.solids.size() + 1, 1.0),
       wallEffective_(params_.solids.size() + 1) {
+  for (const SolidsPhase& s : params_.solids) diameters_.push_back(s.diameter);
   if (params_.granularEnergy == GranularEnergyForm::Algebraic && (params_.rotation || params_.wall)) {
     throw Error(
         "multi-fluid model: the rotation model and Johnson-Jackson walls need the granular-energy equation "
@@ -130,16 +139,12 @@ std::vector<std::array<std::size_t, 2>> MultiFluidModel::solidsPairs() const {
 
 void MultiFluidModel::evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& p,
                                          std::size_t c) const {
-  std::vector<double> fractions, diameters;
-  for (std::size_t m = 1; m < state.phases.size(); ++m) {
-    fractions.push_back(closureSolidFraction(state, m, c));
-    diameters.push_back(params_.solids[m - 1].diameter);
-  }
+  const std::vector<double> fractions = closureSolidFractions(state, c);
   for (std::size_t k = 0; k < params_.solidsPairs.size(); ++k) {
     const SolidsPair& pair = params_.solidsPairs[k];
     const SolidsPhase& l = params_.solids[pair.l - 1];
     const SolidsPhase& m = params_.solids[pair.m - 1];
-    const double g0 = closures::lebowitzG0(fractions, diameters, pair.l - 1, pair.m - 1);
+    const double g0 = closures::lebowitzG0(fractions, diameters_, pair.l - 1, pair.m - 1);
     const double relative =
         (centredVelocity(state.phases[pair.l], c) - centredVelocity(state.phases[pair.m], c)).norm();
     p.solidsDrag[k].coefficient[c] = closures::SolidsSolidsDrag{pair.drag}.evaluate(
@@ -224,18 +229,15 @@ MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState
 
 void MultiFluidModel::setMixtureContacts(const fluid::FlowState& state, std::size_t m, std::size_t c, double shift,
                                          closures::KineticState& ks) const {
-  std::vector<double> fractions, diameters;
-  for (std::size_t l = 1; l < state.phases.size(); ++l) {
-    fractions.push_back(closureSolidFraction(state, l, c) + (l == m ? shift : 0.0));
-    diameters.push_back(params_.solids[l - 1].diameter);
-  }
+  std::vector<double> fractions = closureSolidFractions(state, c);
   const std::size_t own = m - 1;
-  ks.g0 = closures::lebowitzG0(fractions, diameters, own, own);
+  fractions[own] += shift;
+  ks.g0 = closures::lebowitzG0(fractions, diameters_, own, own);
   ks.contactSum = 0.0;
   ks.dissipationSum = 0.0;
   for (std::size_t l = 0; l < fractions.size(); ++l) {
-    ks.contactSum += fractions[l] * closures::lebowitzG0(fractions, diameters, own, l);
-    ks.dissipationSum += fractions[l] * closures::lebowitzG0(fractions, diameters, l, l);
+    ks.contactSum += fractions[l] * closures::lebowitzG0(fractions, diameters_, own, l);
+    ks.dissipationSum += fractions[l] * closures::lebowitzG0(fractions, diameters_, l, l);
   }
 }
 

@@ -177,6 +177,7 @@ class MultiFluidModel final : public fluid::FlowModel {
 
   MultiFluidParams params_;
   std::vector<double> dissipationScale_;              // per phase, [0] unused
+  std::vector<double> diameters_;                     // d_p of each solids phase, [m - 1] (Lebowitz's g0)
   std::vector<std::optional<double>> wallEffective_;  // per phase, [0] unused
 };
 
