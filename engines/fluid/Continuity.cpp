@@ -1,6 +1,7 @@
 #include "engines/fluid/Continuity.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engines/fluid/MassFlux.hpp"
 #include "engines/fluid/Momentum.hpp"
@@ -102,6 +103,41 @@ StencilSystem assembleFractionCorrection(const FlowState& state, const FlowState
     }
   }
   return system;
+}
+
+void solveFractionNonNegative(PhaseFields& phase, const CellField& oldFraction, const CellField& density,
+                              const CellField& oldDensity, const std::array<FaceField, 3>& flux,
+                              const Boundaries& boundaries, double dt) {
+  const StaggeredGrid& grid = phase.fraction.grid();
+  const CellField& eps = phase.fraction;
+  StencilSystem system(grid);
+  const double volumeRate = grid.cellVolume() / dt;
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const std::size_t c = grid.index(i, j, k);
+        system.ap(c) += density[c] * volumeRate;
+        system.b(c) = oldDensity[c] * oldFraction[c] * volumeRate;
+      }
+    }
+  }
+  for (int a = 0; a < grid.dimensions(); ++a) {
+    const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
+    const FaceField& F = flux[static_cast<std::size_t>(a)];
+    for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+      if (!boundaries.openFace(a, f)) continue;
+      const std::size_t high = grid.neighbour(f, a, +1);
+      const bool forward = v[f] >= 0.0;
+      const std::size_t upwind = forward ? f : high, downwind = forward ? high : f;
+      const double coefficient = eps[upwind] > 0.0 ? std::abs(F[f]) / eps[upwind]
+                                                   : density[upwind] * grid.faceArea(a) * std::abs(v[f]);
+      // Out of the upwind cell (its diagonal), into the downwind one (its neighbour slot facing
+      // upwind); a ghost on either side is a known value or no equation.
+      if (grid.interior(upwind)) system.ap(upwind) += coefficient;
+      if (grid.interior(downwind)) system.anb(downwind, forward ? 2 * a : 2 * a + 1) += coefficient;
+    }
+  }
+  system.solve(phase.fraction);
 }
 
 }  // namespace grainbridge::fluid

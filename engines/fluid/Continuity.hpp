@@ -51,4 +51,18 @@ namespace grainbridge::fluid {
                                                        const std::array<FaceField, 3>& flux,
                                                        const std::array<const FaceField*, 3>& e, double dt);
 
+// Phase m's continuity solved once more, implicitly, with the step's converged faces: each face's
+// flux |F| = c_f eps_upwind, c_f = |F| / eps*_upwind from the converged iterate eps* (rho A |v|
+// where eps*_upwind <= 0), so
+//   rho_P dV/dt eps_P + sum_out c_f eps_P - sum_in c_f eps_nb = rho_P^0 eps_P^0 dV/dt.
+// The matrix is an M-matrix (column sums rho dV/dt > 0), so eps >= 0 wherever eps^0 >= 0 and
+// the inflowing ghosts are >= 0; the faces telescope, so the phase's mass balance is exact. At a
+// converged iterate eps = eps* up to the step's continuity residual, which this removes: the
+// SIMPLE loop meets each cell's continuity to the tolerance only, and a thin cell the solids
+// are leaving would otherwise end the step a residual below zero. Overwrites the interior of
+// `phase.fraction`; `flux` are massFluxes of the phase at eps*. Transient steps only (dt > 0).
+void solveFractionNonNegative(PhaseFields& phase, const CellField& oldFraction, const CellField& density,
+                              const CellField& oldDensity, const std::array<FaceField, 3>& flux,
+                              const Boundaries& boundaries, double dt);
+
 }  // namespace grainbridge::fluid

@@ -126,6 +126,32 @@ std::string firstBadValue(const FlowState& state, const SimpleSettings& settings
   return {};
 }
 
+// The gas fraction of every interior cell: what the solids phases leave.
+void gasFromSolids(FlowState& state) {
+  const StaggeredGrid& grid = state.grid();
+  for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
+    if (!grid.interior(c)) continue;
+    double solids = 0.0;
+    for (std::size_t m = 1; m < state.phases.size(); ++m) solids += state.phases[m].fraction[c];
+    state.phases[0].fraction[c] = 1.0 - solids;
+  }
+}
+
+// A converged step's solids fractions, each phase's continuity solved implicitly with the
+// converged faces (Continuity.hpp): exact mass balance and no undershoot below zero, which the
+// iteration's tolerance alone leaves in thin cells; the gas is what the solids leave.
+void closeSolidsContinuity(FlowState& state, const FlowState& old, const FlowProperties& props,
+                           const FlowProperties& oldProps, const Boundaries& boundaries, double dt) {
+  for (std::size_t m = 1; m < state.phases.size(); ++m) {
+    PhaseFields& phase = state.phases[m];
+    const auto flux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt));
+    solveFractionNonNegative(phase, old.phases[m].fraction, props.phases[m].density, oldProps.phases[m].density, flux,
+                             boundaries, dt);
+  }
+  gasFromSolids(state);
+  boundaries.apply(state, &props);
+}
+
 StepResult iterate(FlowState& state, const FlowState& old, double dt, const FlowModel& model,
                    const Boundaries& boundaries, const SimpleSettings& settings) {
   const StaggeredGrid& grid = state.grid();
@@ -256,14 +282,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
         }
       }
     }
-    if (M > 1) {
-      for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
-        if (!grid.interior(c)) continue;
-        double solids = 0.0;
-        for (std::size_t m = 1; m < M; ++m) solids += state.phases[m].fraction[c];
-        state.phases[0].fraction[c] = 1.0 - solids;
-      }
-    }
+    if (M > 1) gasFromSolids(state);
 
     // 5. The model's own transport equations (granular energy).
     boundaries.apply(state, &props);
@@ -282,6 +301,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     if (worst.value < settings.tolerance) {
       result.converged = true;
       boundaries.apply(state, &props);
+      if (dt > 0.0 && M > 1) closeSolidsContinuity(state, old, props, oldProps, boundaries, dt);
       return result;
     }
   }

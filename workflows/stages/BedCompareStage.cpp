@@ -2,17 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <sstream>
 
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/io/FieldFrameReader.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/FrameMaps.hpp"
-#include "workflows/report/CsvField.hpp"
+#include "workflows/report/BedFigures.hpp"
+#include "workflows/report/BedFindings.hpp"
 #include "workflows/report/FindingsPage.hpp"
-#include "workflows/report/NumericCsv.hpp"
 #include "workflows/report/Plot.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -80,15 +78,6 @@ struct Bed {
   }
   [[nodiscard]] bool matches(const Reference& r) const { return matchesRun(r.match, instance->stage(), written); }
 };
-
-std::string percent(double relative) {
-  return (relative >= 0 ? "+" : "−") + core::humanNumber(std::abs(100.0 * relative), 2) + " %";
-}
-
-std::string withError(double v, double err, int significant = 4) {
-  if (!std::isfinite(v)) return "–";
-  return core::humanNumber(v, significant) + (std::isfinite(err) && err > 0 ? " ± " + core::humanNumber(err, 2) : "");
-}
 
 std::string lastComponent(const std::string& pointer) {
   const auto slash = pointer.rfind('/');
@@ -259,83 +248,44 @@ void BedCompareStage::run(StageContext& ctx) const {
     }
   }
 
-  // beds.csv: every number, one row per run and reference it matches (a run without any: one row).
-  std::ostringstream csv;
-  csv << "run,closure,mean_height,mean_height_err,pressure_drop,pressure_drop_err,dp_frequency,dp_amplitude,"
-         "table_coverage_cell_steps,table_coverage_solids,solver_steps,retries,reference,reference_kind,"
-         "reference_height,deviation\n";
-  // Full precision (read back by programs); a value the run did not record (a coverage under
-  // ktgf, a frequency of a series too short) is an empty field.
-  auto number = [](double v) { return std::isfinite(v) ? core::roundTripText(v) : std::string(); };
-  auto runFields = [&](const Bed& bed) {
-    const std::string& dp = bed.dp;
-    std::string out = report::csvField(bed.label) + ',' + bed.closure;
-    for (const std::string& k : {std::string("mean_height"), std::string("mean_height_err"), dp, dp + "_err",
-                                 dp + "_frequency", dp + "_amplitude", std::string("table_coverage_cell_steps"),
-                                 std::string("table_coverage_solids"), std::string("solver_steps"),
-                                 std::string("retries")}) {
-      out += ',' + number(bed.value(k));
+  // The report reads each run's products alone (report/BedRun): its summary, series and tables.
+  std::vector<report::BedRun> runs;
+  for (const auto& bed : beds) {
+    report::BedRun run;
+    run.label = bed.label;
+    run.closure = bed.closure;
+    run.meanHeight = bed.value("mean_height");
+    run.meanHeightError = bed.value("mean_height_err");
+    for (const auto& r : references) {
+      if (bed.matches(r)) run.references.push_back({r.label, r.kind, r.height});
     }
-    return out;
-  };
-  report::Findings findings;
-  findings.title = p.at("title").get<std::string>();
-  findings.details = "bed_compare.html";
+    run.series = bed.instance->seriesColumns();
+    for (const auto& phase : bed.instance->phases()) run.phases.push_back(phase.name);
+    run.pressureDrop = bed.dp;
+    run.segregationBlocks = bed.instance->artifactsOfKind("segregation_blocks_csv");
+    run.profiles = bed.instance->artifactsOfKind("profiles_csv");
+    for (const auto& [column, key] : std::vector<std::pair<std::string, std::string>>{
+             {"pressure_drop", bed.dp},
+             {"pressure_drop_err", bed.dp + "_err"},
+             {"dp_frequency", bed.dp + "_frequency"},
+             {"dp_amplitude", bed.dp + "_amplitude"},
+             {"table_coverage_cell_steps", "table_coverage_cell_steps"},
+             {"table_coverage_solids", "table_coverage_solids"},
+             {"solver_steps", "solver_steps"},
+             {"retries", "retries"},
+             {"segregation_percentage", "segregation_percentage"},
+             {"segregation_percentage_err", "segregation_percentage_err"}}) {
+      run.values[column] = bed.value(key);
+    }
+    runs.push_back(std::move(run));
+  }
   std::vector<std::string> referenceLabels;
   for (const auto& r : references) {
     if (std::find(referenceLabels.begin(), referenceLabels.end(), r.label) == referenceLabels.end())
       referenceLabels.push_back(r.label);
   }
-  const bool anyTable = std::any_of(beds.begin(), beds.end(), [](const Bed& b) { return b.closure == "table"; });
-  findings.columns = {"run", "closure", "mean height [m]"};
-  for (const auto& l : referenceLabels) findings.columns.push_back("vs " + l);
-  findings.columns.emplace_back("pressure drop [Pa]");
-  findings.columns.emplace_back("Δp frequency [Hz]");
-  if (anyTable) findings.columns.emplace_back("table coverage (cell-steps / solids)");
-  std::ostringstream headline;
-  json summary = {{"beds", beds.size()}};
-  for (const auto& bed : beds) {
-    const double h = bed.value("mean_height"), hErr = bed.value("mean_height_err");
-    const std::string& dpKey = bed.dp;
-    const double frequency = bed.value(dpKey + "_frequency");
-    std::vector<std::string> row = {bed.label, bed.closure, withError(h, hErr)};
-    std::ostringstream compared;
-    bool matchedAny = false;
-    for (const auto& l : referenceLabels) {
-      std::string cell = "–";
-      for (const auto& r : references) {
-        if (r.label != l || !bed.matches(r)) continue;
-        const double deviation = (h - r.height) / r.height;
-        cell = core::humanNumber(r.height, 4) + " m: " + percent(deviation);
-        compared << (compared.tellp() > 0 ? "; " : "") << r.label << " " << core::humanNumber(r.height, 4)
-                 << " m: " << percent(deviation);
-        csv << runFields(bed) << ',' << report::csvField(r.label) << ',' << r.kind << ',' << number(r.height) << ','
-            << number(deviation) << '\n';
-        matchedAny = true;
-      }
-      row.push_back(cell);
-    }
-    if (!matchedAny) {
-      csv << runFields(bed) << ",,,,\n";
-    }
-    row.push_back(withError(bed.value(dpKey), bed.value(dpKey + "_err")));
-    row.push_back(std::isfinite(frequency) ? core::humanNumber(frequency, 3) : "–");
-    std::string coverage;
-    if (bed.closure == "table") {
-      coverage = core::humanNumber(100.0 * bed.value("table_coverage_cell_steps"), 3) + " % / " +
-                 core::humanNumber(100.0 * bed.value("table_coverage_solids"), 3) + " %";
-    }
-    if (anyTable) row.push_back(bed.closure == "table" ? coverage : "–");
-    findings.rows.push_back(std::move(row));
-    headline << bed.label << ": mean particle height " << withError(h, hErr) << " m";
-    if (compared.tellp() > 0) headline << " (" << compared.str() << ")";
-    if (bed.closure == "table") headline << ", the table covering " << coverage << " of the cell-steps / solids";
-    headline << ". ";
-  }
-  headline << "Time-averaged over each run's averaging window, errors by block averaging; deviation = (run − "
-              "value) / value.";
-  findings.headline = headline.str();
-  core::writeFileAtomically(ctx.outputDir() / "beds.csv", csv.str());
+  report::Findings findings = report::bedFindings(runs, referenceLabels, p.at("title").get<std::string>());
+  core::writeFileAtomically(ctx.outputDir() / "beds.csv", report::bedsCsv(runs, referenceLabels));
   ctx.addArtifact("beds.csv", "csv");
 
   // Figures: the maps side by side, then the height and the pressure drop against time.
@@ -354,110 +304,25 @@ void BedCompareStage::run(StageContext& ctx) const {
                                   std::max(0.6, highest), ctx.outputDir(), "solid_fraction_maps"),
             "Time-averaged solid fraction (all solids phases), one panel per run");
 
-  // The time-averaged heights per run (the table's rows, in order) beside the reference values
-  // matched to each: one legend entry per closure and per reference label.
-  report::Figure averaged{"Time-averaged mean particle height (Eq. 5.22)", {"run (row of the table)", "–"},
-                          {"mean particle height", "m"}, {}};
-  std::map<std::string, report::Series> byClosure, byReference;
-  for (std::size_t b = 0; b < beds.size(); ++b) {
-    const Bed& bed = beds[b];
-    auto& run = byClosure[bed.closure];
-    run.label = "runs, " + bed.closure;
-    run.model = bed.closure;
-    run.style = report::Series::Style::PointsWithErrors;
-    run.x.push_back(static_cast<double>(b + 1));
-    run.y.push_back(bed.value("mean_height"));
-    run.yError.push_back(std::isfinite(bed.value("mean_height_err")) ? bed.value("mean_height_err") : 0.0);
-    for (const auto& r : references) {
-      if (!bed.matches(r)) continue;
-      const bool first = !byReference.contains(r.label);
-      auto& ref = byReference[r.label];
-      if (first) {  // a point shape per reference label, kept for all its runs
-        ref.label = r.label;
-        ref.model = r.kind;
-        ref.style = report::Series::Style::Points;
-        ref.variant = static_cast<int>(byReference.size());
-      }
-      ref.x.push_back(static_cast<double>(b + 1));
-      ref.y.push_back(r.height);
-    }
-  }
-  for (auto& [k, series] : byClosure) averaged.series.push_back(std::move(series));
-  for (auto& [k, series] : byReference) averaged.series.push_back(std::move(series));
-  addFigure(report::drawFigure(averaged, ctx.outputDir(), "mean_height_averaged"),
+  addFigure(report::drawFigure(report::averagedHeightFigure(runs), ctx.outputDir(), "mean_height_averaged"),
             "Time-averaged mean particle height per run (block-averaging errors) beside the reference values");
-
-  report::Figure height{"Mean particle height (Eq. 5.22)", {"time", "s"}, {"mean particle height", "m"}, {}};
-  report::Figure drop{"Pressure drop" + (tap.empty() ? std::string() : " (" + tap + ")"), {"time", "s"},
-                      {"pressure drop", "Pa"}, {}};
-  std::map<std::string, int> variants;  // per closure: a dash per run
-  for (const auto& bed : beds) {
-    const auto series = bed.instance->seriesColumns();
-    const auto time = series.find("time");
-    if (time == series.end()) throw Error("bed_compare: the series of " + bed.label + " has no time");
-    // One line per solids phase (a mixture's segregate), each with the phase's name beside the run's.
-    const auto phases = bed.instance->phases();
-    const int bedVariant = variants[bed.closure]++;
-    int variant = bedVariant;
-    for (std::size_t m = 0; m < phases.size(); ++m) {
-      const auto h = series.find("mean_height_" + phases[m].name);
-      if (h == series.end()) continue;
-      if (m > 0) variant = variants[bed.closure]++;
-      const std::string label = bed.label + (phases.size() > 1 ? ", " + phases[m].name : "");
-      height.series.push_back({label, bed.closure, report::Series::Style::Line, variant, time->second, h->second, {}});
-    }
-    if (const auto dp = series.find(bed.dp); dp != series.end()) {
-      drop.series.push_back({bed.label, bed.closure, report::Series::Style::Line, bedVariant, time->second, dp->second, {}});
-    }
-  }
-  addFigure(report::drawFigure(height, ctx.outputDir(), "mean_height"), "Mean particle height against time");
-  addFigure(report::drawFigure(drop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");
-
-  // Binary beds (a `segregation` key): s_p of every run against time with its 1 s block means,
-  // and each phase's solid fraction against height over the window (Figs. 5.6-5.8).
-  report::Figure segregation{"Segregation percentage (Eqs. 5.23-5.25): every sample and 1 s means", {"time", "s"},
-                             {"segregation percentage s_p", "–"}, {}};
-  report::Figure profiles{"Time-averaged solid fraction over the width (Fig. 5.6)", {"solid fraction", "–"},
-                          {"height", "m"}, {}};
-  variants.clear();
-  for (const auto& bed : beds) {
-    const auto series = bed.instance->seriesColumns();
-    const auto sp = series.find("segregation_percentage");
-    if (sp == series.end()) continue;
-    const int variant = variants[bed.closure]++;
-    segregation.series.push_back(
-        {bed.label, bed.closure, report::Series::Style::Line, variant, series.at("time"), sp->second, {}});
-    for (const auto& file : bed.instance->artifactsOfKind("segregation_blocks_csv")) {
-      const auto blocks = report::readNumericCsv(file);
-      std::vector<double> middle;
-      for (std::size_t k = 0; k < blocks.at("block_start").size(); ++k)
-        middle.push_back(0.5 * (blocks.at("block_start")[k] + blocks.at("block_end")[k]));
-      segregation.series.push_back({bed.label + ", 1 s means", bed.closure, report::Series::Style::Points, variant,
-                                    middle, blocks.at("segregation_percentage"), {}});
-    }
-    for (const auto& file : bed.instance->artifactsOfKind("profiles_csv")) {
-      const auto columns = report::readNumericCsv(file);
-      int phaseVariant = 0;
-      for (const auto& [name, values] : columns) {
-        if (name.rfind("ep_s_", 0) != 0) continue;
-        profiles.series.push_back({bed.label + ", " + name.substr(5), bed.closure, report::Series::Style::Line,
-                                   2 * variant + phaseVariant++, values, columns.at("height"), {}});
-      }
-    }
-  }
-  if (!segregation.series.empty()) {
-    addFigure(report::drawFigure(segregation, ctx.outputDir(), "segregation_percentage"),
+  const auto overTime = report::timeFigures(runs, tap);
+  addFigure(report::drawFigure(overTime.height, ctx.outputDir(), "mean_height"), "Mean particle height against time");
+  addFigure(report::drawFigure(overTime.pressureDrop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");
+  const auto binary = report::segregationFigures(runs);
+  if (!binary.segregation.series.empty()) {
+    addFigure(report::drawFigure(binary.segregation, ctx.outputDir(), "segregation_percentage"),
               "Segregation percentage against time: the samples (lines) and their 1 s means (points)");
   }
-  if (!profiles.series.empty()) {
-    addFigure(report::drawFigure(profiles, ctx.outputDir(), "profiles"),
+  if (!binary.profiles.series.empty()) {
+    addFigure(report::drawFigure(binary.profiles, ctx.outputDir(), "profiles"),
               "Each phase's time-averaged solid fraction over the width against height");
   }
   ctx.setFindings(findings);
 
   report::writeFindingsPage(findings, "beds.csv", ctx.outputDir() / "bed_compare.html");
   ctx.addArtifact("bed_compare.html", "report_html");
-  ctx.setSummary(summary);
+  ctx.setSummary(json{{"beds", beds.size()}});
 }
 
 }  // namespace grainbridge::workflows::stages

@@ -16,7 +16,8 @@ class BedCompareStage final : public StageType {
  public:
   BedCompareStage();
   [[nodiscard]] std::string name() const override { return "bed_compare"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  // 2: beds.csv and the table gain the segregation percentage of binary beds.
+  [[nodiscard]] int implVersion() const override { return 2; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "multi-fluid bed runs side by side: heights and pressure drops against references, solid-fraction maps";

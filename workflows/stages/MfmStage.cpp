@@ -1,7 +1,6 @@
 #include "workflows/stages/MfmStage.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include <spdlog/spdlog.h>
 #include "core/Error.hpp"
@@ -10,7 +9,6 @@
 
 #include "core/averaging/BlockAverage.hpp"
 #include "core/averaging/DominantFrequency.hpp"
-#include "core/averaging/TimeBlocks.hpp"
 #include "core/io/FieldFrameWriter.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "engines/fluid/FrameMaps.hpp"
@@ -18,6 +16,7 @@
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/closures/ClosureCatalog.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
+#include "workflows/report/BedTables.hpp"
 #include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/MfmSeriesColumns.hpp"
 #include "workflows/stages/MfmSetup.hpp"
@@ -147,40 +146,6 @@ void addAverage(json& summary, const std::string& key, const std::vector<double>
   const auto avg = core::averaging::blockAverage(samples);
   summary[key] = avg.mean;
   summary[key + "_err"] = avg.standardError;
-}
-
-// segregation_blocks.csv: s_p's 1 s means over the whole run (the experiment's reporting), read
-// back from series.csv so that a resumed run's blocks hold the samples before the restart too.
-void writeSegregationBlocks(StageContext& ctx) {
-  const auto series = report::readNumericCsv(ctx.outputDir() / "series.csv");
-  const auto blocks =
-      core::averaging::timeBlockMeans(series.at("time"), series.at("segregation_percentage"), 1.0);
-  std::ostringstream csv;
-  csv << "block_start,block_end,segregation_percentage,samples\n";
-  for (const auto& b : blocks) {
-    csv << core::roundTripText(b.start) << ',' << core::roundTripText(b.end) << ',' << core::roundTripText(b.mean)
-        << ',' << b.samples << '\n';
-  }
-  core::writeFileAtomically(ctx.outputDir() / "segregation_blocks.csv", csv.str());
-  ctx.addArtifact("segregation_blocks.csv", "segregation_blocks_csv");
-}
-
-// profiles.csv: each phase's eps_s of the window's mean fields, averaged over the width, against
-// height (Fig. 5.6).
-void writeProfiles(StageContext& ctx, const core::data::FieldFrame& mean, const std::vector<mfm::SolidsPhase>& solids) {
-  std::vector<fluid::HeightProfile> profiles;
-  for (std::size_t m = 0; m < solids.size(); ++m) profiles.push_back(fluid::solidsFractionProfile(mean, m));
-  std::ostringstream csv;
-  csv << "height";
-  for (const auto& phase : solids) csv << ",ep_s_" << phase.name;
-  csv << '\n';
-  for (std::size_t k = 0; k < profiles.front().heights.size(); ++k) {
-    csv << core::roundTripText(profiles.front().heights[k]);
-    for (const auto& profile : profiles) csv << ',' << core::roundTripText(profile.fraction[k]);
-    csv << '\n';
-  }
-  core::writeFileAtomically(ctx.outputDir() / "profiles.csv", csv.str());
-  ctx.addArtifact("profiles.csv", "profiles_csv");
 }
 
 }  // namespace
@@ -469,8 +434,25 @@ void MfmStage::run(StageContext& ctx) const {
   if (setup.segregation) {
     addAverage(summary, "segregation_percentage", window.at("segregation_percentage"));
     summary["segregation_small_share"] = setup.segregation->smallShare;
-    writeSegregationBlocks(ctx);
-    if (observed.fieldAverage().frames() > 0) writeProfiles(ctx, observed.fieldAverage().mean(), solids);
+    // s_p's 1 s means over the whole run, read back from series.csv so that a resumed run's
+    // blocks hold the samples before the restart too; each phase's eps_s over the width of the
+    // window's mean fields against height (Fig. 5.6).
+    const auto series = report::readNumericCsv(ctx.outputDir() / "series.csv");
+    core::writeFileAtomically(ctx.outputDir() / "segregation_blocks.csv",
+                              report::timeBlockMeansCsv(series.at("time"), series.at("segregation_percentage"),
+                                                        "segregation_percentage", 1.0));
+    ctx.addArtifact("segregation_blocks.csv", "segregation_blocks_csv");
+    if (observed.fieldAverage().frames() > 0) {
+      std::vector<report::HeightColumn> profiles;
+      std::vector<double> heights;
+      for (std::size_t m = 0; m < solids.size(); ++m) {
+        auto profile = fluid::solidsFractionProfile(observed.fieldAverage().mean(), m);
+        heights = profile.heights;
+        profiles.push_back({"ep_s_" + solids[m].name, std::move(profile.fraction)});
+      }
+      core::writeFileAtomically(ctx.outputDir() / "profiles.csv", report::heightProfilesCsv(heights, profiles));
+      ctx.addArtifact("profiles.csv", "profiles_csv");
+    }
   }
   if (observed.fieldAverage().frames() > 0) {
     core::io::FieldFrameWriter mean(ctx.outputDir() / "mean", stamp);

@@ -22,7 +22,9 @@ class MfmStage final : public StageType {
   //    (gravity, each phase's name, diameter, density); the summary gains closure,
   //    pressure_drop_tap and solids_volume_change_<phase>, mean_height is Eq. 5.22 over all
   //    solids (a mono bed's is its phase's, as before); the mean fields are mean_field_frame.
-  [[nodiscard]] int implVersion() const override { return 5; }
+  // 5: positivity-preserving solids faces (engines/fluid MassFlux).
+  // 6: each converged step closes every solids phase's continuity implicitly (no undershoot).
+  [[nodiscard]] int implVersion() const override { return 6; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

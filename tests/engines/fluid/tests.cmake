@@ -11,6 +11,7 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FluidSetupTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/InterphaseCouplingTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FrameMapsTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/ContinuityTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
 

@@ -1,0 +1,100 @@
+#include "workflows/report/BedFigures.hpp"
+
+#include <cmath>
+
+#include "core/Error.hpp"
+#include "workflows/report/NumericCsv.hpp"
+
+namespace grainbridge::workflows::report {
+
+Figure averagedHeightFigure(const std::vector<BedRun>& runs) {
+  Figure figure{"Time-averaged mean particle height (Eq. 5.22)", {"run (row of the table)", "–"},
+                {"mean particle height", "m"}, {}};
+  std::map<std::string, Series> byClosure, byReference;
+  for (std::size_t b = 0; b < runs.size(); ++b) {
+    const BedRun& run = runs[b];
+    auto& points = byClosure[run.closure];
+    points.label = "runs, " + run.closure;
+    points.model = run.closure;
+    points.style = Series::Style::PointsWithErrors;
+    points.x.push_back(static_cast<double>(b + 1));
+    points.y.push_back(run.meanHeight);
+    points.yError.push_back(std::isfinite(run.meanHeightError) ? run.meanHeightError : 0.0);
+    for (const auto& r : run.references) {
+      const bool first = !byReference.contains(r.label);
+      auto& ref = byReference[r.label];
+      if (first) {  // a point shape per reference label, kept for all its runs
+        ref.label = r.label;
+        ref.model = r.kind;
+        ref.style = Series::Style::Points;
+        ref.variant = static_cast<int>(byReference.size());
+      }
+      ref.x.push_back(static_cast<double>(b + 1));
+      ref.y.push_back(r.height);
+    }
+  }
+  for (auto& [k, series] : byClosure) figure.series.push_back(std::move(series));
+  for (auto& [k, series] : byReference) figure.series.push_back(std::move(series));
+  return figure;
+}
+
+TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap) {
+  TimeFigures out{{"Mean particle height (Eq. 5.22)", {"time", "s"}, {"mean particle height", "m"}, {}},
+                  {"Pressure drop" + (tap.empty() ? std::string() : " (" + tap + ")"), {"time", "s"},
+                   {"pressure drop", "Pa"}, {}}};
+  std::map<std::string, int> variants;  // per closure: a dash per run and phase
+  for (const auto& run : runs) {
+    const auto time = run.series.find("time");
+    if (time == run.series.end()) throw Error("bed figures: the series of " + run.label + " has no time");
+    // One line per solids phase (a mixture's segregate), each with the phase's name beside the run's.
+    const int runVariant = variants[run.closure]++;
+    int variant = runVariant;
+    for (std::size_t m = 0; m < run.phases.size(); ++m) {
+      const auto h = run.series.find("mean_height_" + run.phases[m]);
+      if (h == run.series.end()) continue;
+      if (m > 0) variant = variants[run.closure]++;
+      const std::string label = run.label + (run.phases.size() > 1 ? ", " + run.phases[m] : "");
+      out.height.series.push_back({label, run.closure, Series::Style::Line, variant, time->second, h->second, {}});
+    }
+    if (const auto dp = run.series.find(run.pressureDrop); dp != run.series.end()) {
+      out.pressureDrop.series.push_back(
+          {run.label, run.closure, Series::Style::Line, runVariant, time->second, dp->second, {}});
+    }
+  }
+  return out;
+}
+
+SegregationFigures segregationFigures(const std::vector<BedRun>& runs) {
+  SegregationFigures out{{"Segregation percentage (Eqs. 5.23-5.25): every sample and 1 s means", {"time", "s"},
+                          {"segregation percentage s_p", "–"}, {}},
+                         {"Time-averaged solid fraction over the width (Fig. 5.6)", {"solid fraction", "–"},
+                          {"height", "m"}, {}}};
+  std::map<std::string, int> variants;
+  for (const auto& run : runs) {
+    const auto sp = run.series.find("segregation_percentage");
+    if (sp == run.series.end()) continue;
+    const int variant = variants[run.closure]++;
+    out.segregation.series.push_back(
+        {run.label, run.closure, Series::Style::Line, variant, run.series.at("time"), sp->second, {}});
+    for (const auto& file : run.segregationBlocks) {
+      const auto blocks = readNumericCsv(file);
+      std::vector<double> middle;
+      for (std::size_t k = 0; k < blocks.at("block_start").size(); ++k)
+        middle.push_back(0.5 * (blocks.at("block_start")[k] + blocks.at("block_end")[k]));
+      out.segregation.series.push_back({run.label + ", 1 s means", run.closure, Series::Style::Points, variant,
+                                        middle, blocks.at("segregation_percentage"), {}});
+    }
+    for (const auto& file : run.profiles) {
+      const auto columns = readNumericCsv(file);
+      int phaseVariant = 0;
+      for (const auto& [name, values] : columns) {
+        if (name.rfind("ep_s_", 0) != 0) continue;
+        out.profiles.series.push_back({run.label + ", " + name.substr(5), run.closure, Series::Style::Line,
+                                       2 * variant + phaseVariant++, values, columns.at("height"), {}});
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace grainbridge::workflows::report

@@ -1,0 +1,32 @@
+#pragma once
+// The figures a comparison of fluidized-bed runs draws (the bed_compare stage), assembled from
+// each run's products alone: its summary's mean height, its series.csv columns, its phases'
+// names and the CSV tables it wrote (segregation_blocks.csv, profiles.csv). Drawing is Plot's.
+#include <string>
+#include <vector>
+
+#include "workflows/report/BedRun.hpp"
+#include "workflows/report/Plot.hpp"
+
+namespace grainbridge::workflows::report {
+
+// The time-averaged mean heights, the runs in order along x, with the reference values matched
+// to each: a legend entry per closure and per reference label.
+[[nodiscard]] Figure averagedHeightFigure(const std::vector<BedRun>& runs);
+
+// Each run's mean height against time, a line per solids phase, and its compared pressure drop
+// (`tap` named in the title when not empty), the run's first line's dash in both.
+struct TimeFigures {
+  Figure height, pressureDrop;
+};
+[[nodiscard]] TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap);
+
+// Binary beds: s_p (Eqs. 5.23-5.25) of every run that records it against time with its 1 s block
+// means, and each phase's time-averaged solid fraction over the width against height (Fig. 5.6)
+// from its profiles.csv. No series in either when no run records s_p.
+struct SegregationFigures {
+  Figure segregation, profiles;
+};
+[[nodiscard]] SegregationFigures segregationFigures(const std::vector<BedRun>& runs);
+
+}  // namespace grainbridge::workflows::report

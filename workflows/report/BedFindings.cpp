@@ -1,0 +1,109 @@
+#include "workflows/report/BedFindings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/text/NumberText.hpp"
+#include "workflows/report/CsvField.hpp"
+
+namespace grainbridge::workflows::report {
+
+namespace {
+
+std::string percent(double relative) {
+  return (relative >= 0 ? "+" : "−") + core::humanNumber(std::abs(100.0 * relative), 2) + " %";
+}
+
+std::string withError(double v, double err, int significant = 4) {
+  if (!std::isfinite(v)) return "–";
+  return core::humanNumber(v, significant) + (std::isfinite(err) && err > 0 ? " ± " + core::humanNumber(err, 2) : "");
+}
+
+std::string number(double v) { return std::isfinite(v) ? core::roundTripText(v) : std::string(); }
+
+}  // namespace
+
+std::string bedsCsv(const std::vector<BedRun>& runs, const std::vector<std::string>& referenceLabels) {
+  std::ostringstream csv;
+  csv << "run,closure,mean_height,mean_height_err,pressure_drop,pressure_drop_err,dp_frequency,dp_amplitude,"
+         "table_coverage_cell_steps,table_coverage_solids,solver_steps,retries,segregation_percentage,"
+         "segregation_percentage_err,reference,reference_kind,"
+         "reference_height,deviation\n";
+  for (const auto& run : runs) {
+    std::string fields = csvField(run.label) + ',' + run.closure + ',' + number(run.meanHeight) + ',' +
+                         number(run.meanHeightError);
+    for (const char* k : {"pressure_drop", "pressure_drop_err", "dp_frequency", "dp_amplitude",
+                          "table_coverage_cell_steps", "table_coverage_solids", "solver_steps", "retries",
+                          "segregation_percentage", "segregation_percentage_err"}) {
+      fields += ',' + number(run.value(k));
+    }
+    bool matchedAny = false;
+    for (const auto& label : referenceLabels) {
+      for (const auto& r : run.references) {
+        if (r.label != label) continue;
+        csv << fields << ',' << csvField(r.label) << ',' << r.kind << ',' << number(r.height) << ','
+            << number((run.meanHeight - r.height) / r.height) << '\n';
+        matchedAny = true;
+      }
+    }
+    if (!matchedAny) csv << fields << ",,,,\n";
+  }
+  return csv.str();
+}
+
+Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::string>& referenceLabels,
+                     const std::string& title) {
+  Findings findings;
+  findings.title = title;
+  findings.details = "bed_compare.html";
+  const bool anyTable = std::any_of(runs.begin(), runs.end(), [](const BedRun& r) { return r.closure == "table"; });
+  findings.columns = {"run", "closure", "mean height [m]"};
+  for (const auto& l : referenceLabels) findings.columns.push_back("vs " + l);
+  findings.columns.emplace_back("pressure drop [Pa]");
+  findings.columns.emplace_back("Δp frequency [Hz]");
+  if (anyTable) findings.columns.emplace_back("table coverage (cell-steps / solids)");
+  const bool anyBinary = std::any_of(runs.begin(), runs.end(),
+                                     [](const BedRun& r) { return std::isfinite(r.value("segregation_percentage")); });
+  if (anyBinary) findings.columns.emplace_back("segregation percentage s_p");
+  std::ostringstream headline;
+  for (const auto& run : runs) {
+    const double h = run.meanHeight, hErr = run.meanHeightError;
+    const double frequency = run.value("dp_frequency");
+    std::vector<std::string> row = {run.label, run.closure, withError(h, hErr)};
+    std::ostringstream compared;
+    for (const auto& l : referenceLabels) {
+      std::string cell = "–";
+      for (const auto& r : run.references) {
+        if (r.label != l) continue;
+        const double deviation = (h - r.height) / r.height;
+        cell = core::humanNumber(r.height, 4) + " m: " + percent(deviation);
+        compared << (compared.tellp() > 0 ? "; " : "") << r.label << " " << core::humanNumber(r.height, 4)
+                 << " m: " << percent(deviation);
+      }
+      row.push_back(cell);
+    }
+    row.push_back(withError(run.value("pressure_drop"), run.value("pressure_drop_err")));
+    row.push_back(std::isfinite(frequency) ? core::humanNumber(frequency, 3) : "–");
+    std::string coverage;
+    if (run.closure == "table") {
+      coverage = core::humanNumber(100.0 * run.value("table_coverage_cell_steps"), 3) + " % / " +
+                 core::humanNumber(100.0 * run.value("table_coverage_solids"), 3) + " %";
+    }
+    if (anyTable) row.push_back(run.closure == "table" ? coverage : "–");
+    const double sp = run.value("segregation_percentage");
+    if (anyBinary) row.push_back(withError(sp, run.value("segregation_percentage_err"), 3));
+    findings.rows.push_back(std::move(row));
+    headline << run.label << ": mean particle height " << withError(h, hErr) << " m";
+    if (compared.tellp() > 0) headline << " (" << compared.str() << ")";
+    if (run.closure == "table") headline << ", the table covering " << coverage << " of the cell-steps / solids";
+    if (std::isfinite(sp)) headline << ", segregation percentage " << withError(sp, run.value("segregation_percentage_err"), 3);
+    headline << ". ";
+  }
+  headline << "Time-averaged over each run's averaging window, errors by block averaging; deviation = (run − "
+              "value) / value.";
+  findings.headline = headline.str();
+  return findings;
+}
+
+}  // namespace grainbridge::workflows::report

@@ -1,0 +1,43 @@
+#pragma once
+// One fluidized-bed run as a comparison of runs reads it (the bed_compare stage): its products
+// alone (summary values, series.csv columns, its phases' names, the CSV tables it wrote) and the
+// reference values matched to it. The report's figures and tables are built from these.
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace grainbridge::workflows::report {
+
+// A published or measured mean height matched to a run.
+struct ReferenceHeight {
+  std::string label;  // "Table 5.3"
+  std::string kind;   // "reference" | "experiment": the colour key
+  double height = 0.0;
+};
+
+// One bed run as the figures read it.
+struct BedRun {
+  std::string label;    // the legend entry: "bed (gas_inflow 1.92 m/s)"
+  std::string closure;  // the colour key: a kinetic model, or "table"
+  double meanHeight = 0.0, meanHeightError = 0.0;
+  std::vector<ReferenceHeight> references;                  // the values matched to this run
+  std::map<std::string, std::vector<double>> series;        // series.csv, by column
+  std::vector<std::string> phases;                          // solids phase names, in order
+  std::string pressureDrop;                                 // the compared series column (dp_<tap>)
+  std::vector<std::filesystem::path> segregationBlocks;     // segregation_blocks.csv files
+  std::vector<std::filesystem::path> profiles;              // profiles.csv files
+  // Further summary values, by beds.csv column: pressure_drop(_err) (of the compared tap),
+  // dp_frequency, dp_amplitude, table_coverage_cell_steps, table_coverage_solids, solver_steps,
+  // retries, segregation_percentage(_err); NaN where the run did not record one.
+  std::map<std::string, double> values;
+  [[nodiscard]] double value(const std::string& column) const;
+};
+
+inline double BedRun::value(const std::string& column) const {
+  const auto it = values.find(column);
+  return it == values.end() ? NAN : it->second;
+}
+
+}  // namespace grainbridge::workflows::report
