@@ -20,15 +20,13 @@ double carnahanStarlingG0(double solidFraction) {
   return (1.0 - 0.5 * solidFraction) / (voidFraction * voidFraction * voidFraction);
 }
 
-double lebowitzG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters, std::size_t l,
-                  std::size_t m) {
-  if (solidFractions.size() != diameters.size() || l >= solidFractions.size() || m >= solidFractions.size()) {
+LebowitzMixture::LebowitzMixture(const std::vector<double>& solidFractions, const std::vector<double>& diameters)
+    : diameters_(&diameters) {
+  if (solidFractions.size() != diameters.size()) {
     throw Error("radial distribution g0 (Lebowitz): " + std::to_string(solidFractions.size()) + " solid fractions, " +
-                std::to_string(diameters.size()) + " diameters, phases " + std::to_string(l) + " and " +
-                std::to_string(m) + " asked");
+                std::to_string(diameters.size()) + " diameters");
   }
   double solids = 0.0;
-  double sumOverDiameter = 0.0;
   for (std::size_t k = 0; k < solidFractions.size(); ++k) {
     if (!(solidFractions[k] >= 0.0) || !(diameters[k] > 0.0)) {
       std::ostringstream msg;
@@ -38,18 +36,30 @@ double lebowitzG0(const std::vector<double>& solidFractions, const std::vector<d
       throw Error(msg.str());
     }
     solids += solidFractions[k];
-    sumOverDiameter += solidFractions[k] / diameters[k];
+    sumOverDiameter_ += solidFractions[k] / diameters[k];
   }
-  const double voidFraction = 1.0 - solids;
-  if (!(voidFraction > 0.0)) {
+  voidFraction_ = 1.0 - solids;
+  if (!(voidFraction_ > 0.0)) {
     std::ostringstream msg;
     msg.precision(10);
     msg << "radial distribution g0 (Lebowitz): the solid fractions add up to " << solids << ", need < 1";
     throw Error(msg.str());
   }
-  const double dl = diameters[l];
-  const double dm = diameters[m];
-  return 1.0 / voidFraction + 3.0 * dl * dm / (voidFraction * voidFraction * (dl + dm)) * sumOverDiameter;
+}
+
+double LebowitzMixture::g0(std::size_t l, std::size_t m) const {
+  if (l >= diameters_->size() || m >= diameters_->size()) {
+    throw Error("radial distribution g0 (Lebowitz): phases " + std::to_string(l) + " and " + std::to_string(m) +
+                " asked of " + std::to_string(diameters_->size()));
+  }
+  const double dl = (*diameters_)[l];
+  const double dm = (*diameters_)[m];
+  return 1.0 / voidFraction_ + 3.0 * dl * dm / (voidFraction_ * voidFraction_ * (dl + dm)) * sumOverDiameter_;
+}
+
+double lebowitzG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters, std::size_t l,
+                  std::size_t m) {
+  return LebowitzMixture(solidFractions, diameters).g0(l, m);
 }
 
 double defaultG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters, std::size_t l,

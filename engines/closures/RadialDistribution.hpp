@@ -30,6 +30,19 @@ namespace grainbridge::closures {
 [[nodiscard]] double lebowitzG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters,
                                 std::size_t l, std::size_t m);
 
+// The same for every pair of one mixture state: the sums over the phases taken once (a mixture's
+// kinetic theory asks for M^2 pairs per cell), each g0_lm then as lebowitzG0 gives it, bit for bit.
+// Throws as lebowitzG0 does; `diameters` must outlive it.
+class LebowitzMixture {
+ public:
+  LebowitzMixture(const std::vector<double>& solidFractions, const std::vector<double>& diameters);
+  [[nodiscard]] double g0(std::size_t l, std::size_t m) const;
+
+ private:
+  const std::vector<double>* diameters_;
+  double voidFraction_ = 1.0, sumOverDiameter_ = 0.0;
+};
+
 // Ma, D. and Ahmadi, G. (1986), J. Chem. Phys. 84(6):3449-3450, `ma_ahmadi_g0` (not lun1984's
 // Ma-Ahmadi gas modification of the viscosity):
 //   g0 = (1 + 2.5 eps + 4.5904 eps^2 + 4.515439 eps^3) / (1 - (eps / eps_max)^3)^0.67802,

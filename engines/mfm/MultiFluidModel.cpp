@@ -232,12 +232,13 @@ void MultiFluidModel::setMixtureContacts(const fluid::FlowState& state, std::siz
   std::vector<double> fractions = closureSolidFractions(state, c);
   const std::size_t own = m - 1;
   fractions[own] += shift;
-  ks.g0 = closures::lebowitzG0(fractions, diameters_, own, own);
+  const closures::LebowitzMixture mixture(fractions, diameters_);
+  ks.g0 = mixture.g0(own, own);
   ks.contactSum = 0.0;
   ks.dissipationSum = 0.0;
   for (std::size_t l = 0; l < fractions.size(); ++l) {
-    ks.contactSum += fractions[l] * closures::lebowitzG0(fractions, diameters_, own, l);
-    ks.dissipationSum += fractions[l] * closures::lebowitzG0(fractions, diameters_, l, l);
+    ks.contactSum += fractions[l] * mixture.g0(own, l);
+    ks.dissipationSum += fractions[l] * mixture.g0(l, l);
   }
 }
 
