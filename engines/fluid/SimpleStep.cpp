@@ -313,7 +313,17 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
 StepResult advance(FlowState& state, double dt, const FlowModel& model, const Boundaries& boundaries,
                    const SimpleSettings& settings) {
   const FlowState old = state;
-  StepResult result = iterate(state, old, dt, model, boundaries, settings);
+  StepResult result;
+  try {
+    result = iterate(state, old, dt, model, boundaries, settings);
+  } catch (const SingularSystem& e) {
+    // A bad iterate: the step failed, as one that does not converge (a smaller one is tried).
+    result.converged = false;
+    result.failure = e.what();
+  } catch (...) {
+    state = old;  // whatever stops the run leaves the last converged level, never an iterate
+    throw;
+  }
   if (result.converged) {
     state.time = old.time + dt;
   } else {

@@ -89,7 +89,9 @@ struct StepResult {
   std::string failure;
 };
 
-// Advances `state` by dt (> 0). `state.time` moves on only when the step converged.
+// Advances `state` by dt (> 0). `state.time` moves on only when the step converged; otherwise,
+// and when an error stops the step, `state` is left as it was. A singular linear system met on
+// the way (fluid::SingularSystem) is a step that failed, with its message in `failure`.
 StepResult advance(FlowState& state, double dt, const FlowModel& model, const Boundaries& boundaries,
                    const SimpleSettings& settings);
 

@@ -122,7 +122,7 @@ void StencilSystem::solve(std::vector<double>& phi) const {
   if (bandwidth <= kBandLimit) {
     std::string failure;
     if (!solveBanded(unknowns, bandwidth, entries, rhs, failure))
-      throw Error("fluid: the discretised system is singular (" + failure + ")");
+      throw SingularSystem("fluid: the discretised system is singular (" + failure + ")");
     x = std::move(rhs);
   } else {
     Eigen::SparseMatrix<double> A(unknowns, unknowns);
@@ -131,7 +131,7 @@ void StencilSystem::solve(std::vector<double>& phi) const {
     Lu& lu = analysedFor(active_, A);
     lu.factorize(A);
     if (lu.info() != Eigen::Success)
-      throw Error("fluid: the discretised system is singular (" + lu.lastErrorMessage() + ")");
+      throw SingularSystem("fluid: the discretised system is singular (" + lu.lastErrorMessage() + ")");
     x = lu.solve(rhs);
   }
   for (std::size_t c = 0; c < n; ++c) {

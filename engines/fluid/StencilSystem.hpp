@@ -13,10 +13,19 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/Error.hpp"
 #include "engines/fluid/Fields.hpp"
 #include "engines/fluid/StaggeredGrid.hpp"
 
 namespace grainbridge::fluid {
+
+// A discretised system with no unique solution (a zero pivot): from a bad iterate of a transient
+// step, which a smaller step usually avoids (SimpleStep retries it), or a set-up that leaves a
+// cell without an equation.
+class SingularSystem : public Error {
+ public:
+  using Error::Error;
+};
 
 // Neighbour slots: 2 * axis for the low side (W, S, B), 2 * axis + 1 for the high side (E, N, T).
 enum Neighbour : int { West = 0, East = 1, South = 2, North = 3, Bottom = 4, Top = 5 };
@@ -42,8 +51,8 @@ class StencilSystem {
   [[nodiscard]] bool active(std::size_t c) const { return active_[c] != 0; }
 
   // Solves for the active cells of `phi`; its other entries are the known boundary values.
-  // Throws grainbridge::Error naming the cell when the system is singular (a zero a_P, a
-  // cell cut off from every boundary value).
+  // Throws grainbridge::Error naming the cell for a zero a_P (no equation there), SingularSystem
+  // when the factorisation meets a zero pivot.
   void solve(std::vector<double>& phi) const;
   void solve(CellField& phi) const { solve(phi.values()); }
   void solve(FaceField& phi) const { solve(phi.values()); }

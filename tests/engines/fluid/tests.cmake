@@ -12,6 +12,7 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/InterphaseCouplingTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FrameMapsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/ContinuityTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/SimpleStepTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
 
