@@ -97,8 +97,8 @@ void couplePointMatrix(std::vector<StencilSystem>& systems, const FaceTerms& t, 
 }  // namespace
 
 CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
-                                      const FlowState& level, const FlowProperties& properties, int axis,
-                                      double relaxation, double diluteFraction) {
+                                      const FlowProperties& properties, int axis, double relaxation,
+                                      double diluteFraction) {
   const StaggeredGrid& grid = state.grid();
   const std::size_t M = systems.size();
   const double V = grid.cellVolume(), A = grid.faceArea(axis);
@@ -118,7 +118,7 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
       t.H[m] = systems[m].neighbourSum(f, v);
       t.a[m] = systems[m].ap(f);
       t.u[m] = v[f];
-      t.dilute[m] = diluteFace(level, m, axis, f, diluteFraction) ? 1 : 0;
+      t.dilute[m] = diluteFace(state, m, axis, f, diluteFraction) ? 1 : 0;
       if (m > 0) t.X(0, m) = t.X(m, 0) = meanOnFace(properties.dragCoefficient[m], axis, f) * V;
     }
     for (const SolidsPairDrag& pair : properties.solidsDrag)

@@ -32,10 +32,10 @@ struct CorrectionCoefficients {
 
 // Adds the drag to `systems` (one per phase, all of component `axis`, assembled without it),
 // relaxes each by `relaxation` (StencilSystem::relax), and returns the correction coefficients.
-// A dilute solids face (Momentum.hpp, decided on `level`, the step's last converged level) keeps
-// its own equation: the gas sees its drag explicitly, and its corrections are zero.
+// A dilute solids face (Momentum.hpp) keeps its own equation: the gas sees its drag explicitly,
+// and its corrections are zero.
 CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
-                                      const FlowState& level, const FlowProperties& properties, int axis,
-                                      double relaxation, double diluteFraction);
+                                      const FlowProperties& properties, int axis, double relaxation,
+                                      double diluteFraction);
 
 }  // namespace grainbridge::fluid

@@ -46,8 +46,8 @@ void diluteEquation(StencilSystem& system, const PhaseFields& phase, const Bound
 
 }  // namespace
 
-bool diluteFace(const FlowState& level, std::size_t m, int axis, std::size_t face, double threshold) {
-  return m > 0 && meanOnFace(level.phases[m].fraction, axis, face) < threshold;
+bool diluteFace(const FlowState& state, std::size_t m, int axis, std::size_t face, double threshold) {
+  return m > 0 && meanOnFace(state.phases[m].fraction, axis, face) < threshold;
 }
 
 StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, const std::array<FaceField, 3>& flux) {
@@ -71,7 +71,7 @@ StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, c
     const int ia = at[static_cast<std::size_t>(a)];
     const double eps = meanOnFace(phase.fraction, a, f);
     const double rho = meanOnFace(props.density, a, f);
-    if (diluteFace(*in.old, m, a, f, in.diluteFraction)) {
+    if (diluteFace(state, m, a, f, in.diluteFraction)) {
       diluteEquation(system, phase, *in.boundaries, a, f, in.diluteFraction);
       continue;
     }

@@ -42,13 +42,8 @@ struct MomentumInputs {
 [[nodiscard]] StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t phase, int axis,
                                              const std::array<FaceField, 3>& flux);
 
-// Whether phase m's momentum on face (axis, face) is a dilute face's, decided on `level`: the
-// step's last converged level (MomentumInputs::old), so a face keeps its kind for the whole step.
-// Decided on each iterate, a face whose fraction hovers at the threshold changed kind between
-// outer iterations and the step never converged (goldschmidt-binary at 1.00 m/s: large
-// particles at 1e-4 thrown above the small ones stopped the run at 4.97 s at any dt; decided on
-// the last level it runs its 20 s).
-[[nodiscard]] bool diluteFace(const FlowState& level, std::size_t m, int axis, std::size_t face, double threshold);
+// Whether phase m's momentum on face (axis, face) is a dilute face's.
+[[nodiscard]] bool diluteFace(const FlowState& state, std::size_t m, int axis, std::size_t face, double threshold);
 
 // eps_m on a face, the mean of its two cells (the momentum control volume's fraction).
 [[nodiscard]] inline double meanOnFace(const CellField& field, int axis, std::size_t face) {

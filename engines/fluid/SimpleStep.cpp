@@ -199,7 +199,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       std::vector<StencilSystem> systems;
       for (std::size_t m = 0; m < M; ++m) systems.push_back(assembleMomentum(in, m, a, flux[m]));
       corrections.push_back(
-          coupleAndRelax(systems, state, old, props, a, settings.momentumRelaxation, settings.diluteFraction));
+          coupleAndRelax(systems, state, props, a, settings.momentumRelaxation, settings.diluteFraction));
       for (std::size_t m = 0; m < M; ++m) {
         FaceField& u = state.phases[m].velocity[static_cast<std::size_t>(a)];
         const auto r = systems[m].normalisedResidual(u.values(), speed[m]);

@@ -24,8 +24,7 @@ class MfmStage final : public StageType {
   //    solids (a mono bed's is its phase's, as before); the mean fields are mean_field_frame.
   // 5: positivity-preserving solids faces (engines/fluid MassFlux).
   // 6: each converged step closes every solids phase's continuity implicitly (no undershoot).
-  // 7: a face's dilute kind is decided once per step, on the last converged level.
-  [[nodiscard]] int implVersion() const override { return 7; }
+  [[nodiscard]] int implVersion() const override { return 6; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

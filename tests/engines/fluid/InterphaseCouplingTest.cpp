@@ -54,7 +54,7 @@ TEST(InterphaseCoupling, TwoSolidsPhasesRelaxTheirSlipAsImplicitEulerAndKeepThei
   Face face(grid, {0.5, 0.3, 0.2}, {1.2, 2500.0, 2520.0}, {0.0, 0.4, -0.1}, dt);
   face.properties.solidsDrag.emplace_back(grid, 1, 2);
   for (double& x : face.properties.solidsDrag[0].coefficient.values()) x = F;
-  (void)coupleAndRelax(face.systems, face.state, face.state, face.properties, 0, 1.0, 1e-4);
+  (void)coupleAndRelax(face.systems, face.state, face.properties, 0, 1.0, 1e-4);
   const double V = grid.cellVolume();
   const double decay = 1.0 / (1.0 + F * V * (1.0 / face.a[1] + 1.0 / face.a[2]));
   EXPECT_NEAR(face.solved(1) - face.solved(2), decay * 0.5, 1e-12);
@@ -73,7 +73,7 @@ TEST(InterphaseCoupling, EveryExchangeImplicitGivesTheCoupledSolution) {
   for (double& x : face.properties.dragCoefficient[2].values()) x = beta2;
   face.properties.solidsDrag.emplace_back(grid, 1, 2);
   for (double& x : face.properties.solidsDrag[0].coefficient.values()) x = F;
-  const auto corrections = coupleAndRelax(face.systems, face.state, face.state, face.properties, 0, 1.0, 1e-4);
+  const auto corrections = coupleAndRelax(face.systems, face.state, face.properties, 0, 1.0, 1e-4);
   Eigen::Matrix3d K;
   K << face.a[0] + (beta1 + beta2) * V, -beta1 * V, -beta2 * V,  //
       -beta1 * V, face.a[1] + (beta1 + F) * V, -F * V,          //
@@ -92,7 +92,7 @@ TEST(InterphaseCoupling, OneSolidsPhaseClosedFormIsTheCoupledSolution) {
   const std::vector<double> u0 = {2.0, -0.3};
   Face face(grid, {0.55, 0.45}, {1.2, 2526.0}, u0, dt);
   for (double& x : face.properties.dragCoefficient[1].values()) x = beta;
-  (void)coupleAndRelax(face.systems, face.state, face.state, face.properties, 0, 1.0, 1e-4);
+  (void)coupleAndRelax(face.systems, face.state, face.properties, 0, 1.0, 1e-4);
   Eigen::Matrix2d K;
   K << face.a[0] + beta * V, -beta * V, -beta * V, face.a[1] + beta * V;
   const Eigen::Vector2d exact = K.lu().solve(Eigen::Vector2d(face.a[0] * u0[0], face.a[1] * u0[1]));
