@@ -3,9 +3,9 @@
 // with the pressure drop and the bed height), its summary carries the time-averaged pressure
 // drop with its block-averaging error, and a run that cannot continue stops naming the time,
 // the cell and the quantity, with its last good frame on disk.
-#include <algorithm>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
