@@ -20,7 +20,7 @@ double carnahanStarlingG0(double solidFraction) {
   return (1.0 - 0.5 * solidFraction) / (voidFraction * voidFraction * voidFraction);
 }
 
-LebowitzMixture::LebowitzMixture(const std::vector<double>& solidFractions, const std::vector<double>& diameters)
+LebowitzMixture::LebowitzMixture(std::span<const double> solidFractions, const std::vector<double>& diameters)
     : diameters_(&diameters) {
   if (solidFractions.size() != diameters.size()) {
     throw Error("radial distribution g0 (Lebowitz): " + std::to_string(solidFractions.size()) + " solid fractions, " +

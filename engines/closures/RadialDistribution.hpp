@@ -8,6 +8,7 @@
 // For several solids phases MFIX of the reference's time switched to Lebowitz (1964)
 // automatically (VALIDATION.md): lebowitzG0 below, the mixture default. Ma and Ahmadi's g0 is a
 // named variant with a packing limit.
+#include <span>
 #include <vector>
 
 namespace grainbridge::closures {
@@ -32,10 +33,10 @@ namespace grainbridge::closures {
 
 // The same for every pair of one mixture state: the sums over the phases taken once (a mixture's
 // kinetic theory asks for M^2 pairs per cell), each g0_lm then as lebowitzG0 gives it, bit for bit.
-// Throws as lebowitzG0 does; `diameters` must outlive it.
+// Throws as lebowitzG0 does; `diameters` must outlive it (the fractions are read once here).
 class LebowitzMixture {
  public:
-  LebowitzMixture(const std::vector<double>& solidFractions, const std::vector<double>& diameters);
+  LebowitzMixture(std::span<const double> solidFractions, const std::vector<double>& diameters);
   [[nodiscard]] double g0(std::size_t l, std::size_t m) const;
 
  private:

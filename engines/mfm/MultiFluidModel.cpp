@@ -1,7 +1,10 @@
 #include "engines/mfm/MultiFluidModel.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include "core/Error.hpp"
 #include "engines/closures/EffectiveRestitution.hpp"
@@ -42,21 +45,38 @@ double closureSolidFraction(const fluid::FlowState& state, std::size_t m, std::s
   return total > room ? eps * (room / total) : eps;
 }
 
-// Every solids phase's closure fraction in cell c, [l - 1] for phase l.
-std::vector<double> closureSolidFractions(const fluid::FlowState& state, std::size_t c) {
-  std::vector<double> fractions;
-  for (std::size_t l = 1; l < state.phases.size(); ++l) fractions.push_back(closureSolidFraction(state, l, c));
-  return fractions;
-}
+// Every solids phase's closure fraction in cell c, [l - 1] for phase l. The kinetic theory asks
+// for them several times per cell and iteration: up to kInline phases they live on the stack (a
+// vector per call cost 5 % of the binary bed's run, bench/README.md).
+class CellSolidFractions {
+ public:
+  CellSolidFractions(const fluid::FlowState& state, std::size_t c) : size_(state.phases.size() - 1) {
+    if (size_ > inline_.size()) heap_.resize(size_);
+    for (std::size_t l = 1; l <= size_; ++l) (*this)[l - 1] = closureSolidFraction(state, l, c);
+  }
+  [[nodiscard]] std::size_t size() const { return size_; }
+  double& operator[](std::size_t k) { return data()[k]; }
+  double operator[](std::size_t k) const { return values()[k]; }
+  [[nodiscard]] std::span<const double> values() const {
+    return {size_ > inline_.size() ? heap_.data() : inline_.data(), size_};
+  }
+
+ private:
+  double* data() { return size_ > inline_.size() ? heap_.data() : inline_.data(); }
+  static constexpr std::size_t kInline = 8;
+  std::array<double, kInline> inline_{};
+  std::vector<double> heap_;
+  std::size_t size_;
+};
 
 // Phase m's share of the plastic viscosity (Eq. 3.27). Schaeffer's mu^p is written with P*, not
 // eps_sm P* (PlasticRegime.hpp), so each phase of a mixture takes eps_sm / eps_s of it, as MFIX
 // does (calc_mu_s.f: EP_s(M)/SUM_EPS_CP), and identical phases add up to one; one phase takes it all.
 double plasticViscosityShare(const fluid::FlowState& state, std::size_t m, std::size_t c) {
   if (state.phases.size() == 2) return 1.0;
-  const std::vector<double> fractions = closureSolidFractions(state, c);
+  const CellSolidFractions fractions(state, c);
   double total = 0.0;
-  for (double eps : fractions) total += eps;
+  for (double eps : fractions.values()) total += eps;
   return total > 0.0 ? fractions[m - 1] / total : 0.0;
 }
 
@@ -139,12 +159,13 @@ std::vector<std::array<std::size_t, 2>> MultiFluidModel::solidsPairs() const {
 
 void MultiFluidModel::evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& p,
                                          std::size_t c) const {
-  const std::vector<double> fractions = closureSolidFractions(state, c);
+  const CellSolidFractions fractions(state, c);
+  const closures::LebowitzMixture mixture(fractions.values(), diameters_);
   for (std::size_t k = 0; k < params_.solidsPairs.size(); ++k) {
     const SolidsPair& pair = params_.solidsPairs[k];
     const SolidsPhase& l = params_.solids[pair.l - 1];
     const SolidsPhase& m = params_.solids[pair.m - 1];
-    const double g0 = closures::lebowitzG0(fractions, diameters_, pair.l - 1, pair.m - 1);
+    const double g0 = mixture.g0(pair.l - 1, pair.m - 1);
     const double relative =
         (centredVelocity(state.phases[pair.l], c) - centredVelocity(state.phases[pair.m], c)).norm();
     p.solidsDrag[k].coefficient[c] = closures::SolidsSolidsDrag{pair.drag}.evaluate(
@@ -229,10 +250,10 @@ MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState
 
 void MultiFluidModel::setMixtureContacts(const fluid::FlowState& state, std::size_t m, std::size_t c, double shift,
                                          closures::KineticState& ks) const {
-  std::vector<double> fractions = closureSolidFractions(state, c);
+  CellSolidFractions fractions(state, c);
   const std::size_t own = m - 1;
   fractions[own] += shift;
-  const closures::LebowitzMixture mixture(fractions, diameters_);
+  const closures::LebowitzMixture mixture(fractions.values(), diameters_);
   ks.g0 = mixture.g0(own, own);
   ks.contactSum = 0.0;
   ks.dissipationSum = 0.0;
