@@ -19,6 +19,7 @@ struct PhaseProperties {
         shearViscosity(grid),
         bulkViscosity(grid),
         solidsPressure(grid),
+        plasticPressure(grid),
         solidsPressureSlope(grid),
         wallSlipCoefficient(grid) {}
   CellField density;              // rho_m [kg/m^3]
@@ -26,6 +27,10 @@ struct PhaseProperties {
   CellField shearViscosity;       // mu_m of tau_m [Pa s]
   CellField bulkViscosity;        // lambda_m of tau_m [Pa s]
   CellField solidsPressure;       // P_sm, kinetic plus plastic [Pa]; zero for the gas
+  // The plastic part of solidsPressure, eps_sm P* (Eq. 3.26) [Pa]. With several solids phases the
+  // momentum equations do not take its own gradient but the phase's volume share of the
+  // mixture's, sum_l eps_sl P* (Momentum.hpp).
+  CellField plasticPressure;
   CellField solidsPressureSlope;  // dP_sm / d eps_sm [Pa]: what lets the eps_s correction see packing
   // Partial slip at no-slip wall patches (Johnson-Jackson, Eq. 5.8): when set, the phase's
   // tangential velocity at such a wall is not zero but takes the traction -c v_slip, with c

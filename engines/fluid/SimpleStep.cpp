@@ -35,7 +35,8 @@ FlowProperties propertiesFor(const StaggeredGrid& grid, std::size_t phases, cons
 void copyPropertiesToGhosts(FlowProperties& p, const Boundaries& boundaries) {
   for (PhaseProperties& phase : p.phases) {
     for (CellField* f : {&phase.density, &phase.compressibility, &phase.shearViscosity, &phase.bulkViscosity,
-                         &phase.solidsPressure, &phase.solidsPressureSlope, &phase.wallSlipCoefficient}) {
+                         &phase.solidsPressure, &phase.plasticPressure, &phase.solidsPressureSlope,
+                         &phase.wallSlipCoefficient}) {
       boundaries.copyToGhosts(*f);
     }
   }
@@ -84,8 +85,25 @@ void offerContinuity(Worst& worst, const std::string& name, const CellField& fra
   worst.offer(value, name + " continuity", at);
 }
 
-// The first non-finite value or fraction out of [0, 1] (beyond round-off), described; empty if none.
-std::string firstBadValue(const FlowState& state, const SimpleSettings& settings, std::array<int, 3>& cell) {
+// MFiX's divergence bound on every velocity (MAX_INLET_VEL, time_march.f and check_vel_bound.f):
+// 100 times the largest inflow speed, 500 m/s where nothing flows in. A step whose iterate passes
+// it has diverged, whatever its residuals say: they are normalised by the phase's largest speed,
+// so a runaway velocity on a thin face hides its own residual (the Goldschmidt binary bed at
+// 1.00 m/s carried 7.5e3 m/s on a face at eps_s 6e-3 through converged steps until a step
+// emptied cells at any dt).
+double velocityBound(const Boundaries& boundaries) {
+  double fastest = 0.0;
+  for (const BoundaryPatch& patch : boundaries.patches()) {
+    if (patch.kind != BoundaryKind::VelocityInlet) continue;
+    for (const PhaseInflow& inflow : patch.phases) fastest = std::max(fastest, inflow.velocity.norm());
+  }
+  return fastest > 0.0 ? 100.0 * fastest : 500.0;
+}
+
+// The first non-finite value, fraction out of [0, 1] (beyond round-off) or velocity beyond
+// `bound`, described; empty if none.
+std::string firstBadValue(const FlowState& state, const SimpleSettings& settings, double bound,
+                          std::array<int, 3>& cell) {
   const StaggeredGrid& grid = state.grid();
   for (int k = 0; k < grid.cells(2); ++k) {
     for (int j = 0; j < grid.cells(1); ++j) {
@@ -116,8 +134,13 @@ std::string firstBadValue(const FlowState& state, const SimpleSettings& settings
           if (eps < -undershoot || eps > 1.0 + undershoot)
             return "the " + phaseName(m) + " fraction is " + std::to_string(eps) + ", outside [0, 1]";
           for (int a = 0; a < grid.dimensions(); ++a) {
-            if (!std::isfinite(state.phases[m].velocity[static_cast<std::size_t>(a)][c]))
-              return "a " + phaseName(m) + " velocity is not finite";
+            const double u = state.phases[m].velocity[static_cast<std::size_t>(a)][c];
+            if (!std::isfinite(u)) return "a " + phaseName(m) + " velocity is not finite";
+            if (std::abs(u) > bound) {
+              return "the " + phaseName(m) + " " + std::string(1, "xyz"[a]) + " velocity is " + std::to_string(u) +
+                     " m/s, beyond the divergence bound " + std::to_string(bound) +
+                     " m/s (100 times the largest inflow speed)";
+            }
           }
         }
       }
@@ -172,6 +195,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
   in.dt = dt;
   in.diluteFraction = settings.diluteFraction;
 
+  const double bound = velocityBound(boundaries);
   StepResult result;
   for (int iteration = 1; iteration <= settings.maxIterations; ++iteration) {
     result.iterations = iteration;
@@ -293,7 +317,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     result.equation = worst.equation;
     result.cell = grid.coordinates(worst.cell);
     std::array<int, 3> badCell{};
-    result.failure = firstBadValue(state, settings, badCell);
+    result.failure = firstBadValue(state, settings, bound, badCell);
     if (!result.failure.empty()) {
       result.cell = badCell;
       return result;

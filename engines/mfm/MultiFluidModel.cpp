@@ -216,6 +216,7 @@ void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::Fl
   const closures::SyamlalCoefficients& kc = now.coefficients;
   const closures::PlasticRegime::Result pl = params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant());
   out.solidsPressure[c] = kc.k1 * eps * eps * theta + pl.pressure;  // Eqs. 3.21 + 3.26
+  out.plasticPressure[c] = pl.pressure;
   out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + plasticViscosityShare(state, m, c) * pl.viscosity;
   out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
   double slope = 2.0 * kc.k1 * eps * theta;
@@ -272,6 +273,7 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   const closures::PlasticRegime::Result pl =
       params_.plastic.evaluate(epsG, eps, fluid::strainRate(state.phases[m], c).deviatorInvariant());
   out.solidsPressure[c] = kin.transport.pressure + pl.pressure;  // kinetic + Eq. 3.26
+  out.plasticPressure[c] = pl.pressure;
   out.shearViscosity[c] = kin.transport.shearViscosity + plasticViscosityShare(state, m, c) * pl.viscosity;
   out.bulkViscosity[c] = kin.transport.secondViscosity();  // lambda_s; the plastic regime has none
   // The kinetic slope at the cell's theta, by a one-sided difference of the kinetic-theory

@@ -24,7 +24,9 @@ class MfmStage final : public StageType {
   //    solids (a mono bed's is its phase's, as before); the mean fields are mean_field_frame.
   // 5: positivity-preserving solids faces (engines/fluid MassFlux).
   // 6: each converged step closes every solids phase's continuity implicitly (no undershoot).
-  [[nodiscard]] int implVersion() const override { return 6; }
+  // 7: with several solids phases each feels its volume share of the mixture's plastic pressure
+  //    gradient (engines/fluid Momentum); one solids phase unchanged bit for bit.
+  [[nodiscard]] int implVersion() const override { return 7; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

@@ -13,6 +13,7 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FrameMapsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/ContinuityTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/SimpleStepTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/MixturePlasticPressureTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
 
