@@ -123,6 +123,19 @@ DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::str
   if (plotted.empty()) throw Error("figure " + (dir / stem).string() + ": nothing to plot");
   DrawnFigure out{stem + ".svg", stem + ".png"};
 
+  // The canvas grows to hold the title and the key's columns (long run labels, such as a
+  // sweep's "bed (gas_inflow 1.30 m/s, rotation_model true), 1 s means", ran off the right edge
+  // of a fixed 540 px SVG): the title at about 7 px per character of the 13 px font, each key
+  // column at 10 px per character (gnuplot sizes key columns by its own, wider, estimate of the
+  // text) plus its sample and gap.
+  const std::size_t keyRows = std::max<std::size_t>(2, (plotted.size() + 1) / 2);
+  const std::size_t keyColumns = (plotted.size() + keyRows - 1) / keyRows;
+  std::size_t longestLabel = 0;
+  for (const Series* s : plotted) longestLabel = std::max(longestLabel, s->label.size());
+  const std::size_t width =
+      std::max<std::size_t>({540, keyColumns * (10 * longestLabel + 80), 7 * figure.title.size() + 80});
+  const std::size_t height = 430 + 20 * (keyRows > 4 ? keyRows - 4 : 0);
+
   std::ostringstream script;
   script << "set encoding utf8\nset termoption noenhanced\n";
   for (std::size_t b = 0; b < plotted.size(); ++b) {
@@ -139,8 +152,7 @@ DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::str
          << "\nset ylabel " << gnuplotString(axisTitle(figure.y)) << "\n"
          << "set grid lc rgb '#dddddd'\nset border lc rgb '#444444'\n"
          // Below the plot in two columns (gnuplot wraps a below-key by rows, not columns).
-         << "set key outside below center vertical maxrows " << std::max<std::size_t>(2, (plotted.size() + 1) / 2)
-         << " Left reverse samplen 2\n"
+         << "set key outside below center vertical maxrows " << keyRows << " Left reverse samplen 2\n"
          << "set format x '%g'\nset format y '%g'\n";
   // A margin around linear data so no point sits on the frame; a log axis ends at decades.
   script << "set offsets graph " << (figure.x.logarithmic ? "0" : "0.02") << ", graph "
@@ -151,10 +163,12 @@ DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::str
   std::string plot = "plot ";
   for (std::size_t b = 0; b < plotted.size(); ++b) plot += (b ? ", " : "") + plotClause(*plotted[b], b);
   // The same plot twice: SVG for the page, PNG at twice the size for slides.
-  script << "set terminal svg size 540,430 font 'sans,13' noenhanced background rgb 'white'\nset output "
-         << gnuplotString((dir / out.svg).string()) << "\n"
+  script << "set terminal svg size " << width << ',' << height
+         << " font 'sans,13' noenhanced background rgb 'white'\nset output " << gnuplotString((dir / out.svg).string())
+         << "\n"
          << plot << "\nset output\n"
-         << "set terminal pngcairo size 1080,860 font 'sans,22' noenhanced lw 2\nset output "
+         << "set terminal pngcairo size " << 2 * width << ',' << 2 * height
+         << " font 'sans,22' noenhanced lw 2\nset output "
          << gnuplotString((dir / out.png).string()) << "\nreplot\nset output\n";
 
   runGnuplot(script.str(), dir, stem, out);

@@ -17,7 +17,9 @@ class BedCompareStage final : public StageType {
   BedCompareStage();
   [[nodiscard]] std::string name() const override { return "bed_compare"; }
   // 2: beds.csv and the table gain the segregation percentage of binary beds.
-  [[nodiscard]] int implVersion() const override { return 2; }
+  // 3: figures as wide as their title and legend need (report/Plot): a sweep's long run labels
+  //    ran off the right edge.
+  [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "multi-fluid bed runs side by side: heights and pressure drops against references, solid-fraction maps";
