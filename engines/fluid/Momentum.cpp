@@ -52,7 +52,9 @@ void diluteEquation(StencilSystem& system, const PhaseFields& phase, const Bound
 // pressure (the binary bed at 1.00 m/s: large particles at 1e-3 reached 100 m/s and more).
 // Identical phases still add up to one phase: the shares sum to one. Returns what to add to
 // the face's pressure-gradient force, -(own plastic gradient) + share * mixture gradient, times
-// the face area, in the sign of `b -= ...`.
+// the face area, in the sign of `b -= ...`. A correction on top of solidsPressure's gradient,
+// not a split of it into kinetic and plastic parts, so that one solids phase (share 1) keeps
+// the same floating-point sum and its results bit for bit.
 double mixturePlasticCorrection(const FlowState& state, const FlowProperties& props, std::size_t m, int a,
                                 std::size_t f) {
   const StaggeredGrid& grid = state.grid();

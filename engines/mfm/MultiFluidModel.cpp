@@ -50,23 +50,23 @@ double closureSolidFraction(const fluid::FlowState& state, std::size_t m, std::s
 // vector per call cost 5 % of the binary bed's run, bench/README.md).
 class CellSolidFractions {
  public:
-  CellSolidFractions(const fluid::FlowState& state, std::size_t c) : size_(state.phases.size() - 1) {
-    if (size_ > inline_.size()) heap_.resize(size_);
-    for (std::size_t l = 1; l <= size_; ++l) (*this)[l - 1] = closureSolidFraction(state, l, c);
+  CellSolidFractions(const fluid::FlowState& state, std::size_t c)
+      : heap_(state.phases.size() - 1 > kInline ? state.phases.size() - 1 : 0),
+        values_(heap_.empty() ? inline_.data() : heap_.data(), state.phases.size() - 1) {
+    for (std::size_t l = 1; l <= values_.size(); ++l) values_[l - 1] = closureSolidFraction(state, l, c);
   }
-  [[nodiscard]] std::size_t size() const { return size_; }
-  double& operator[](std::size_t k) { return data()[k]; }
-  double operator[](std::size_t k) const { return values()[k]; }
-  [[nodiscard]] std::span<const double> values() const {
-    return {size_ > inline_.size() ? heap_.data() : inline_.data(), size_};
-  }
+  CellSolidFractions(const CellSolidFractions&) = delete;  // values_ points into this object
+  CellSolidFractions& operator=(const CellSolidFractions&) = delete;
+  [[nodiscard]] std::size_t size() const { return values_.size(); }
+  double& operator[](std::size_t k) { return values_[k]; }
+  double operator[](std::size_t k) const { return values_[k]; }
+  [[nodiscard]] std::span<const double> values() const { return values_; }
 
  private:
-  double* data() { return size_ > inline_.size() ? heap_.data() : inline_.data(); }
   static constexpr std::size_t kInline = 8;
   std::array<double, kInline> inline_{};
   std::vector<double> heap_;
-  std::size_t size_;
+  std::span<double> values_;
 };
 
 // Phase m's share of the plastic viscosity (Eq. 3.27). Schaeffer's mu^p is written with P*, not

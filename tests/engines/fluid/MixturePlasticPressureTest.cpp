@@ -1,5 +1,6 @@
 // With several solids phases, a phase's momentum sees its volume share of the mixture's plastic
-// pressure gradient, not the gradient of its own eps_sm P* (Momentum.cpp): two cells of a packed
+// pressure gradient, (eps_sm / eps_s) grad(eps_s P*), not the gradient of its own eps_sm P*
+// (Eq. 3.26; MFiX's EP_s(M)/SUM_EPS_CP, Momentum.cpp): two cells of a packed
 // mixture, a thin phase whose fraction falls by two decades from one cell to the next, and the
 // force on the face between them is the thin phase's share of the mixture's gradient. One solids
 // phase keeps the gradient of its own pressure.
