@@ -98,7 +98,7 @@ void couplePointMatrix(std::vector<StencilSystem>& systems, const FaceTerms& t, 
 
 CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
                                       const FlowProperties& properties, int axis, double relaxation,
-                                      double diluteFraction) {
+                                      double diluteFraction, const std::vector<char>& given) {
   const StaggeredGrid& grid = state.grid();
   const std::size_t M = systems.size();
   const double V = grid.cellVolume(), A = grid.faceArea(axis);
@@ -107,6 +107,7 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
     out.pressure.emplace_back(grid, axis);
     out.solidsPressure.emplace_back(grid, axis);
   }
+  const auto isGiven = [&given](std::size_t m) { return !given.empty() && given[m] != 0; };
   const bool closedForm = M == 2 && properties.solidsDrag.empty();
   FaceTerms t(M);
   PointWork work;
@@ -115,10 +116,11 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
     t.X.setZero();
     for (std::size_t m = 0; m < M; ++m) {
       const auto& v = state.phases[m].velocity[static_cast<std::size_t>(axis)].values();
-      t.H[m] = systems[m].neighbourSum(f, v);
-      t.a[m] = systems[m].ap(f);
+      const bool phaseGiven = isGiven(m);
+      t.H[m] = phaseGiven ? 0.0 : systems[m].neighbourSum(f, v);
+      t.a[m] = phaseGiven ? 0.0 : systems[m].ap(f);
       t.u[m] = v[f];
-      t.dilute[m] = diluteFace(state, m, axis, f, diluteFraction) ? 1 : 0;
+      t.dilute[m] = phaseGiven || diluteFace(state, m, axis, f, diluteFraction) ? 1 : 0;
       if (m > 0) t.X(0, m) = t.X(m, 0) = meanOnFace(properties.dragCoefficient[m], axis, f) * V;
     }
     for (const SolidsPairDrag& pair : properties.solidsDrag)
@@ -144,6 +146,9 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
         work.K(i, i) += x;
         work.K(i, j) = -x;
       }
+      for (std::size_t l = 1; l < M; ++l) {
+        if (isGiven(l)) work.K(i, i) += t.X(m, l);
+      }
     }
     work.lu.compute(work.K);
     work.d = work.lu.solve(work.fractions);
@@ -159,7 +164,7 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
     }
   }
   for (std::size_t m = 0; m < M; ++m) {
-    systems[m].relax(relaxation, state.phases[m].velocity[static_cast<std::size_t>(axis)].values());
+    if (!isGiven(m)) systems[m].relax(relaxation, state.phases[m].velocity[static_cast<std::size_t>(axis)].values());
   }
   return out;
 }

@@ -33,9 +33,12 @@ struct CorrectionCoefficients {
 // Adds the drag to `systems` (one per phase, all of component `axis`, assembled without it),
 // relaxes each by `relaxation` (StencilSystem::relax), and returns the correction coefficients.
 // A dilute solids face (Momentum.hpp) keeps its own equation: the gas sees its drag explicitly,
-// and its corrections are zero.
+// and its corrections are zero. A given phase (given[m] != 0; `given` empty: none, FlowModel::givenPhase; its system
+// is left alone) is dilute on every face, except that its exchange stays in the other phases'
+// correction coefficients: their velocities feel it implicitly while its own cannot change, so
+// the gas pressure correction is d_g = eps_g A / (a_g / alpha + F_gm dV).
 CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
                                       const FlowProperties& properties, int axis, double relaxation,
-                                      double diluteFraction);
+                                      double diluteFraction, const std::vector<char>& given = {});
 
 }  // namespace grainbridge::fluid

@@ -150,6 +150,7 @@ StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, c
     if (m > 0) b -= (props.solidsPressure[E] - props.solidsPressure[P]) * grid.faceArea(a);
     if (m > 0 && state.phases.size() > 2) b -= mixturePlasticCorrection(state, *in.properties, m, a, f);
     b += eps * rho * in.gravity[a] * V;
+    if (!props.momentumSource.empty()) b += meanOnFace(props.momentumSource[static_cast<std::size_t>(a)], a, f) * V;
     system.b(f) = b;
   }
   return system;

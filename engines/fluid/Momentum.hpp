@@ -8,7 +8,8 @@
 //   viscous     div(mu grad u) implicit, central (Eq. 3.59); the rest of div(tau) (the transposed
 //               gradient and lambda tr(D)) explicit in b, as MFiX does;
 //   pressure    -eps_m grad P_g and, for solids, -grad P_s, explicit at the current iterate;
-//   gravity     eps_m rho_m g.
+//   gravity     eps_m rho_m g;
+//   source      the phase's explicit momentum source, if the model gives one (PhaseProperties).
 // The interphase drag is not here: InterphaseCoupling adds it with partial elimination, after
 // every phase is assembled. A solids face below the dilute threshold (MFiX DIL_EP_S) has no
 // momentum equation worth the name (every coefficient vanishes with eps_s, and the ratios of

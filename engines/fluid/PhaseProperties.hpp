@@ -38,6 +38,10 @@ struct PhaseProperties {
   // value. Unset (the gas, or solids without it), the patch's own rule holds.
   bool partialSlipWalls = false;
   CellField wallSlipCoefficient;
+  // An explicit momentum source on the phase per unit volume [N/m^3], one cell field per axis,
+  // averaged to the faces as dragCoefficient is: the particle drag TF-DEM sums per cell and
+  // returns to the gas (Eq. 7.32). Empty: none.
+  std::vector<CellField> momentumSource;
 };
 
 // The solids-solids drag coefficient F_sml (Eq. 3.18) of one pair of solids phases l < m, in

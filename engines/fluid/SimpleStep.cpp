@@ -39,6 +39,7 @@ void copyPropertiesToGhosts(FlowProperties& p, const Boundaries& boundaries) {
                          &phase.wallSlipCoefficient}) {
       boundaries.copyToGhosts(*f);
     }
+    for (CellField& f : phase.momentumSource) boundaries.copyToGhosts(f);
   }
   for (CellField& f : p.dragCoefficient) boundaries.copyToGhosts(f);
   for (SolidsPairDrag& pair : p.solidsDrag) boundaries.copyToGhosts(pair.coefficient);
@@ -164,8 +165,10 @@ void gasFromSolids(FlowState& state) {
 // converged faces (Continuity.hpp): exact mass balance and no undershoot below zero, which the
 // iteration's tolerance alone leaves in thin cells; the gas is what the solids leave.
 void closeSolidsContinuity(FlowState& state, const FlowState& old, const FlowProperties& props,
-                           const FlowProperties& oldProps, const Boundaries& boundaries, double dt) {
+                           const FlowProperties& oldProps, const Boundaries& boundaries, double dt,
+                           const std::vector<char>& given) {
   for (std::size_t m = 1; m < state.phases.size(); ++m) {
+    if (given[m] != 0) continue;
     PhaseFields& phase = state.phases[m];
     const auto flux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt));
     solveFractionNonNegative(phase, old.phases[m].fraction, props.phases[m].density, oldProps.phases[m].density, flux,
@@ -180,6 +183,8 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
   const StaggeredGrid& grid = state.grid();
   const std::size_t M = state.phases.size();
   const int dims = grid.dimensions();
+  std::vector<char> given(M, 0);
+  for (std::size_t m = 1; m < M; ++m) given[m] = model.givenPhase(m) ? 1 : 0;
   FlowProperties props = propertiesFor(grid, M, model);
   // The last time level's properties (its densities, for the transient terms), evaluated once.
   FlowProperties oldProps = propertiesFor(grid, M, model);
@@ -221,10 +226,12 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     std::vector<CorrectionCoefficients> corrections;
     for (int a = 0; a < dims; ++a) {
       std::vector<StencilSystem> systems;
-      for (std::size_t m = 0; m < M; ++m) systems.push_back(assembleMomentum(in, m, a, flux[m]));
+      for (std::size_t m = 0; m < M; ++m)
+        systems.push_back(given[m] != 0 ? StencilSystem(grid) : assembleMomentum(in, m, a, flux[m]));
       corrections.push_back(
-          coupleAndRelax(systems, state, props, a, settings.momentumRelaxation, settings.diluteFraction));
+          coupleAndRelax(systems, state, props, a, settings.momentumRelaxation, settings.diluteFraction, given));
       for (std::size_t m = 0; m < M; ++m) {
+        if (given[m] != 0) continue;
         FaceField& u = state.phases[m].velocity[static_cast<std::size_t>(a)];
         const auto r = systems[m].normalisedResidual(u.values(), speed[m]);
         worst.offer(r.value, phaseName(m) + " " + std::string(1, "xyz"[a]) + " momentum", r.worst);
@@ -261,6 +268,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
 
     // 4. Solids fraction corrections (Eqs. 3.68-3.69).
     for (std::size_t m = 1; m < M; ++m) {
+      if (given[m] != 0) continue;
       boundaries.apply(state, &props);
       PhaseFields& phase = state.phases[m];
       const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt));
@@ -325,9 +333,32 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     if (worst.value < settings.tolerance) {
       result.converged = true;
       boundaries.apply(state, &props);
-      if (dt > 0.0 && M > 1) closeSolidsContinuity(state, old, props, oldProps, boundaries, dt);
+      if (dt > 0.0 && M > 1) closeSolidsContinuity(state, old, props, oldProps, boundaries, dt, given);
       return result;
     }
+  }
+  return result;
+}
+
+// Iterates from `start` (the state as the caller passed it), leaving `state` at the new level when
+// the step converged and at `start` otherwise.
+StepResult advanceFrom(FlowState& state, const FlowState& start, const FlowState& old, double dt,
+                       const FlowModel& model, const Boundaries& boundaries, const SimpleSettings& settings) {
+  StepResult result;
+  try {
+    result = iterate(state, old, dt, model, boundaries, settings);
+  } catch (const SingularSystem& e) {
+    // A bad iterate: the step failed, as one that does not converge (a smaller one is tried).
+    result.converged = false;
+    result.failure = e.what();
+  } catch (...) {
+    state = start;  // whatever stops the run leaves the state it was given, never an iterate
+    throw;
+  }
+  if (result.converged) {
+    state.time = old.time + dt;
+  } else {
+    state = start;
   }
   return result;
 }
@@ -337,23 +368,14 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
 StepResult advance(FlowState& state, double dt, const FlowModel& model, const Boundaries& boundaries,
                    const SimpleSettings& settings) {
   const FlowState old = state;
-  StepResult result;
-  try {
-    result = iterate(state, old, dt, model, boundaries, settings);
-  } catch (const SingularSystem& e) {
-    // A bad iterate: the step failed, as one that does not converge (a smaller one is tried).
-    result.converged = false;
-    result.failure = e.what();
-  } catch (...) {
-    state = old;  // whatever stops the run leaves the last converged level, never an iterate
-    throw;
-  }
-  if (result.converged) {
-    state.time = old.time + dt;
-  } else {
-    state = old;
-  }
-  return result;
+  return advanceFrom(state, old, old, dt, model, boundaries, settings);
+}
+
+StepResult advance(FlowState& state, const FlowState& old, double dt, const FlowModel& model,
+                   const Boundaries& boundaries, const SimpleSettings& settings) {
+  gasFromSolids(state);  // the given phases' new fractions leave the gas its own
+  const FlowState start = state;
+  return advanceFrom(state, start, old, dt, model, boundaries, settings);
 }
 
 StepResult solveSteady(FlowState& state, const FlowModel& model, const Boundaries& boundaries,

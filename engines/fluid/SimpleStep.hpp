@@ -40,6 +40,11 @@ class FlowModel {
   // The pairs (l, m), 1 <= l < m, of solids phases that exchange momentum (Eq. 3.18): evaluate()
   // fills FlowProperties::solidsDrag for them, in this order.
   [[nodiscard]] virtual std::vector<std::array<std::size_t, 2>> solidsPairs() const { return {}; }
+  // Whether solids phase m is given, not solved: its fraction and velocity are the caller's (TF-DEM's
+  // particles deposited on the grid, Section 7.2.3). The step solves neither its momentum nor its
+  // continuity; every other phase sees its exchange implicitly at its given velocity (as a dilute
+  // face's, InterphaseCoupling.hpp), and the gas continuity sees its fraction change over the step.
+  [[nodiscard]] virtual bool givenPhase(std::size_t /*m*/) const { return false; }
   // Equations of the model's own beyond mass and momentum (a kinetic-theory model's granular
   // energy, Eq. 3.34), solved once per outer iteration after the continuity corrections, at the
   // iterate's velocities and fractions and the `properties` evaluated at its start. Each returns
@@ -94,6 +99,14 @@ struct StepResult {
 // the way (fluid::SingularSystem) is a step that failed, with its message in `failure`.
 StepResult advance(FlowState& state, double dt, const FlowModel& model, const Boundaries& boundaries,
                    const SimpleSettings& settings);
+
+// The same step from the last time level `old` (time, and every fraction and velocity the transient
+// terms read) to `state`, which holds the given phases' new fractions and velocities and, for the
+// solved phases, the first iterate (usually the last level's values). What a coupled engine calls
+// when it has moved the given phases itself: the gas continuity then sees d eps_g / dt of the
+// particles. On failure `state` is left as it came in; on success its time is old.time + dt.
+StepResult advance(FlowState& state, const FlowState& old, double dt, const FlowModel& model,
+                   const Boundaries& boundaries, const SimpleSettings& settings);
 
 // A steady solve (no transient terms), `iterations` outer iterations at most, stopping at the
 // tolerance: for flows with a steady state (the laminar channel).

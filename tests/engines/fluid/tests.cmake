@@ -14,6 +14,8 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/ContinuityTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/SimpleStepTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/MixturePlasticPressureTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/GivenPhaseTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FieldSamplingTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
 
