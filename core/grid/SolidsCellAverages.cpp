@@ -9,6 +9,17 @@
 
 namespace grainbridge::core::grid {
 
+void particleCellShares(const CellGrid& grid, const Vec3& position, double radius, VolumeDeposition deposition,
+                        CellShares& shares) {
+  if (deposition == VolumeDeposition::CentreCell) {
+    // Eq. 7.35: the whole particle goes to the cell holding its centre.
+    shares.clear();
+    if (const auto cell = grid.cellOf(position)) shares.push_back({grid.flatIndex(*cell), 1.0});
+  } else {
+    sphereCellShares(grid, position, radius, shares);
+  }
+}
+
 SolidsCellAverages averageSolidsOnCells(const CellGrid& grid, std::span<const Vec3> positions,
                                         std::span<const double> radii, std::span<const Vec3> velocities,
                                         VolumeDeposition deposition) {
@@ -23,13 +34,7 @@ SolidsCellAverages averageSolidsOnCells(const CellGrid& grid, std::span<const Ve
   CellShares shares;
   for (std::size_t p = 0; p < positions.size(); ++p) {
     const double vp = 4.0 / 3.0 * M_PI * radii[p] * radii[p] * radii[p];
-    if (deposition == VolumeDeposition::CentreCell) {
-      // Eq. 7.35: the whole particle goes to the cell holding its centre.
-      shares.clear();
-      if (const auto cell = grid.cellOf(positions[p])) shares.push_back({grid.flatIndex(*cell), 1.0});
-    } else {
-      sphereCellShares(grid, positions[p], radii[p], shares);
-    }
+    particleCellShares(grid, positions[p], radii[p], deposition, shares);
     for (const auto& s : shares) {
       volume[s.cell] += vp * s.fraction;
       volumeVelocity[s.cell] += vp * s.fraction * velocities[p];

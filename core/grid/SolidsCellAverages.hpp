@@ -11,6 +11,7 @@
 
 #include "core/Types.hpp"
 #include "core/grid/CellGrid.hpp"
+#include "core/grid/CellShare.hpp"
 
 namespace grainbridge::core::grid {
 
@@ -20,6 +21,11 @@ struct SolidsCellAverages {
   std::vector<double> solidFraction;  // eps_sm, Eq. 7.35 [-]
   std::vector<Vec3> velocity;         // v_sm, Eq. 7.36 [m/s]; zero in a cell without solids
 };
+
+// How one particle's volume is shared among the cells by `deposition` (CentreCell: all of it to
+// the cell holding its centre, none outside the box), into `shares` (cleared first).
+void particleCellShares(const CellGrid& grid, const Vec3& position, double radius, VolumeDeposition deposition,
+                        CellShares& shares);
 
 // positions, radii and velocities are per particle and of equal length (else grainbridge::Error).
 // A particle outside a non-periodic box (or the part of it, for ExactOverlap) is not counted.

@@ -1,7 +1,8 @@
 #pragma once
 // Body forces: what acts on a particle besides its contacts, as a list the step applies in order
-// (gravity, the background damping of Eq. 6.7, the TF-DEM coupling force a_p + B_p (u_p - v_p)
-// the fluid step sets). Each is a small struct; adding one is the struct plus one line in
+// (gravity, the background damping of Eq. 6.7, and TF-DEM's two forces from the gas the fluid
+// step sets: the drag a_p + B_p (u_p - v_p) and the pressure-gradient force, kept apart so the
+// drag alone can be recorded, Fig. 7.7's f'). Each is a small struct; adding one is the struct plus one line in
 // `BodyForceList` below. Any of them can record what it applied to each owned particle at the
 // last force evaluation: TF-DEM hands the gas exactly the force the particles received.
 // Frozen particles receive none (their force and torque are held at zero).
@@ -27,16 +28,25 @@ struct BackgroundDamping {
   static Vec3 on(const Particles& p, const SimulationSetup& s, std::size_t i) { return -s.backgroundDamping * p.v[i]; }
 };
 
-// TF-DEM's coupling force on a particle (Chapter 7: drag and pressure gradient),
-// a_p + B_p (u_p - v_p), from the owned arrays couplingA, couplingB, couplingU the fluid step
-// fills once per fluid step; evaluated every DEM step with the particle's current velocity, so
-// the drag follows the particle between fluid steps.
+// TF-DEM's drag on a particle (Chapter 7, eps_g f_d of Eq. 7.28), a_p + B_p (u_p - v_p), from
+// the owned arrays couplingA, couplingB, couplingU the fluid step fills once per fluid step:
+// a_p a drag held over the fluid step (Eq. 7.33's cell mean), B_p (u_p - v_p) one evaluated every
+// DEM step with the particle's current velocity (Eq. 7.29), so it follows the particle between
+// fluid steps.
 struct FluidCoupling {
   static constexpr const char* name = "fluid_coupling";
   static bool active(const SimulationSetup& /*s*/) { return true; }
   static Vec3 on(const Particles& p, const SimulationSetup& /*s*/, std::size_t i) {
     return p.couplingA[i] + p.couplingB[i] * (p.couplingU[i] - p.v[i]);
   }
+};
+
+// TF-DEM's pressure-gradient force on a particle, -V_p grad P_g (Eq. 7.28), from the owned array
+// couplingPressure the fluid step fills; held over the fluid step.
+struct FluidPressure {
+  static constexpr const char* name = "fluid_pressure";
+  static bool active(const SimulationSetup& /*s*/) { return true; }
+  static Vec3 on(const Particles& p, const SimulationSetup& /*s*/, std::size_t i) { return p.couplingPressure[i]; }
 };
 
 // One body force with its optional record (per owned particle, in the current particle order;
@@ -100,6 +110,7 @@ class BodyForceSet {
 // ---- the list: one line per body force, applied in this order -------------------------------
 using BodyForces = BodyForceSet<Gravity,            //
                                 BackgroundDamping,  //
-                                FluidCoupling>;
+                                FluidCoupling,      //
+                                FluidPressure>;
 
 }  // namespace grainbridge::dem

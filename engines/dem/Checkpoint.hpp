@@ -14,7 +14,8 @@
 namespace grainbridge::dem {
 
 // 2: every per-particle array by name (inverse mass and inertia instead of a frozen flag)
-inline constexpr int kCheckpointFormatVersion = 2;
+// 3: TF-DEM's pressure-gradient force apart from its drag (coupling_pressure)
+inline constexpr int kCheckpointFormatVersion = 3;
 
 // `state` into `group` of an open file, created unless it is the root.
 void writeEngineState(core::io::H5OutputFile& file, const EngineState& state, const std::string& group = "/");

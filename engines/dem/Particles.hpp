@@ -25,11 +25,12 @@ struct Particles {
   std::vector<Vec3> omega;
   std::vector<Vec3> force;
   std::vector<Vec3> torque;
-  // Owned only: TF-DEM coupling force a_p + B_p (u_p - v_p), filled once per fluid step and
-  // evaluated every DEM step with the current velocity.
+  // Owned only: TF-DEM's drag a_p + B_p (u_p - v_p), filled once per fluid step and evaluated
+  // every DEM step with the current velocity, and its pressure-gradient force (BodyForces.hpp).
   std::vector<Vec3> couplingA;
   std::vector<double> couplingB;
   std::vector<Vec3> couplingU;
+  std::vector<Vec3> couplingPressure;
 
   // Ghost bookkeeping: ghost g = nOwned + k is an image of owned particle ghostOwner[k],
   // displaced by ghostShift[k] and moving with the extra velocity ghostVelocityShift[k]
@@ -67,6 +68,7 @@ struct Particles {
     f("coupling_a", p.couplingA);
     f("coupling_b", p.couplingB);
     f("coupling_u", p.couplingU);
+    f("coupling_pressure", p.couplingPressure);
   }
 
   [[nodiscard]] std::size_t size() const { return id.size(); }

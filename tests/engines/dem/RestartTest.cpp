@@ -114,6 +114,7 @@ TEST(Restart, CheckpointFileHoldsEveryParticleArray) {
     p.couplingA[i] = Vec3(1e-3 * static_cast<double>(i), 2.0, -0.5);
     p.couplingB[i] = 0.01 * static_cast<double>(i) + 1.0 / 3.0;
     p.couplingU[i] = Vec3(0.1, 0.2, 1.0 / 7.0);
+    p.couplingPressure[i] = Vec3(0.0, 1e-4 * static_cast<double>(i), 0.0);
   }
   sim.run(200);
   const EngineState state = sim.captureState();
@@ -140,7 +141,7 @@ TEST(Restart, CheckpointFileHoldsEveryParticleArray) {
   };
   Particles::forEachParticleArray(state.particles, compare);
   Particles::forEachOwnedArray(state.particles, compare);
-  EXPECT_EQ(arrays, 14);
+  EXPECT_EQ(arrays, 15);
 }
 
 // A coupled engine (TF-DEM) keeps the DEM state in a group of its checkpoint beside the fluid's:
@@ -181,7 +182,7 @@ TEST(Restart, EngineStateInAGroupEqualsTheRootCheckpoint) {
   };
   Particles::forEachParticleArray(fromGroup.particles, compare);
   Particles::forEachOwnedArray(fromGroup.particles, compare);
-  EXPECT_EQ(arrays, 14);
+  EXPECT_EQ(arrays, 15);
   EXPECT_EQ(fromGroup.buildPositions, fromRoot.buildPositions);
   auto samePair = [](const PairHistory& a, const PairHistory& b) {
     return a.low == b.low && a.high == b.high && a.ut == b.ut;

@@ -1,0 +1,118 @@
+// TF-DEM against what the drag law alone says: a particle falling through still gas (one-way: the
+// gas is held) reaches the terminal velocity where the law's drag, with the buoyancy of -V_p grad
+// P_g, balances its weight; and gas forced through a fixed packed layer loses the pressure Eq.
+// 7.30's Ergun branch gives at the deposited fraction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "engines/fluid/FieldSampling.hpp"
+#include "engines/tfdem/ParticleForces.hpp"
+#include "tests/engines/tfdem/TfdemTestSupport.hpp"
+
+using namespace grainbridge;
+using namespace grainbridge::tfdem;
+using namespace grainbridge::tfdem::testing;
+
+namespace {
+
+constexpr double kRhoG = 1.2, kMuG = 1.8e-5, kG = 9.81;
+
+// The slip at which the law's per-particle drag eps_g f_d balances the buoyant weight.
+double terminalSlip(const closures::GasSolidsDrag& law, double d, double rhoP, double epsS) {
+  const double vp = M_PI / 6.0 * d * d * d, weight = (rhoP - kRhoG) * vp * kG;
+  double lo = 0.0, hi = 100.0;
+  for (int k = 0; k < 200; ++k) {
+    const double v = 0.5 * (lo + hi);
+    closures::DragState s{1.0 - epsS, epsS, d, kRhoG, kMuG, v};
+    ((1.0 - epsS) * law.evaluate(s).particle * v < weight ? lo : hi) = v;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+TEST(TfdemPhysics, AParticleInStillGasReachesTheLawsTerminalVelocity) {
+  const auto g = boxGrid({2, 40, 2}, 1e-2);
+  const fluid::StaggeredGrid grid(g);
+  const double d = 1e-4, rhoP = 2500.0;
+  dem::SimulationSetup setup = walledBox(g, 1e-4);
+  setup.walls.clear();
+  setup.skin = 1e-2;  // one particle: a coarse neighbour grid
+  dem::Particles p;
+  p.addOwned(0, 0, 0.5 * d, rhoP * M_PI / 6.0 * d * d * d, Vec3(0.01, 0.38, 0.01), Vec3::Zero(), Vec3::Zero(),
+             false);
+  dem::Simulation sim(setup, std::move(p));
+  // The gas at rest with its hydrostatic pressure.
+  fluid::FlowState gas(grid, 2);
+  for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
+    const auto [i, j, k] = grid.coordinates(c);
+    gas.phases[0].fraction[c] = 1.0;
+    gas.pressure[c] = 101325.0 - kRhoG * kG * grid.cellCentre(i, j, k).y();
+  }
+  const auto law = closures::GasSolidsDrag::byName("ergun_wen_yu");
+  ParticleForceSettings settings;
+  settings.transfer = DragTransfer::PerParticle;
+  settings.gas = {kRhoG, kMuG};
+  const std::vector<Vec3> noCellDrag(grid.paddedCount(), Vec3::Zero());
+  // 0.3 s: more than 7 relaxation times of this particle (v_t / g = 0.04 s).
+  for (int fluidStep = 0; fluidStep < 300; ++fluidStep) {
+    const ParticleDeposit dep = depositParticles(grid, sim.particles(), VolumeDeposition::CentreCell);
+    for (std::size_t c = 0; c < grid.paddedCount(); ++c) gas.phases[0].fraction[c] = 1.0 - dep.fraction[c];
+    setParticleForces(sim.mutableParticles(), gas, dep, noCellDrag, law, settings);
+    sim.run(10);
+  }
+  const double epsS = M_PI / 6.0 * d * d * d / grid.cellVolume();
+  const double expected = terminalSlip(law, d, rhoP, epsS);
+  EXPECT_GT(expected, 0.3);  // well past Stokes (Re about 2): the law's C_D matters
+  EXPECT_NEAR(-sim.particles().v[0].y(), expected, 0.01 * expected);
+  std::printf("terminal: %.6g m/s, the law's %.6g m/s\n", -sim.particles().v[0].y(), expected);
+  EXPECT_NEAR(sim.particles().v[0].x(), 0.0, 1e-12);
+}
+
+// A simple cubic lattice of frozen 2 mm beads at 2.5 mm spacing fills y 2-6 cm: 64 per 1 cm cell,
+// eps_s = (pi/6) 0.8^3 = 0.268 in every layer cell (Ergun's branch, eps_g < 0.8). Gas enters at
+// 5 cm/s. Inside the layer the flow is uniform, so eps_g dP/dy = -beta v_g (v_s = 0) with
+// v_g = U / eps_g and beta of Eq. 7.30's Ergun branch written out here.
+TEST(TfdemPhysics, GasThroughAFixedLayerLosesTheErgunPressure) {
+  const auto g = boxGrid({2, 10, 2}, 1e-2);
+  const double d = 2e-3, spacing = 2.5e-3, U = 0.05;
+  dem::Particles p;
+  std::int64_t id = 0;
+  for (int k = 0; k < 8; ++k) {
+    for (int j = 0; j < 16; ++j) {
+      for (int i = 0; i < 8; ++i) {
+        const Vec3 x((i + 0.5) * spacing, 0.02 + (j + 0.5) * spacing, (k + 0.5) * spacing);
+        p.addOwned(id++, 0, 0.5 * d, 2500.0 * M_PI / 6.0 * d * d * d, x, Vec3::Zero(), Vec3::Zero(), true);
+      }
+    }
+  }
+  TfdemSetup setup;
+  setup.grid = g;
+  setup.particles = walledBox(g, 1e-4);
+  setup.substeps = 10;
+  setup.boundaries = column(U, 3);
+  setup.gas = {kRhoG, kMuG};
+  setup.solver.gravity = Vec3::Zero();
+  setup.solver.tolerance = 1e-10;
+  setup.solver.maxIterations = 200;
+  const fluid::StaggeredGrid grid(g);
+  const auto dir = std::filesystem::temp_directory_path() / "grainbridge-tfdem-ergun";
+  std::filesystem::remove_all(dir);
+  TfdemEngine engine(setup, std::move(p), uniformGas(grid, U), dir, core::io::ArtifactStamp{"test"});
+  for (int step = 0; step < 100; ++step) engine.advance(false);
+  const double epsS = M_PI / 6.0 * 0.8 * 0.8 * 0.8, epsG = 1.0 - epsS, vg = U / epsG;
+  EXPECT_NEAR(engine.deposit().fraction[grid.index(1, 3, 1)], epsS, 1e-12);
+  const double beta = 150.0 * epsS * epsS * kMuG / (epsG * d * d) + 1.75 * epsS * kRhoG * vg / d;
+  const double expected = beta * vg / epsG * 0.03;  // from the first layer cell's centre to the last's
+  const auto& P = engine.flow().pressure;
+  for (int i = 0; i < 2; ++i) {
+    for (int k = 0; k < 2; ++k) {
+      const double dp = P[grid.index(i, 2, k)] - P[grid.index(i, 5, k)];
+      EXPECT_NEAR(dp, expected, 0.01 * expected) << i << " " << k;
+      std::printf("fixed layer: dp %.6g Pa, Ergun %.6g Pa\n", dp, expected);
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
