@@ -1,0 +1,123 @@
+#include "workflows/stages/ParticleSchema.hpp"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "engines/dem/contact/Conversions.hpp"
+
+namespace grainbridge::workflows::stages {
+
+using core::units::Dimension;
+using nlohmann::json;
+using params::ParamSchema;
+using params::ParamSpec;
+
+// The contact coefficients shared by particle pairs and walls (Eqs. 6.5-6.6, Table 6.1). Which
+// damping keys apply depends on the stage's damping_model (checked in checkParams).
+void addContactParams(ParamSchema& s) {
+  s.add(ParamSpec::quantity("kn", Dimension::stiffness()).positive().doc("normal spring constant k_n (Eq. 6.5)"))
+      .add(ParamSpec::quantity("contact_time", Dimension::timeDim())
+               .positive()
+               .doc("contact time t_c instead of kn: k_n from Eq. 6.10 with each pair's m_eff (linear spring)"))
+      .add(ParamSpec::quantity("kt", Dimension::stiffness())
+               .min(0.0)
+               .doc("tangential spring constant k_t (default 2/7 k_n)"))
+      .add(ParamSpec::quantity("gamma_n", Dimension::frequency())
+               .min(0.0)
+               .doc("normal damping rate gamma_n, times m_eff in Eq. 6.5 (damping_model mass_scaled)"))
+      .add(ParamSpec::quantity("eta_n", Dimension{0, 1, -1})
+               .min(0.0)
+               .doc("normal dashpot coefficient eta_n: F = -eta_n v_n (damping_model dimensional)"))
+      .add(ParamSpec::number("restitution")
+               .min(0.0, false)
+               .max(1.0)
+               .doc("normal restitution e_n: the normal damping from Eqs. 6.9-6.10 with each pair's m_eff (linear "
+                    "spring), or from a head-on collision at impact_velocity (hertz)"))
+      .add(ParamSpec::quantity("impact_velocity", Dimension::velocity())
+               .positive()
+               .doc("the impact speed at which restitution holds (needed with normal_model hertz, whose "
+                    "restitution depends on it)"))
+      .add(ParamSpec::quantity("gamma_t", Dimension::frequency())
+               .min(0.0)
+               .doc("tangential damping rate gamma_t (Eq. 6.6; default 0)"))
+      .add(ParamSpec::quantity("eta_t", Dimension{0, 1, -1})
+               .min(0.0)
+               .doc("tangential dashpot coefficient eta_t (damping_model dimensional; default 0)"))
+      .add(ParamSpec::number("mu").defaultValue(0.5).min(0.0).doc("Coulomb friction coefficient"))
+      .exactlyOneOf({"kn", "contact_time"}, "the normal stiffness")
+      .exactlyOneOf({"gamma_n", "eta_n", "restitution"}, "the normal damping")
+      .atMostOneOf({"gamma_t", "eta_t"}, "the tangential damping")
+      .requiresKey("impact_velocity", "restitution");
+}
+
+// The damping keys a contact object may carry under the stage's damping_model, and that a
+// Hertzian restitution states its impact speed.
+void checkContactKeys(const json& c, const json& p, const std::string& where, core::json::Diagnostics& d) {
+  const bool dimensional = p.at("damping_model") == dem::contact::DimensionalDamping::name;
+  const std::array<const char*, 2> foreign =
+      dimensional ? std::array<const char*, 2>{"gamma_n", "gamma_t"} : std::array<const char*, 2>{"eta_n", "eta_t"};
+  for (const char* key : foreign) {
+    if (c.contains(key)) {
+      d.add(where + "/" + key, std::string(key) + " does not apply with damping_model \"" +
+                                   p.at("damping_model").get<std::string>() + "\" (use " +
+                                   (dimensional ? "eta_n, eta_t" : "gamma_n, gamma_t") + ")");
+    }
+  }
+  const auto law =
+      dem::contact::findContactLaw({p.at("normal_model"), p.at("damping_model"), p.at("tangential_model")});
+  if (law && c.contains("contact_time") && !dem::contact::hasClosedFormCollision(*law)) {
+    d.add(where + "/contact_time", "with normal_model \"" + p.at("normal_model").get<std::string>() +
+                                       "\" the contact time depends on the impact speed: give kn");
+  }
+  if (law && c.contains("restitution") && !c.contains("impact_velocity") &&
+      !dem::contact::hasClosedFormCollision(*law)) {
+    d.add(where + "/restitution",
+          "with normal_model \"" + p.at("normal_model").get<std::string>() +
+              "\" the restitution depends on the impact speed: give impact_velocity (the speed at which it holds), "
+              "or the damping itself");
+  }
+}
+
+std::shared_ptr<ParamSchema> speciesSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("name").required().doc("species name"))
+      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("sphere diameter"))
+      .add(ParamSpec::quantity("density", Dimension::density()).required().positive().doc("material density"))
+      .add(ParamSpec::integer("count").defaultValue(0).min(0).doc(
+          "number of spheres inserted at random (0 with lammps_data)"))
+      .add(ParamSpec::boolean("frozen").defaultValue(false).doc("fixed in place with infinite mass (rough bases)"));
+  return s;
+}
+
+std::shared_ptr<ParamSchema> contactSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  addContactParams(*s);
+  return s;
+}
+
+// Coefficients for one species pair, replacing `contact` for it.
+std::shared_ptr<ParamSchema> pairContactSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("species").required().doc("one species of the pair"))
+      .add(ParamSpec::string("with").required().doc("the other species (may be the same)"));
+  addContactParams(*s);
+  return s;
+}
+
+void checkContactTimes(const DemSetup& setup, double dt, const std::string& ptr, core::json::Diagnostics& d) {
+  for (const auto& t : setup.timings) {
+    if (!std::isfinite(t.contactTime)) {
+      d.add(ptr + t.pointer, "pair " + t.pair +
+                                 " is overdamped (gamma_n^2/4 >= k_n/m_eff): no rebound and no contact time (Eq. "
+                                 "6.10); lower gamma_n or raise k_n");
+    } else if (dt > t.contactTime / 10.0) {
+      std::ostringstream msg;
+      msg << "dt = " << dt << " s is above t_c/10 = " << t.contactTime / 10.0 << " s of pair " << t.pair
+          << " (t_c from Eq. 6.10); the reference recommends about t_c/50";
+      d.add(ptr + "/dt", msg.str());
+    }
+  }
+}
+
+}  // namespace grainbridge::workflows::stages
