@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engines/closures/MinimumFluidization.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 #include "engines/fluid/FieldSampling.hpp"
 #include "engines/tfdem/ParticleForces.hpp"
 #include "tests/engines/tfdem/TfdemTestSupport.hpp"
@@ -114,5 +116,67 @@ TEST(TfdemPhysics, GasThroughAFixedLayerLosesTheErgunPressure) {
       std::printf("fixed layer: dp %.6g Pa, Ergun %.6g Pa\n", dp, expected);
     }
   }
+  std::filesystem::remove_all(dir);
+}
+
+// A 2D bed (one layer of 300 beads of 4 mm, Table 7.1's jet material, in an 8 x 24 cm box one
+// diameter deep) at 1.5 times the drag law's U_mf: fluidized, the gas carries the whole bed, so
+// the time-averaged pressure drop across it is its buoyant weight per unit area of the bottom.
+TEST(TfdemPhysics, AFluidizedTwoDimensionalBedIsCarriedByTheGas) {
+  const double d = 4e-3, rhoP = 2700.0;
+  core::data::GridGeometry g;
+  g.cells = {8, 24, 1};
+  g.spacing = Vec3(0.01, 0.01, d);
+  TfdemSetup setup;
+  setup.grid = g;
+  setup.particles = walledBox(g, 1.5e-5);
+  setup.particles.walls.resize(4);  // x and y only: planar beds need no z walls
+  setup.particles.planarAxis = 2;
+  setup.particles.pairMaterial[0].gammaN = 400.0;  // eta_n 0.018 kg/s at m_eff of two 4 mm beads
+  for (auto& w : setup.particles.walls) w.material[0].gammaN = 400.0;
+  setup.particles.skin = 1e-3;
+  setup.substeps = 10;
+  setup.gas = {kRhoG, kMuG};
+  setup.solver.gravity = Vec3(0.0, -kG, 0.0);
+  dem::Particles particles = randomBeads(300, d, rhoP, Vec3::Zero(), Vec3(0.08, 0.10, d), 5);
+  // U_mf of the drag law at the settled bed's mean fraction: one layer at area fraction about 0.8
+  // is eps_s = 0.8 * 2/3 in a slab one diameter deep.
+  closures::PackedBed packed;
+  packed.voidFraction = 1.0 - 0.8 * 2.0 / 3.0;
+  packed.diameter = d;
+  packed.solidsDensity = rhoP;
+  packed.gasDensity = kRhoG;
+  packed.gasViscosity = kMuG;
+  const double umf = closures::minimumFluidizationVelocity(setup.drag, packed);
+  const double inflow = 1.5 * umf;
+  setup.boundaries = column(inflow, 2);
+  for (std::size_t k = 2; k < setup.boundaries.size(); ++k) setup.boundaries[k].kind = fluid::BoundaryKind::NoSlipWall;
+  const fluid::StaggeredGrid grid(g);
+  const auto dir = std::filesystem::temp_directory_path() / "grainbridge-tfdem-bed2d";
+  std::filesystem::remove_all(dir);
+  TfdemEngine engine(setup, std::move(particles), uniformGas(grid, inflow), dir, core::io::ArtifactStamp{"test"});
+  const fluid::VerticalAxis up{1, 1.0};
+  const double fluidDt = setup.fluidDt();
+  double sum = 0.0;
+  int samples = 0;
+  const auto steps = static_cast<int>(std::lround(3.0 / fluidDt));
+  for (int step = 1; step <= steps; ++step) {
+    engine.advance(false);
+    if (engine.time() < 1.0) continue;
+    // Bottom to top, less the gas column's own weight.
+    sum += fluid::pressureAtHeight(engine.flow(), up, 0.0) - fluid::pressureAtHeight(engine.flow(), up, 0.24) -
+           kRhoG * kG * 0.24;
+    ++samples;
+  }
+  double weight = 0.0;
+  const auto& p = engine.simulation().particles();
+  for (std::size_t i = 0; i < p.nOwned; ++i) weight += p.mass[i] * (1.0 - kRhoG / rhoP) * kG;
+  const double perArea = weight / (0.08 * d), mean = sum / samples;
+  std::printf("2D bed at %.3f m/s (U_mf %.3f): mean dp %.2f Pa, buoyant weight %.2f Pa\n", inflow, umf, mean, perArea);
+  EXPECT_NEAR(mean, perArea, 0.03 * perArea);
+  // Carried, not pinned against the top wall (which would carry weight of its own).
+  double height = 0.0;
+  for (std::size_t i = 0; i < p.nOwned; ++i) height += p.x[i].y() / static_cast<double>(p.nOwned);
+  EXPECT_LT(height, 0.12);
   std::filesystem::remove_all(dir);
 }

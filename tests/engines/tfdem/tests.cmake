@@ -10,4 +10,5 @@ grainbridge_add_test(test_tfdem_physics
   SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/tfdem/TfdemPhysicsTest.cpp
   LIBS engines_tfdem
-  LABELS "physics;tfdem")
+  LABELS "physics;tfdem"
+  TIMEOUT 300)
