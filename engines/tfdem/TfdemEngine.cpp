@@ -84,9 +84,42 @@ void TfdemEngine::startCoupling() {
   gasImpulse_.assign(grid_.paddedCount(), Vec3::Zero());
 }
 
+void TfdemEngine::setGasActive(bool active) {
+  gasActive_ = active;
+  if (active) return;
+  dem::Particles& p = sim_.mutableParticles();
+  for (std::size_t i = 0; i < p.nOwned; ++i) {
+    p.couplingPressure[i].setZero();
+    p.couplingA[i].setZero();
+    p.couplingB[i] = 0.0;
+    p.couplingU[i].setZero();
+  }
+  std::fill(summedDrag_.begin(), summedDrag_.end(), Vec3::Zero());
+}
+
+void TfdemEngine::restartClock() {
+  sim_.restartClock();
+  flow_.time = 0.0;
+  step_ = 0;
+}
+
 void TfdemEngine::advance(bool observed) {
   frame_.reset();
   const double fluidDt = setup_.fluidDt();
+  if (!gasActive_) {
+    for (int s = 0; s < setup_.substeps; ++s) sim_.step(observed && s + 1 == setup_.substeps);
+    deposit_ = depositParticles(grid_, sim_.particles(), setup_.deposition);
+    setParticlePhase(deposit_, flow_.phases[1]);
+    for (std::size_t c = 0; c < grid_.paddedCount(); ++c) {
+      if (grid_.interior(c)) flow_.phases[0].fraction[c] = 1.0 - flow_.phases[1].fraction[c];
+    }
+    boundaries_.apply(flow_);
+    flow_.time += fluidDt;
+    std::fill(particleImpulse_.begin(), particleImpulse_.end(), Vec3::Zero());
+    std::fill(gasImpulse_.begin(), gasImpulse_.end(), Vec3::Zero());
+    ++step_;
+    return;
+  }
   // 1-2. The particles as they are now, and the gas step from the last deposit to this one.
   ParticleDeposit next = depositParticles(grid_, sim_.particles(), setup_.deposition);
   fluid::FlowState state = flow_;

@@ -77,6 +77,16 @@ class TfdemEngine final : public core::engine::SteppedEngine {
   }
   [[nodiscard]] std::string throughputNote() const override;
 
+  // A phase without the gas (settling the bed before the gas is turned on): advance() runs the
+  // DEM sub-steps alone with no force from the gas, keeps the gas's clock and its particle
+  // fractions with the particles (so the first gas step starts from where they are), and leaves
+  // the gas's pressure and velocity as they are. Not part of the saved state: a stage sets it
+  // when a phase starts or resumes.
+  void setGasActive(bool active);
+  [[nodiscard]] bool gasActive() const { return gasActive_; }
+  // The run's clock, the particles' and the gas's, and the step count start at zero.
+  void restartClock();
+
   [[nodiscard]] const dem::Simulation& simulation() const { return sim_; }
   [[nodiscard]] const fluid::FlowState& flow() const { return flow_; }
   [[nodiscard]] const fluid::StaggeredGrid& grid() const { return grid_; }
@@ -113,6 +123,7 @@ class TfdemEngine final : public core::engine::SteppedEngine {
   std::vector<Vec3> particleImpulse_, gasImpulse_;
   std::int64_t step_ = 0;
   int lastIterations_ = 0;
+  bool gasActive_ = true;
   core::io::ParticleFrameWriter particleWriter_;
   core::io::FieldFrameWriter gasWriter_;
   std::optional<core::data::ParticleFrame> frame_;
