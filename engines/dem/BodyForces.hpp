@@ -42,10 +42,11 @@ struct FluidCoupling {
 };
 
 // TF-DEM's pressure-gradient force on a particle, -V_p grad P_g (Eq. 7.28), from the owned array
-// couplingPressure the fluid step fills; held over the fluid step.
+// couplingPressure the fluid step fills; held over the fluid step. Only in a fluid-coupled run
+// (FluidCoupling stays always on, as it always has been, so plain DEM runs keep their bits).
 struct FluidPressure {
   static constexpr const char* name = "fluid_pressure";
-  static bool active(const SimulationSetup& /*s*/) { return true; }
+  static bool active(const SimulationSetup& s) { return s.fluidCoupled; }
   static Vec3 on(const Particles& p, const SimulationSetup& /*s*/, std::size_t i) { return p.couplingPressure[i]; }
 };
 

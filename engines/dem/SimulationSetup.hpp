@@ -41,6 +41,9 @@ struct SimulationSetup {
   std::vector<PairMaterial> pairMaterial;  // species x species, row-major, symmetric
   std::vector<Wall> walls;
   int sortEveryRebuilds = 20;  // re-sort particles by cell every this many rebuilds (0: never)
+  // Set by TF-DEM (not a key of the dem stage): the gas's pressure-gradient force applies
+  // (BodyForces.hpp: FluidPressure), so a plain DEM run's steps do not read its array.
+  bool fluidCoupled = false;
 
   [[nodiscard]] const PairMaterial& material(int a, int b) const {
     return pairMaterial[static_cast<std::size_t>(a * species + b)];

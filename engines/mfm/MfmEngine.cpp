@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/io/CheckpointFile.hpp"
+#include "engines/fluid/FieldSampling.hpp"
 #include "engines/fluid/FlowStateIo.hpp"
 
 namespace grainbridge::mfm {
@@ -67,25 +68,17 @@ core::data::FieldFrame MfmEngine::frame() const {
     phase.theta.resize(n);
     f.solids.push_back(std::move(phase));
   }
-  auto centred = [&](const fluid::PhaseFields& phase, std::size_t c) {
-    Vec3 v = Vec3::Zero();
-    for (int a = 0; a < grid.dimensions(); ++a) {
-      const auto& u = phase.velocity[static_cast<std::size_t>(a)];
-      v[a] = 0.5 * (u[c] + u[grid.neighbour(c, a, -1)]);
-    }
-    return v;
-  };
   for (int k = 0; k < grid.cells(2); ++k) {
     for (int j = 0; j < grid.cells(1); ++j) {
       for (int i = 0; i < grid.cells(0); ++i) {
         const std::size_t c = grid.index(i, j, k), out = f.grid.index(i, j, k);
         f.ep_g[out] = st.phases[0].fraction[c];
         f.p_g[out] = st.pressure[c];
-        f.u_g[out] = centred(st.phases[0], c);
+        f.u_g[out] = fluid::cellVelocity(st.phases[0], c);
         for (std::size_t m = 1; m < st.phases.size(); ++m) {
           auto& phase = f.solids[m - 1];
           phase.ep_s[out] = st.phases[m].fraction[c];
-          phase.u_s[out] = centred(st.phases[m], c);
+          phase.u_s[out] = fluid::cellVelocity(st.phases[m], c);
           phase.theta[out] = engine_->model().granularTemperature(st, m, c);
         }
       }

@@ -10,6 +10,7 @@
 #include "engines/closures/EffectiveRestitution.hpp"
 #include "engines/closures/GranularEnergyGasTerms.hpp"
 #include "engines/closures/RadialDistribution.hpp"
+#include "engines/fluid/FieldSampling.hpp"
 #include "engines/fluid/MassFlux.hpp"
 #include "engines/fluid/StrainRate.hpp"
 #include "engines/mfm/GranularEnergy.hpp"
@@ -78,17 +79,6 @@ double plasticViscosityShare(const fluid::FlowState& state, std::size_t m, std::
   double total = 0.0;
   for (double eps : fractions.values()) total += eps;
   return total > 0.0 ? fractions[m - 1] / total : 0.0;
-}
-
-// The cell-centred velocity of a phase.
-Vec3 centredVelocity(const fluid::PhaseFields& phase, std::size_t c) {
-  const fluid::StaggeredGrid& grid = phase.fraction.grid();
-  Vec3 v = Vec3::Zero();
-  for (int a = 0; a < grid.dimensions(); ++a) {
-    const auto& u = phase.velocity[static_cast<std::size_t>(a)];
-    v[a] = 0.5 * (u[c] + u[grid.neighbour(c, a, -1)]);
-  }
-  return v;
 }
 
 // |v_g - v_s| at the cell centre, component by component as the drag has always read it.
@@ -167,7 +157,7 @@ void MultiFluidModel::evaluateSolidsDrag(const fluid::FlowState& state, fluid::F
     const SolidsPhase& m = params_.solids[pair.m - 1];
     const double g0 = mixture.g0(pair.l - 1, pair.m - 1);
     const double relative =
-        (centredVelocity(state.phases[pair.l], c) - centredVelocity(state.phases[pair.m], c)).norm();
+        (fluid::cellVelocity(state.phases[pair.l], c) - fluid::cellVelocity(state.phases[pair.m], c)).norm();
     p.solidsDrag[k].coefficient[c] = closures::SolidsSolidsDrag{pair.drag}.evaluate(
         {fractions[pair.l - 1], l.density, l.diameter}, {fractions[pair.m - 1], m.density, m.diameter}, g0, relative);
   }
@@ -357,7 +347,7 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
           if (params_.wall) {
             // The wall's slip speed from the cell-centred solids velocity along the wall, reduced
             // as the Robin ghost reduces it: v_wall = mu/h / (mu/h + c/2) v_cell.
-            const Vec3 v = centredVelocity(phase, c);
+            const Vec3 v = fluid::cellVelocity(phase, c);
             for (int a = 0; a < dims; ++a) {
               Vec3 along = v;
               along[a] = 0.0;

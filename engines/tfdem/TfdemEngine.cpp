@@ -19,6 +19,12 @@ namespace {
 // 1: the DEM state in /particles, the flow in /gas, the summed drag and the step at the root.
 constexpr int kCheckpointFormatVersion = 1;
 
+// The setup with the DEM told that the gas's forces apply.
+TfdemSetup fluidCoupled(TfdemSetup setup) {
+  setup.particles.fluidCoupled = true;
+  return setup;
+}
+
 std::string describe(const fluid::StepResult& r) {
   std::ostringstream s;
   if (!r.failure.empty()) {
@@ -34,7 +40,7 @@ std::string describe(const fluid::StepResult& r) {
 
 TfdemEngine::TfdemEngine(TfdemSetup setup, dem::Particles particles, const fluid::FlowState& initialGas,
                          const fs::path& outputDir, core::io::ArtifactStamp stamp)
-    : setup_(std::move(setup)),
+    : setup_(fluidCoupled(std::move(setup))),
       grid_(setup_.grid),
       boundaries_(grid_, setup_.boundaries, 2),
       sim_(setup_.particles, std::move(particles)),
@@ -52,16 +58,12 @@ TfdemEngine::TfdemEngine(TfdemSetup setup, dem::Particles particles, const fluid
     const auto axis = static_cast<std::size_t>(a);
     flow_.phases[0].velocity[axis].values() = initialGas.phases[0].velocity[axis].values();
   }
-  setParticlePhase(deposit_, flow_.phases[1]);
-  for (std::size_t c = 0; c < grid_.paddedCount(); ++c) {
-    if (grid_.interior(c)) flow_.phases[0].fraction[c] = 1.0 - flow_.phases[1].fraction[c];
-  }
-  boundaries_.apply(flow_);
+  gasFollowsDeposit();
 }
 
 TfdemEngine::TfdemEngine(TfdemSetup setup, const core::io::H5InputFile& checkpoint, const fs::path& outputDir,
                          core::io::ArtifactStamp stamp)
-    : setup_(std::move(setup)),
+    : setup_(fluidCoupled(std::move(setup))),
       grid_(setup_.grid),
       boundaries_(grid_, setup_.boundaries, 2),
       sim_(setup_.particles, dem::readEngineState(checkpoint, "/particles")),
@@ -82,6 +84,14 @@ void TfdemEngine::startCoupling() {
   summedDrag_.assign(grid_.paddedCount(), Vec3::Zero());
   particleImpulse_.assign(grid_.paddedCount(), Vec3::Zero());
   gasImpulse_.assign(grid_.paddedCount(), Vec3::Zero());
+}
+
+void TfdemEngine::gasFollowsDeposit() {
+  setParticlePhase(deposit_, flow_.phases[1]);
+  for (std::size_t c = 0; c < grid_.paddedCount(); ++c) {
+    if (grid_.interior(c)) flow_.phases[0].fraction[c] = 1.0 - flow_.phases[1].fraction[c];
+  }
+  boundaries_.apply(flow_);
 }
 
 void TfdemEngine::setGasActive(bool active) {
@@ -109,11 +119,7 @@ void TfdemEngine::advance(bool observed) {
   if (!gasActive_) {
     for (int s = 0; s < setup_.substeps; ++s) sim_.step(observed && s + 1 == setup_.substeps);
     deposit_ = depositParticles(grid_, sim_.particles(), setup_.deposition);
-    setParticlePhase(deposit_, flow_.phases[1]);
-    for (std::size_t c = 0; c < grid_.paddedCount(); ++c) {
-      if (grid_.interior(c)) flow_.phases[0].fraction[c] = 1.0 - flow_.phases[1].fraction[c];
-    }
-    boundaries_.apply(flow_);
+    gasFollowsDeposit();
     flow_.time += fluidDt;
     std::fill(particleImpulse_.begin(), particleImpulse_.end(), Vec3::Zero());
     std::fill(gasImpulse_.begin(), gasImpulse_.end(), Vec3::Zero());
@@ -173,7 +179,7 @@ void TfdemEngine::advance(bool observed) {
       }
     }
   }
-  const GasGridCells cells(grid_);
+  const std::optional<GasGridCells> cells = cellAverage ? std::nullopt : std::optional<GasGridCells>(grid_);
   core::grid::CellShares one;
   for (int s = 0; s < setup_.substeps; ++s) {
     sim_.step(observed && s + 1 == setup_.substeps);
@@ -181,7 +187,7 @@ void TfdemEngine::advance(bool observed) {
     const std::vector<Vec3>& drag = sim_.bodyForces().applied<dem::FluidCoupling>();
     for (std::size_t i = 0; i < p.nOwned; ++i) {
       if (drag[i].isZero(0.0)) continue;
-      cells.shares(p.x[i], p.radius[i], setup_.deposition, one);
+      cells->shares(p.x[i], p.radius[i], setup_.deposition, one);
       for (const auto& share : one) particleImpulse_[share.cell] += share.fraction * drag[i] * dt;
     }
   }

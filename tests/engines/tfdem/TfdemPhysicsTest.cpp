@@ -21,7 +21,8 @@ namespace {
 
 constexpr double kRhoG = 1.2, kMuG = 1.8e-5, kG = 9.81;
 
-// The slip at which the law's per-particle drag eps_g f_d balances the buoyant weight.
+// The slip at which the law's per-particle drag eps_g f_d (Eq. 7.29, beta of Eqs. 7.30-7.31's
+// Wen-Yu branch at this dilute fraction) balances the buoyant weight.
 double terminalSlip(const closures::GasSolidsDrag& law, double d, double rhoP, double epsS) {
   const double vp = M_PI / 6.0 * d * d * d, weight = (rhoP - kRhoG) * vp * kG;
   double lo = 0.0, hi = 100.0;
@@ -42,6 +43,7 @@ TEST(TfdemPhysics, AParticleInStillGasReachesTheLawsTerminalVelocity) {
   dem::SimulationSetup setup = walledBox(g, 1e-4);
   setup.walls.clear();
   setup.skin = 1e-2;  // one particle: a coarse neighbour grid
+  setup.fluidCoupled = true;  // the buoyancy -V_p grad P_g applies
   dem::Particles p;
   p.addOwned(0, 0, 0.5 * d, rhoP * M_PI / 6.0 * d * d * d, Vec3(0.01, 0.38, 0.01), Vec3::Zero(), Vec3::Zero(),
              false);
@@ -121,7 +123,9 @@ TEST(TfdemPhysics, GasThroughAFixedLayerLosesTheErgunPressure) {
 
 // A 2D bed (one layer of 300 beads of 4 mm, Table 7.1's jet material, in an 8 x 24 cm box one
 // diameter deep) at 1.5 times the drag law's U_mf: fluidized, the gas carries the whole bed, so
-// the time-averaged pressure drop across it is its buoyant weight per unit area of the bottom.
+// the time-averaged pressure drop across it is its buoyant weight per unit area of the bottom
+// (the gas momentum balance of Eq. 7.32 summed over the bed: the drag and -eps_s grad P_g the
+// particles feel are what holds them up; U_mf from the law, closures::minimumFluidizationVelocity).
 TEST(TfdemPhysics, AFluidizedTwoDimensionalBedIsCarriedByTheGas) {
   const double d = 4e-3, rhoP = 2700.0;
   core::data::GridGeometry g;
