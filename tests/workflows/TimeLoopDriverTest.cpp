@@ -106,6 +106,7 @@ struct ToyRun {
   std::int64_t crashAt = -1;
   std::int64_t failAt = -1;
   double checkpointEvery = 600.0;
+  std::int64_t pollEvery = 256;
 };
 
 // The whole toy stage: setup, one observer, the driver. Returns the context for its artifacts.
@@ -122,6 +123,7 @@ std::unique_ptr<stages::StageContext> runToyStage(const fs::path& dir, const Toy
   options.seriesRows = 100;
   options.checkpointEvery = std::chrono::duration<double>(how.checkpointEvery);
   options.progress = false;
+  options.pollEvery = how.pollEvery;
   driver::TimeLoopDriver loop(*ctx, options);
   auto engine = loop.start<DecayingScalar>([&] { return std::make_unique<DecayingScalar>(1.0, 0.0, 0, dir); },
                                            [&](const fs::path& state) { return DecayingScalar::restore(state, dir); });
@@ -179,6 +181,16 @@ TEST_F(TimeLoopDriverTest, SigtermCheckpointsStopsAndTheResumedRunIsBitIdentical
   EXPECT_NE(core::readFile(work.path() / "checkpoint/driver.json").find("\"phase_step\": 768"), std::string::npos);
   EXPECT_FALSE(fs::exists(work.path() / "series.csv"));
   runToyStage(work.path(), {});
+  EXPECT_EQ(core::readFile(work.path() / "series.csv"), core::readFile(reference.path() / "series.csv"));
+  EXPECT_EQ(frameData(work.path()), frameData(reference.path()));
+}
+
+TEST_F(TimeLoopDriverTest, AnEngineOfCoarseStepsIsPolledEveryStep) {
+  // An mfm step is a whole output interval: polled every step, the stop (flagged at the series
+  // row of step 40) is seen at that step, not at step 256.
+  EXPECT_THROW(runToyStage(work.path(), {.stopAt = 40, .pollEvery = 1}), stages::StageInterrupted);
+  EXPECT_NE(core::readFile(work.path() / "checkpoint/driver.json").find("\"phase_step\": 40"), std::string::npos);
+  runToyStage(work.path(), {.pollEvery = 1});
   EXPECT_EQ(core::readFile(work.path() / "series.csv"), core::readFile(reference.path() / "series.csv"));
   EXPECT_EQ(frameData(work.path()), frameData(reference.path()));
 }

@@ -22,10 +22,6 @@ bool onSchedule(std::int64_t step, std::int64_t count, std::int64_t total) {
   return count > 0 && step * count / total != (step - 1) * count / total;
 }
 
-// Stops, checkpoints and progress are looked at every this many steps: often enough for a
-// prompt stop, rarely enough to cost nothing next to a step.
-constexpr std::int64_t kPollMask = 255;
-
 }  // namespace
 
 TimeLoopDriver::TimeLoopDriver(stages::StageContext& ctx, TimeLoopOptions options)
@@ -91,7 +87,7 @@ void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t i
     if (frameStep) engine.writeFrames();
     // Not on a phase's last step: what is left there is bookkeeping, and a run resumed after its
     // last step would hold no observed state for the stage's summary.
-    if ((s & kPollMask) == 0 && s < phase.steps) {
+    if (s % options_.pollEvery == 0 && s < phase.steps) {
       if (ctx_.stopRequested()) {
         checkpoint(engine, index, s);  // a batch system's SIGTERM: save, then stop cleanly
         spdlog::warn("{}: stopped at step {} of {}{}; checkpoint written, the next run resumes here", ctx_.stage(), s,

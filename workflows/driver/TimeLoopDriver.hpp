@@ -34,6 +34,10 @@ struct TimeLoopOptions {
   std::int64_t seriesRows = 1;  // series rows, evenly spaced over the output phase
   std::chrono::duration<double> checkpointEvery{600.0};
   bool progress = true;
+  // Stops, checkpoints and progress are looked at every this many steps: 256 suits a DEM step (a
+  // few microseconds); an engine whose step is a whole output interval (mfm) needs 1, or a
+  // SIGTERM and a checkpoint due would wait 256 output intervals.
+  std::int64_t pollEvery = 256;
 };
 
 class TimeLoopDriver {

@@ -293,6 +293,7 @@ void MfmStage::run(StageContext& ctx) const {
   options.seriesRows = steps;
   options.checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
   options.progress = p.at("progress");
+  options.pollEvery = 1;  // one engine step is a whole output interval
   driver::TimeLoopDriver loop(ctx, options);
   const core::io::ArtifactStamp stamp{ctx.key()};
   auto engine = loop.start<mfm::MfmEngine>(
