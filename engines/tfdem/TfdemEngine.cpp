@@ -212,19 +212,40 @@ std::unique_ptr<TfdemEngine> TfdemEngine::restore(TfdemSetup setup, const fs::pa
   return std::unique_ptr<TfdemEngine>(new TfdemEngine(std::move(setup), f, outputDir, std::move(stamp)));
 }
 
+core::data::Materials TfdemEngine::gasFrameMaterials() const {
+  // The gas sees one particle phase. Of one species it is that species; of several, "particles"
+  // with their Sauter mean diameter sum d^3 / sum d^2 (the diameter that keeps the phase's volume
+  // and surface, which the drag of a mixed cell goes by) and their volume-weighted density.
+  core::data::Materials m;
+  m.gravity = setup_.materials.gravity;
+  const auto& species = setup_.materials.species;
+  if (species.size() == 1) m.species = species;
+  if (species.size() <= 1) return m;
+  const dem::Particles& p = sim_.particles();
+  double d3 = 0.0, d2 = 0.0, massSum = 0.0;
+  for (std::size_t i = 0; i < p.nOwned; ++i) {
+    const double d = 2.0 * p.radius[i];
+    d3 += d * d * d;
+    d2 += d * d;
+    massSum += p.mass[i];
+  }
+  if (d2 > 0.0) m.species.push_back({"particles", d3 / d2, massSum / (M_PI / 6.0 * d3)});
+  return m;
+}
+
 core::data::FieldFrame TfdemEngine::gasFrame() const {
   core::data::FieldFrame f;
   f.time = flow_.time;
   f.step = step_;
   f.units = "SI";
   f.grid = grid_.geometry();
-  f.materials = setup_.materials;
+  f.materials = gasFrameMaterials();
   const std::size_t n = f.grid.cellCount();
   f.ep_g.resize(n);
   f.p_g.resize(n);
   f.u_g.resize(n);
   core::data::SolidsPhaseFields particles;
-  particles.name = "particles";
+  particles.name = f.materials.species.empty() ? "particles" : f.materials.species.front().name;
   particles.ep_s.resize(n);
   particles.u_s.resize(n);
   particles.theta.assign(n, 0.0);  // the particles' own fluctuation is the DEM's, not a field here

@@ -112,6 +112,8 @@ class TfdemEngine final : public core::engine::SteppedEngine {
   // What both constructors do first: the coupling's settings, the drag's record, the deposit of
   // the particles as they are, no summed drag yet.
   void startCoupling();
+  // What the gas's frames carry: gravity and their one particle phase.
+  [[nodiscard]] core::data::Materials gasFrameMaterials() const;
   // The gas's particle phase and fraction from deposit_, ghosts included.
   void gasFollowsDeposit();
 

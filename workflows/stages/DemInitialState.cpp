@@ -19,8 +19,7 @@ using nlohmann::json;
 
 // Every species at random, without overlap, in the insertion region (inside a cylinder wall
 // if there is one).
-dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup) {
-  const json& p = ctx.params();
+dem::Particles insertSpecies(const StageContext& ctx, const json& p, const DemSetup& setup) {
   dem::InsertionRequest request;
   request.lo =
       p.contains("insert_lo") ? Vec3(p["insert_lo"][0], p["insert_lo"][1], p["insert_lo"][2]) : setup.engine.lo;

@@ -11,8 +11,9 @@
 
 namespace grainbridge::workflows::stages {
 
-// Every species at random without overlap, placed particles first (ids 0..).
-dem::Particles insertSpecies(StageContext& ctx, const DemSetup& setup);
+// Every species at random without overlap, placed particles first (ids 0..), by the `dem` params
+// `p` (insert_lo/hi, place, insertion, seed, initial_temperature); a stop asked of `ctx` ends it.
+dem::Particles insertSpecies(const StageContext& ctx, const nlohmann::json& p, const DemSetup& setup);
 // Atoms of a LAMMPS data file, types mapped to species by lammps_types.
 dem::Particles readLammpsParticles(const nlohmann::json& params, const DemSetup& setup);
 // Particles of a saved frame, species by index.

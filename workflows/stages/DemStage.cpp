@@ -119,21 +119,9 @@ DemStage::DemStage() {
       .add(ParamSpec::integer("frames").defaultValue(10).min(0).doc(
           "particle + contact frames after the initial one, evenly spaced"))
       .add(ParamSpec::integer("series_points").defaultValue(200).min(1).doc("rows of series.csv, evenly spaced"))
-      .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"))
-      .add(ParamSpec::string("normal_model")
-               .defaultValue(dem::contact::LinearSpring::name)
-               .options(dem::contact::normalModelNames())
-               .doc("normal spring: linear (f = 1) or hertz (f = sqrt(delta/d)) in Eqs. 6.5-6.6"))
-      .add(ParamSpec::string("damping_model")
-               .defaultValue(dem::contact::MassScaledDamping::name)
-               .options(dem::contact::dampingModelNames())
-               .doc("dashpots: mass_scaled (-f gamma m_eff v, Eqs. 6.5-6.6) or dimensional (-eta v, Table 7.1)"))
-      .add(ParamSpec::string("tangential_model")
-               .defaultValue(dem::contact::ProjectedHistory::name)
-               .options(dem::contact::tangentialModelNames())
-               .doc("tangential history: history (Eq. 6.4, projected and rescaled) or lammps_history (LAMMPS "
-                    "gran/hooke/history's order, to reproduce a LAMMPS run)"))
-      .add(ParamSpec::quantity("shear_rate", Dimension::frequency())
+      .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"));
+  addContactModelParams(schema_);
+  schema_.add(ParamSpec::quantity("shear_rate", Dimension::frequency())
                .defaultValue(0.0)
                .doc("Lees-Edwards simple shear rate: u_x = shear_rate (y - y_mid), needs periodic \"xy\""))
       .add(ParamSpec::quantity("background_damping", Dimension{0, 1, -1})
@@ -312,7 +300,7 @@ std::unique_ptr<dem::DemEngine> freshEngine(StageContext& ctx, const DemSetup& s
   const json& p = ctx.params();
   const core::io::ArtifactStamp stamp{ctx.key()};
   if (!p.contains("lammps_data") && !p.contains("initial_frame")) {
-    return std::make_unique<dem::DemEngine>(setup.engine, insertSpecies(ctx, setup), ctx.outputDir(), stamp);
+    return std::make_unique<dem::DemEngine>(setup.engine, insertSpecies(ctx, p, setup), ctx.outputDir(), stamp);
   }
   const char* source = p.contains("lammps_data") ? "lammps_data" : "initial_frame";
   auto engine = std::make_unique<dem::DemEngine>(

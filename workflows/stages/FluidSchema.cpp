@@ -1,11 +1,27 @@
 #include "workflows/stages/FluidSchema.hpp"
 
+#include "core/text/NumberText.hpp"
+
 namespace grainbridge::workflows::stages {
 
 using core::units::Dimension;
 using nlohmann::json;
 using params::ParamSchema;
 using params::ParamSpec;
+
+void addGasGridParams(ParamSchema& s) {
+  s.add(ParamSpec::integerList("cells", 3).required().min(1).doc("cells along x, y, z (z = 1: a 2D x-y grid)"))
+      .add(ParamSpec::quantityList("lengths", Dimension::lengthDim(), 3)
+               .required()
+               .doc("domain size along x, y, z (z of a 2D grid: its depth)"))
+      .add(ParamSpec::quantityList("gravity", Dimension::acceleration(), 3)
+               .defaultValue(json::array({0, -9.81, 0}))
+               .doc("gravitational acceleration"))
+      .add(ParamSpec::quantity("gas_density", Dimension::density())
+               .defaultValue("1.2 kg/m3")
+               .positive()
+               .doc("gas density rho_g (incompressible gas)"));
+}
 
 std::shared_ptr<const ParamSchema> boundarySchema() {
   auto s = std::make_shared<ParamSchema>();
@@ -46,5 +62,21 @@ std::shared_ptr<const ParamSchema> tapSchema() {
   return s;
 }
 
-// A block average as summary values: <key> and <key>_err.
+std::vector<PressureTap> readTaps(const json& p, double height,
+                                  std::vector<std::pair<std::string, std::string>>& problems) {
+  std::vector<PressureTap> out;
+  const json taps = p.value("pressure_taps", json::array());  // optional lists: absent when not given
+  for (std::size_t k = 0; k < taps.size(); ++k) {
+    const json& t = taps[k];
+    PressureTap tap{t.at("name").get<std::string>(), t.at("low").get<double>(), t.at("high").get<double>()};
+    if (!(tap.low < tap.high) || tap.low < 0.0 || tap.high > height * (1.0 + 1e-9)) {
+      problems.emplace_back("/pressure_taps/" + std::to_string(k) + "/high",
+                            "the taps must satisfy 0 <= low < high <= " + core::humanNumber(height) +
+                                " m (the domain's height)");
+    }
+    out.push_back(std::move(tap));
+  }
+  return out;
+}
+
 }  // namespace grainbridge::workflows::stages

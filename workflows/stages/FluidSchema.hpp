@@ -2,14 +2,32 @@
 // The gas keys the stages on engines/fluid share (`mfm`, and `tfdem` with particles in the gas):
 // a boundary patch (fluid::FluidSetup's patches as the user writes them) and a pressure tap.
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "workflows/params/ParamSchema.hpp"
 
 namespace grainbridge::workflows::stages {
 
+// The gas grid and gas keys every stage on engines/fluid starts with: cells, lengths, gravity
+// (default along -y), gas_density.
+void addGasGridParams(params::ParamSchema& s);
+
 // One boundary patch: side, kind, from/to, gas_inflow, solids_fractions, solids_inflow, pressure.
 std::shared_ptr<const params::ParamSchema> boundarySchema();
 // One pressure tap: name, low, high (heights above the bottom).
 std::shared_ptr<const params::ParamSchema> tapSchema();
+
+struct PressureTap {
+  std::string name;
+  double low = 0.0, high = 0.0;  // heights above the bottom along gravity [m]
+};
+
+// The params' pressure_taps (none when absent); a pair not 0 <= low < high <= `height` (the
+// domain's height) is a problem (pointer below /params, message).
+std::vector<PressureTap> readTaps(const nlohmann::json& params, double height,
+                                  std::vector<std::pair<std::string, std::string>>& problems);
 
 }  // namespace grainbridge::workflows::stages

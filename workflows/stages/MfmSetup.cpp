@@ -171,16 +171,7 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   // Pressure taps, heights along gravity.
   const fluid::VerticalAxis vertical = fluid::verticalAxis(settings.gravity);
   const double height = fluidSetup.lengths[vertical.axis];
-  const json taps = p.value("pressure_taps", json::array());  // optional lists: absent when not given
-  for (std::size_t k = 0; k < taps.size(); ++k) {
-    const json& t = taps[k];
-    PressureTap tap{t.at("name").get<std::string>(), t.at("low").get<double>(), t.at("high").get<double>()};
-    if (!(tap.low < tap.high) || tap.low < 0.0 || tap.high > height * (1.0 + 1e-9)) {
-      problem("/pressure_taps/" + std::to_string(k) + "/high",
-              "the taps must satisfy 0 <= low < high <= " + core::humanNumber(height) + " m (the domain's height)");
-    }
-    s.taps.push_back(std::move(tap));
-  }
+  s.taps = readTaps(p, height, s.problems);
 
   // The segregation percentage of a binary bed (Eqs. 5.23-5.25), x_small from the initial regions.
   if (p.contains("segregation")) {

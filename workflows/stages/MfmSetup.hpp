@@ -12,13 +12,9 @@
 #include "core/LoadedClosureTable.hpp"
 #include "engines/mfm/InitialRegions.hpp"
 #include "engines/mfm/MfmEngine.hpp"
+#include "workflows/stages/FluidSchema.hpp"
 
 namespace grainbridge::workflows::stages {
-
-struct PressureTap {
-  std::string name;
-  double low = 0.0, high = 0.0;  // heights above the bottom along gravity [m]
-};
 
 // The two phases of a binary bed's segregation percentage (0-based among the solids) and the
 // small particles' share of the initial solids volume, x_small of Eq. 5.25.

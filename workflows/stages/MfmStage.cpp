@@ -106,18 +106,8 @@ std::shared_ptr<const ParamSchema> regionSchema() {
 }  // namespace
 
 MfmStage::MfmStage() {
-  schema_.add(ParamSpec::integerList("cells", 3).required().min(1).doc("cells along x, y, z (z = 1: a 2D x-y grid)"))
-      .add(ParamSpec::quantityList("lengths", Dimension::lengthDim(), 3)
-               .required()
-               .doc("domain size along x, y, z (z of a 2D grid: its depth)"))
-      .add(ParamSpec::quantityList("gravity", Dimension::acceleration(), 3)
-               .defaultValue(json::array({0, -9.81, 0}))
-               .doc("gravitational acceleration"))
-      .add(ParamSpec::quantity("gas_density", Dimension::density())
-               .defaultValue("1.2 kg/m3")
-               .positive()
-               .doc("gas density rho_g (incompressible gas)"))
-      .add(ParamSpec::string("gas_model")
+  addGasGridParams(schema_);
+  schema_.add(ParamSpec::string("gas_model")
                .defaultValue("incompressible")
                .options({"incompressible", "ideal"})
                .doc("incompressible (gas_density), or an ideal gas rho_g = P M / (R T) with absolute pressures"))

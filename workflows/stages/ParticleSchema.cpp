@@ -15,6 +15,22 @@ using params::ParamSpec;
 
 // The contact coefficients shared by particle pairs and walls (Eqs. 6.5-6.6, Table 6.1). Which
 // damping keys apply depends on the stage's damping_model (checked in checkParams).
+void addContactModelParams(ParamSchema& s) {
+  s.add(ParamSpec::string("normal_model")
+            .defaultValue(dem::contact::LinearSpring::name)
+            .options(dem::contact::normalModelNames())
+            .doc("normal spring: linear (f = 1) or hertz (f = sqrt(delta/d)) in Eqs. 6.5-6.6"))
+      .add(ParamSpec::string("damping_model")
+               .defaultValue(dem::contact::MassScaledDamping::name)
+               .options(dem::contact::dampingModelNames())
+               .doc("dashpots: mass_scaled (-f gamma m_eff v, Eqs. 6.5-6.6) or dimensional (-eta v, Table 7.1)"))
+      .add(ParamSpec::string("tangential_model")
+               .defaultValue(dem::contact::ProjectedHistory::name)
+               .options(dem::contact::tangentialModelNames())
+               .doc("tangential history: history (Eq. 6.4, projected and rescaled) or lammps_history (LAMMPS "
+                    "gran/hooke/history's order, to reproduce a LAMMPS run)"));
+}
+
 void addContactParams(ParamSchema& s) {
   s.add(ParamSpec::quantity("kn", Dimension::stiffness()).positive().doc("normal spring constant k_n (Eq. 6.5)"))
       .add(ParamSpec::quantity("contact_time", Dimension::timeDim())

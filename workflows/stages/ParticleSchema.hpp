@@ -13,6 +13,9 @@
 
 namespace grainbridge::workflows::stages {
 
+// The contact law's sub-models: normal_model, damping_model, tangential_model.
+void addContactModelParams(params::ParamSchema& s);
+
 // The contact coefficients of particle pairs and walls (Eqs. 6.5-6.6, Table 6.1): kn or
 // contact_time, kt, one normal damping (gamma_n, eta_n or restitution), impact_velocity, the
 // tangential damping, mu.

@@ -6,6 +6,7 @@
 #include "workflows/stages/DemStage.hpp"
 #include "workflows/stages/FluidizationStage.hpp"
 #include "workflows/stages/MfmStage.hpp"
+#include "workflows/stages/TfdemStage.hpp"
 #include "workflows/stages/ExtractStage.hpp"
 #include "workflows/stages/ParticleGasStage.hpp"
 #include "workflows/stages/ReportStage.hpp"
@@ -20,6 +21,7 @@ const StageRegistry& StageRegistry::builtin() {
     // (dem, tfdem, mfm) and the closure stages (extract, tabulate, compare) join this list.
     types.push_back(std::make_unique<ParticleGasStage>());
     types.push_back(std::make_unique<DemStage>());
+    types.push_back(std::make_unique<TfdemStage>());
     types.push_back(std::make_unique<MfmStage>());
     types.push_back(std::make_unique<ExtractStage>());
     types.push_back(std::make_unique<TabulateStage>());

@@ -3,6 +3,7 @@ grainbridge_add_test(test_tfdem
   SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/tfdem/ParticleDepositTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/tfdem/TfdemEngineTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/tfdem/ParticleBedMeasuresTest.cpp
   LIBS engines_tfdem
   LABELS "unit;tfdem")
 
