@@ -27,7 +27,8 @@ void TfdemSeriesColumns::sample(driver::SeriesRow& row) {
   values.push_back(numbers.multiContactRatio);
   values.push_back(engine_.gasIterations());
   for (double v : values) row.add(v);
-  if (engine_.time() >= setup_.averageFrom - 1e-9 * setup_.outputInterval) {
+  const double slack = 1e-9 * setup_.outputInterval;  // round-off in the sampling times
+  if (engine_.time() >= setup_.averageFrom - slack && engine_.time() <= setup_.averageTo + slack) {
     for (std::size_t k = 0; k < names_.size(); ++k) window_[names_[k]].push_back(values[k]);
   }
 }

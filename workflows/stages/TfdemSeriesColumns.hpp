@@ -19,7 +19,7 @@ class TfdemSeriesColumns final : public driver::SeriesColumns {
   [[nodiscard]] std::vector<std::string> names() const override { return names_; }
   void sample(driver::SeriesRow& row) override;
 
-  // The samples of each column taken at or after the window's start, in time order.
+  // The samples of each column taken in the window [average_from, average_to], in time order.
   [[nodiscard]] const std::map<std::string, std::vector<double>>& windowSamples() const { return window_; }
 
  private:

@@ -156,7 +156,10 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
                                          core::humanNumber(fluidDt) + " s");
   }
   if (s.outputInterval > s.duration) problems.add("/output_interval", "is longer than the run (duration)");
+  s.averageTo = p.contains("average_to") ? p.at("average_to").get<double>() : s.duration;
   if (s.averageFrom >= s.duration) problems.add("/average_from", "must be before the end of the run (duration)");
+  if (s.averageTo > s.duration * (1.0 + 1e-12)) problems.add("/average_to", "is after the end of the run (duration)");
+  if (s.averageTo <= s.averageFrom) problems.add("/average_to", "must be after average_from");
   s.steps = std::max<std::int64_t>(1, std::llround(s.duration / fluidDt));
   s.seriesRows = std::max<std::int64_t>(1, std::llround(s.duration / s.outputInterval));
   s.settleSteps = std::llround(s.settleDuration / fluidDt);

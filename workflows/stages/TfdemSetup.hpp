@@ -27,7 +27,7 @@ struct TfdemStageSetup {
   std::vector<PressureTap> taps;
   fluid::VerticalAxis vertical;
   double bottom = 0.0;  // the bottom's coordinate along the vertical axis
-  double duration = 0.0, averageFrom = 0.0, outputInterval = 0.0, settleDuration = 0.0;
+  double duration = 0.0, averageFrom = 0.0, averageTo = 0.0, outputInterval = 0.0, settleDuration = 0.0;
   std::int64_t steps = 0;        // gas steps of the run
   std::int64_t settleSteps = 0;  // gas-step-long stretches of the settling (DEM alone)
   std::int64_t seriesRows = 0;   // one per output interval
