@@ -94,6 +94,12 @@ void TfdemEngine::gasFollowsDeposit() {
   boundaries_.apply(flow_);
 }
 
+void TfdemEngine::setPatches(std::vector<fluid::BoundaryPatch> patches) {
+  boundaries_ = fluid::Boundaries(grid_, patches, 2);
+  setup_.boundaries = std::move(patches);
+  boundaries_.apply(flow_);
+}
+
 void TfdemEngine::setGasActive(bool active) {
   gasActive_ = active;
   if (active) return;

@@ -86,6 +86,10 @@ class TfdemEngine final : public core::engine::SteppedEngine {
   [[nodiscard]] bool gasActive() const { return gasActive_; }
   // The run's clock, the particles' and the gas's, and the step count start at zero.
   void restartClock();
+  // New gas patches from the next gas step on (an inflow ramp: a fluidization curve in one run).
+  // Not part of the saved state: a caller that changes them sets them again on resuming.
+  // Throws grainbridge::Error as the constructor does for patches the grid cannot take.
+  void setPatches(std::vector<fluid::BoundaryPatch> patches);
 
   [[nodiscard]] const dem::Simulation& simulation() const { return sim_; }
   [[nodiscard]] const fluid::FlowState& flow() const { return flow_; }

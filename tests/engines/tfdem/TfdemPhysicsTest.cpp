@@ -184,3 +184,105 @@ TEST(TfdemPhysics, AFluidizedTwoDimensionalBedIsCarriedByTheGas) {
   EXPECT_LT(height, 0.12);
   std::filesystem::remove_all(dir);
 }
+
+// U_mf from an inflow ramp, as a fluidization curve is measured: the same 2D bed as above settled
+// without the gas, then the inflow raised step by step. Below U_mf the layer stays packed and
+// its drop follows the drag law's Ergun branch, a U + b U^2 (fitted to three steps); above it the
+// drop is the bed's weight (the mean over two steps). Where the two meet is the measured U_mf; the
+// drag law's own (closures::minimumFluidizationVelocity) at the settled bed's mean fraction, its
+// particle volume over the box's width and depth times its height (twice the mean particle
+// height), must be within 10 %.
+TEST(TfdemPhysics, AnInflowRampFindsTheLawsMinimumFluidizationVelocity) {
+  const double d = 4e-3, rhoP = 2700.0, height = 0.24, width = 0.08;
+  core::data::GridGeometry g;
+  g.cells = {8, 24, 1};
+  g.spacing = Vec3(0.01, 0.01, d);
+  TfdemSetup setup;
+  setup.grid = g;
+  setup.particles = walledBox(g, 1.5e-5);
+  setup.particles.walls.resize(4);  // x and y only: planar beds need no z walls
+  setup.particles.planarAxis = 2;
+  setup.particles.pairMaterial[0].gammaN = 400.0;
+  for (auto& w : setup.particles.walls) w.material[0].gammaN = 400.0;
+  setup.particles.skin = 1e-3;
+  setup.substeps = 10;
+  setup.gas = {kRhoG, kMuG};
+  setup.solver.gravity = Vec3(0.0, -kG, 0.0);
+  auto patchesAt = [](double inflow) {
+    auto patches = column(inflow, 2);
+    for (std::size_t k = 2; k < patches.size(); ++k) patches[k].kind = fluid::BoundaryKind::NoSlipWall;
+    return patches;
+  };
+  setup.boundaries = patchesAt(0.0);
+  const fluid::StaggeredGrid grid(g);
+  const auto dir = std::filesystem::temp_directory_path() / "grainbridge-tfdem-ramp";
+  std::filesystem::remove_all(dir);
+  TfdemEngine engine(setup, randomBeads(300, d, rhoP, Vec3::Zero(), Vec3(width, 0.10, d), 5), uniformGas(grid, 0.0),
+                     dir, core::io::ArtifactStamp{"test"});
+  const double fluidDt = setup.fluidDt();
+  auto run = [&](double seconds) {
+    for (int s = 0; s < static_cast<int>(std::lround(seconds / fluidDt)); ++s) engine.advance(false);
+  };
+  engine.setGasActive(false);
+  run(0.5);
+  engine.setGasActive(true);
+
+  // The settled bed and the law's U_mf at its mean fraction.
+  const auto& p = engine.simulation().particles();
+  double volume = 0.0, weight = 0.0, meanHeight = 0.0;
+  for (std::size_t i = 0; i < p.nOwned; ++i) {
+    volume += particleVolume(p.radius[i]);
+    weight += p.mass[i] * (1.0 - kRhoG / rhoP) * kG;
+    meanHeight += p.x[i].y() / static_cast<double>(p.nOwned);
+  }
+  closures::PackedBed packed;
+  packed.voidFraction = 1.0 - volume / (width * d * 2.0 * meanHeight);
+  packed.diameter = d;
+  packed.solidsDensity = rhoP;
+  packed.gasDensity = kRhoG;
+  packed.gasViscosity = kMuG;
+  const double predicted = closures::minimumFluidizationVelocity(setup.drag, packed);
+
+  const fluid::VerticalAxis up{1, 1.0};
+  auto meanDrop = [&](double settle, double seconds) {
+    run(settle);
+    double sum = 0.0;
+    int n = 0;
+    for (int s = 0; s < static_cast<int>(std::lround(seconds / fluidDt)); ++s) {
+      engine.advance(false);
+      sum += fluid::pressureAtHeight(engine.flow(), up, 0.0) - fluid::pressureAtHeight(engine.flow(), up, height) -
+             kRhoG * kG * height;
+      ++n;
+    }
+    return sum / n;
+  };
+  // The packed branch: a U + b U^2 through three steps, least squares.
+  double s2 = 0.0, s3 = 0.0, s4 = 0.0, sy1 = 0.0, sy2 = 0.0;
+  for (double f : {0.3, 0.5, 0.7}) {
+    const double u = f * predicted;
+    engine.setPatches(patchesAt(u));
+    const double dp = meanDrop(0.05, 0.05);
+    std::printf("ramp: U = %.3f m/s, dp = %.1f Pa\n", u, dp);
+    s2 += u * u;
+    s3 += u * u * u;
+    s4 += u * u * u * u;
+    sy1 += u * dp;
+    sy2 += u * u * dp;
+  }
+  const double det = s2 * s4 - s3 * s3;
+  const double a = (sy1 * s4 - sy2 * s3) / det, b = (s2 * sy2 - s3 * sy1) / det;
+  // The plateau: fluidized, the drop is the bed's weight per area.
+  double plateau = 0.0;
+  for (double f : {1.4, 1.7}) {
+    engine.setPatches(patchesAt(f * predicted));
+    const double dp = meanDrop(0.3, 0.7);
+    std::printf("ramp: U = %.3f m/s, dp = %.1f Pa\n", f * predicted, dp);
+    plateau += 0.5 * dp;
+  }
+  const double measured = (-a + std::sqrt(a * a + 4.0 * b * plateau)) / (2.0 * b);
+  std::printf("U_mf: measured %.4f m/s, drag law at eps_g %.4f: %.4f m/s; plateau %.1f Pa, weight %.1f Pa\n", measured,
+              packed.voidFraction, predicted, plateau, weight / (width * d));
+  EXPECT_NEAR(measured, predicted, 0.10 * predicted);
+  EXPECT_NEAR(plateau, weight / (width * d), 0.05 * weight / (width * d));
+  std::filesystem::remove_all(dir);
+}
