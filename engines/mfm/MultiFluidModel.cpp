@@ -234,7 +234,6 @@ MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState
   } else {
     k.g0 = closures::carnahanStarlingG0(k.state.solidFraction);
   }
-  if (state.phases[m].fraction[c] < params_.diluteFraction) return k;  // no grains: no stress, no flux
   k.transport = params_.closure.evaluate(k.state);
   k.transport.dissipationRate *= dissipationScale_[m];  // Eq. 5.20 with the rotation model
   return k;
@@ -275,12 +274,8 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   shifted.solidFraction = std::min(eps + step, 1.0 - 1e-12);
   if (params_.radialDistribution == RadialDistributionModel::Lebowitz)
     setMixtureContacts(state, m, c, shifted.solidFraction - eps, shifted);
-  // Where no table supplies the pressure the closure's is the model's: no second evaluation. A
-  // phase below the dilute fraction has no pressure of its own (kineticCell) but keeps the
-  // kinetic slope, which steers its fraction's correction as anywhere else.
-  const bool dilute = state.phases[m].fraction[c] < params_.diluteFraction;
-  const double p0 = dilute ? closures::evaluate(params_.closure.kineticModel(), kin.state).pressure
-                           : params_.closure.modelPressure(kin.state, kin.transport);
+  // Where no table supplies the pressure the closure's is the model's: no second evaluation.
+  const double p0 = params_.closure.modelPressure(kin.state, kin.transport);
   const double p1 = closures::evaluate(params_.closure.kineticModel(), shifted).pressure;
   double slope = std::max((p1 - p0) / (shifted.solidFraction - eps), 0.0);
   if (pl.plastic) {
@@ -369,7 +364,6 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
       }
     }
     GranularEnergyInputs in;
-    in.diluteFraction = params_.diluteFraction;
     in.state = &state;
     in.old = &old;
     in.oldDensity = &oldProps.phases[m].density;

@@ -117,12 +117,6 @@ struct MultiFluidParams {
   // The least theta the gas's slip production gamma_slip = a / sqrt(theta) is evaluated at: it
   // diverges at theta = 0, where a packed bed sits [m^2/s^2].
   double temperatureFloor = 1e-10;
-  // A solids phase below this fraction holds no grains in a cell (MFiX's DIL_EP_S): its theta
-  // there is its neighbours' mean (GranularEnergy), and its kinetic-theory coefficients are zero.
-  // Left to the kinetic theory, an empty cell (no solids, so no gas drag to damp them) would carry
-  // the dilute limit's mu_0 and kappa_0 ~ rho_s d sqrt(theta) at the theta it borrows: viscosity
-  // without grains, which drove a thin large phase at a bed's surface to run away (issue 26).
-  double diluteFraction = 1e-4;
 };
 
 class MultiFluidModel final : public fluid::FlowModel {

@@ -154,7 +154,6 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   settings.pressureRelaxation = p.at("pressure_relaxation");
   settings.fractionRelaxation = p.at("fraction_relaxation");
   settings.diluteFraction = p.at("dilute_fraction");
-  model.diluteFraction = settings.diluteFraction;
   s.engine.interval = p.at("output_interval");
   s.duration = p.at("duration");
   s.averageFrom = p.at("average_from");

@@ -26,10 +26,7 @@ class MfmStage final : public StageType {
   // 6: each converged step closes every solids phase's continuity implicitly (no undershoot).
   // 7: with several solids phases each feels its volume share of the mixture's plastic pressure
   //    gradient (engines/fluid Momentum); one solids phase unchanged bit for bit.
-  // 8: a solids phase below dilute_fraction has no kinetic-theory stress or conductivity there
-  //    (an empty cell kept the dilute limit's mu_0 at the theta it borrows); the granular-energy
-  //    equation's dilute threshold is dilute_fraction too (it was fixed at 1e-4).
-  [[nodiscard]] int implVersion() const override { return 8; }
+  [[nodiscard]] int implVersion() const override { return 7; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

@@ -256,35 +256,3 @@ TEST(GranularEnergy, AResumedRunRepeatsTheUninterruptedOneBitForBit) {
   for (double theta : x.phases[1].granularTemperature.values()) hottest = std::max(hottest, theta);
   EXPECT_GT(hottest, 0.0) << "the fluidized bed should have generated granular temperature";
 }
-
-// Where a solids phase holds no grains (below the dilute fraction) it has no kinetic-theory stress,
-// whatever theta it is given there: the dilute limit's mu_0 ~ rho_s d sqrt(theta) of an empty cell,
-// with no gas drag to damp it, is viscosity without grains (issue 26: it drove a thin large phase
-// at a bed's surface to run away).
-TEST(GranularEnergy, AnEmptyCellHasNoSolidsStressWhateverItsTheta) {
-  GrainBedSpec spec;
-  spec.nx = 2;
-  GrainBed bed = kineticTheoryBed(spec, 0.02);
-  mfm::MultiFluidEngine engine(bed.setup.geometry, bed.setup.patches, bed.setup.model, bed.setup.settings,
-                               bed.setup.limits);
-  mfm::initialise(engine, bed.initial);
-  fluid::FlowState& st = engine.state();
-  const auto& grid = engine.grid();
-  const std::size_t inBed = grid.index(0, 2, 0), empty = grid.index(0, spec.ny - 2, 0);
-  ASSERT_GT(st.phases[1].fraction[inBed], 0.5);
-  ASSERT_EQ(st.phases[1].fraction[empty], 0.0);
-  st.phases[1].granularTemperature[inBed] = 0.02;
-  st.phases[1].granularTemperature[empty] = 0.02;  // as the neighbours' mean could leave it
-  fluid::FlowProperties p;
-  for (std::size_t m = 0; m < 2; ++m) {
-    p.phases.emplace_back(grid);
-    p.dragCoefficient.emplace_back(grid);
-  }
-  const mfm::MultiFluidModel model(bed.setup.model);
-  model.evaluate(st, p);
-  EXPECT_GT(p.phases[1].shearViscosity[inBed], 0.0);
-  EXPECT_GT(p.phases[1].solidsPressure[inBed], 0.0);
-  EXPECT_EQ(p.phases[1].shearViscosity[empty], 0.0);
-  EXPECT_EQ(p.phases[1].bulkViscosity[empty], 0.0);
-  EXPECT_EQ(p.phases[1].solidsPressure[empty], 0.0);
-}
