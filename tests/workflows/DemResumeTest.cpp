@@ -10,6 +10,7 @@
 #include "db/Database.hpp"
 #include "db/ProvenanceStore.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/WorkflowResults.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge;
@@ -31,17 +32,6 @@ const char* kWorkflow = R"({
                  "kn": 2e5, "gamma_n": 40, "gamma_t": 20, "mu": 0.5}]}}
   }
 })";
-
-std::map<std::string, std::string> artifactDigests(const fs::path& work) {
-  auto database = db::Database::openReadOnly(work / "results/wf/grainbridge.sqlite");
-  db::ProvenanceStore store(database);
-  std::map<std::string, std::string> out;
-  for (const auto& r : store.runs("wf")) {
-    if (r.status != "done") continue;
-    for (const auto& a : store.artifactsOfRun(r.id)) out[a.path] = a.sha256;
-  }
-  return out;
-}
 
 // Starts a run in the background, waits `delayMs`, sends `signal`, waits for the process.
 std::string interruptedRun(const fs::path& work, int delayMs, const std::string& signal) {

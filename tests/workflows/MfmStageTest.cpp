@@ -15,23 +15,13 @@
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/WorkflowResults.hpp"
 #include "tests/support/CsvLine.hpp"
 #include "tests/support/TinyShear.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge::testing;
 using nlohmann::json;
-
-namespace {
-
-fs::path onlyInstance(const fs::path& stageDir) {
-  for (const auto& e : fs::directory_iterator(stageDir)) {
-    if (e.is_directory() && e.path().extension() != ".partial") return e.path();
-  }
-  return {};
-}
-
-}  // namespace
 
 TEST(MfmStage, GrainSmokeWritesFramesMeanFieldsSeriesAndAFluidizationCurve) {
   TempDir work;

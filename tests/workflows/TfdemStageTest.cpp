@@ -4,11 +4,9 @@
 // never stopped (DESIGN.md failure behaviour).
 #include <gtest/gtest.h>
 
-#include <map>
 
-#include "db/Database.hpp"
-#include "db/ProvenanceStore.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/WorkflowResults.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge;
@@ -39,24 +37,6 @@ const char* kWorkflow = R"({
       "checkpoint_interval": "1e-6 s", "progress": false}}
   }
 })";
-
-fs::path onlyInstance(const fs::path& stageDir) {
-  for (const auto& e : fs::directory_iterator(stageDir)) {
-    if (e.is_directory() && e.path().extension() != ".partial") return e.path();
-  }
-  return {};
-}
-
-std::map<std::string, std::string> artifactDigests(const fs::path& work) {
-  auto database = db::Database::openReadOnly(work / "results/wf/grainbridge.sqlite");
-  db::ProvenanceStore store(database);
-  std::map<std::string, std::string> out;
-  for (const auto& r : store.runs("wf")) {
-    if (r.status != "done") continue;
-    for (const auto& a : store.artifactsOfRun(r.id)) out[a.path] = a.sha256;
-  }
-  return out;
-}
 
 class TfdemStage : public ::testing::Test {
  protected:

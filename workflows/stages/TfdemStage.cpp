@@ -3,12 +3,11 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <cmath>
 #include <set>
 
 #include "core/Error.hpp"
 #include "core/averaging/DominantFrequency.hpp"
-#include "core/io/FieldFrameWriter.hpp"
+#include "core/io/FieldFrameReader.hpp"
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/tfdem/ParticleBedMeasures.hpp"
@@ -256,9 +255,10 @@ void TfdemStage::run(StageContext& ctx) const {
 std::optional<PlannedOutput> TfdemStage::plannedOutput(const json& p) const {
   PlannedOutput out;
   out.particleFrames = true;
-  const double fluidDt = p.at("fluid_dt");
-  const auto steps = std::max<std::int64_t>(1, std::llround(p.at("duration").get<double>() / fluidDt));
-  out.lastFrameTime = p.at("frames").get<std::int64_t>() > 0 ? static_cast<double>(steps) * fluidDt : 0.0;
+  const TfdemStageSetup setup = makeTfdemSetup(p);  // the run's own step count
+  out.lastFrameTime = p.at("frames").get<std::int64_t>() > 0
+                          ? static_cast<double>(setup.steps) * setup.engine.fluidDt()
+                          : 0.0;
   out.leesEdwardsShearRate = 0.0;
   std::int64_t count = 0;
   for (const auto& s : p.at("species")) count += s.at("count").get<std::int64_t>();

@@ -34,6 +34,34 @@ double terminalSlip(const closures::GasSolidsDrag& law, double d, double rhoP, d
   return 0.5 * (lo + hi);
 }
 
+// The 2D bed of the bed tests: beads of 4 mm (Table 7.1's jet material) in an 8 x 24 cm box of
+// 1 cm gas cells one diameter deep, plane walls at x and y only (a planar bed needs none at z),
+// dt 1.5e-5 s and ten DEM steps per gas step.
+constexpr double kBedDiameter = 4e-3, kBedDensity = 2700.0;
+
+TfdemSetup twoDimensionalBed() {
+  TfdemSetup setup;
+  setup.grid.cells = {8, 24, 1};
+  setup.grid.spacing = Vec3(0.01, 0.01, kBedDiameter);
+  setup.particles = walledBox(setup.grid, 1.5e-5);
+  setup.particles.walls.resize(4);
+  setup.particles.planarAxis = 2;
+  setup.particles.pairMaterial[0].gammaN = 400.0;  // eta_n 0.018 kg/s at m_eff of two 4 mm beads
+  for (auto& w : setup.particles.walls) w.material[0].gammaN = 400.0;
+  setup.particles.skin = 1e-3;
+  setup.substeps = 10;
+  setup.gas = {kRhoG, kMuG};
+  setup.solver.gravity = Vec3(0.0, -kG, 0.0);
+  return setup;
+}
+
+// Uniform inflow at the bottom, a pressure outlet on top, no-slip side walls.
+std::vector<fluid::BoundaryPatch> walledColumn(double inflow) {
+  auto patches = column(inflow, 2);
+  for (std::size_t k = 2; k < patches.size(); ++k) patches[k].kind = fluid::BoundaryKind::NoSlipWall;
+  return patches;
+}
+
 }  // namespace
 
 TEST(TfdemPhysics, AParticleInStillGasReachesTheLawsTerminalVelocity) {
@@ -127,21 +155,9 @@ TEST(TfdemPhysics, GasThroughAFixedLayerLosesTheErgunPressure) {
 // (the gas momentum balance of Eq. 7.32 summed over the bed: the drag and -eps_s grad P_g the
 // particles feel are what holds them up; U_mf from the law, closures::minimumFluidizationVelocity).
 TEST(TfdemPhysics, AFluidizedTwoDimensionalBedIsCarriedByTheGas) {
-  const double d = 4e-3, rhoP = 2700.0;
-  core::data::GridGeometry g;
-  g.cells = {8, 24, 1};
-  g.spacing = Vec3(0.01, 0.01, d);
-  TfdemSetup setup;
-  setup.grid = g;
-  setup.particles = walledBox(g, 1.5e-5);
-  setup.particles.walls.resize(4);  // x and y only: planar beds need no z walls
-  setup.particles.planarAxis = 2;
-  setup.particles.pairMaterial[0].gammaN = 400.0;  // eta_n 0.018 kg/s at m_eff of two 4 mm beads
-  for (auto& w : setup.particles.walls) w.material[0].gammaN = 400.0;
-  setup.particles.skin = 1e-3;
-  setup.substeps = 10;
-  setup.gas = {kRhoG, kMuG};
-  setup.solver.gravity = Vec3(0.0, -kG, 0.0);
+  const double d = kBedDiameter, rhoP = kBedDensity;
+  TfdemSetup setup = twoDimensionalBed();
+  const core::data::GridGeometry& g = setup.grid;
   dem::Particles particles = randomBeads(300, d, rhoP, Vec3::Zero(), Vec3(0.08, 0.10, d), 5);
   // U_mf of the drag law at the settled bed's mean fraction: one layer at area fraction about 0.8
   // is eps_s = 0.8 * 2/3 in a slab one diameter deep.
@@ -153,8 +169,7 @@ TEST(TfdemPhysics, AFluidizedTwoDimensionalBedIsCarriedByTheGas) {
   packed.gasViscosity = kMuG;
   const double umf = closures::minimumFluidizationVelocity(setup.drag, packed);
   const double inflow = 1.5 * umf;
-  setup.boundaries = column(inflow, 2);
-  for (std::size_t k = 2; k < setup.boundaries.size(); ++k) setup.boundaries[k].kind = fluid::BoundaryKind::NoSlipWall;
+  setup.boundaries = walledColumn(inflow);
   const fluid::StaggeredGrid grid(g);
   const auto dir = std::filesystem::temp_directory_path() / "grainbridge-tfdem-bed2d";
   std::filesystem::remove_all(dir);
@@ -187,32 +202,16 @@ TEST(TfdemPhysics, AFluidizedTwoDimensionalBedIsCarriedByTheGas) {
 
 // U_mf from an inflow ramp, as a fluidization curve is measured: the same 2D bed as above settled
 // without the gas, then the inflow raised step by step. Below U_mf the layer stays packed and
-// its drop follows the drag law's Ergun branch, a U + b U^2 (fitted to three steps); above it the
+// its drop follows the drag law's Ergun branch (Eq. 7.30), a U + b U^2 (fitted to three steps); above it the
 // drop is the bed's weight (the mean over two steps). Where the two meet is the measured U_mf; the
 // drag law's own (closures::minimumFluidizationVelocity) at the settled bed's mean fraction, its
 // particle volume over the box's width and depth times its height (twice the mean particle
 // height), must be within 10 %.
 TEST(TfdemPhysics, AnInflowRampFindsTheLawsMinimumFluidizationVelocity) {
-  const double d = 4e-3, rhoP = 2700.0, height = 0.24, width = 0.08;
-  core::data::GridGeometry g;
-  g.cells = {8, 24, 1};
-  g.spacing = Vec3(0.01, 0.01, d);
-  TfdemSetup setup;
-  setup.grid = g;
-  setup.particles = walledBox(g, 1.5e-5);
-  setup.particles.walls.resize(4);  // x and y only: planar beds need no z walls
-  setup.particles.planarAxis = 2;
-  setup.particles.pairMaterial[0].gammaN = 400.0;
-  for (auto& w : setup.particles.walls) w.material[0].gammaN = 400.0;
-  setup.particles.skin = 1e-3;
-  setup.substeps = 10;
-  setup.gas = {kRhoG, kMuG};
-  setup.solver.gravity = Vec3(0.0, -kG, 0.0);
-  auto patchesAt = [](double inflow) {
-    auto patches = column(inflow, 2);
-    for (std::size_t k = 2; k < patches.size(); ++k) patches[k].kind = fluid::BoundaryKind::NoSlipWall;
-    return patches;
-  };
+  const double d = kBedDiameter, rhoP = kBedDensity, height = 0.24, width = 0.08;
+  TfdemSetup setup = twoDimensionalBed();
+  const core::data::GridGeometry& g = setup.grid;
+  auto patchesAt = [](double inflow) { return walledColumn(inflow); };
   setup.boundaries = patchesAt(0.0);
   const fluid::StaggeredGrid grid(g);
   const auto dir = std::filesystem::temp_directory_path() / "grainbridge-tfdem-ramp";
