@@ -150,6 +150,13 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
         if (isGiven(l)) work.K(i, i) += t.X(m, l);
       }
     }
+    if (n == 1) {
+      // One phase with an equation here (the gas beside given or dilute solids): a division.
+      const std::size_t m = work.coupled.front();
+      out.pressure[m][f] = work.fractions[0] / work.K(0, 0);
+      if (m > 0) out.solidsPressure[m][f] = A / work.K(0, 0);
+      continue;
+    }
     work.lu.compute(work.K);
     work.d = work.lu.solve(work.fractions);
     for (Eigen::Index i = 0; i < n; ++i) {

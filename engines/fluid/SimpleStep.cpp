@@ -213,9 +213,13 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     boundaries.apply(state, &props);
 
     // 2. Momentum of every phase, component by component, with the drag eliminated.
+    // (A given phase's momentum is not assembled: it needs no fluxes.)
     std::vector<std::array<FaceField, 3>> flux;
-    for (std::size_t m = 0; m < M; ++m)
-      flux.push_back(massFluxes(state.phases[m], props.phases[m].density, boundaries, outflowBudget(old, m, dt)));
+    for (std::size_t m = 0; m < M; ++m) {
+      flux.push_back(given[m] != 0
+                         ? std::array<FaceField, 3>{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)}
+                         : massFluxes(state.phases[m], props.phases[m].density, boundaries, outflowBudget(old, m, dt)));
+    }
     std::vector<double> speed(M, settings.velocityScale);
     for (std::size_t m = 0; m < M; ++m) {
       for (int a = 0; a < dims; ++a) {
@@ -235,7 +239,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
         FaceField& u = state.phases[m].velocity[static_cast<std::size_t>(a)];
         const auto r = systems[m].normalisedResidual(u.values(), speed[m]);
         worst.offer(r.value, phaseName(m) + " " + std::string(1, "xyz"[a]) + " momentum", r.worst);
-        systems[m].solve(u);
+        systems[m].solve(u, settings.momentumSolve);
       }
     }
     for (int a = dims; a < 3; ++a) corrections.emplace_back();
@@ -251,7 +255,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     const StencilSystem pressureSystem =
         assemblePressureCorrection(state, old, props, oldProps, boundaries, gasFlux, d, dt);
     CellField pressureCorrection(grid, 0.0);
-    pressureSystem.solve(pressureCorrection);
+    pressureSystem.solve(pressureCorrection.values(), settings.pressureSolve);
     for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
       if (grid.interior(c)) state.pressure[c] += settings.pressureRelaxation * pressureCorrection[c];
     }

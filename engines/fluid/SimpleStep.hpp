@@ -21,6 +21,7 @@
 #include "engines/fluid/Boundaries.hpp"
 #include "engines/fluid/FlowState.hpp"
 #include "engines/fluid/PhaseProperties.hpp"
+#include "engines/fluid/StencilSystem.hpp"
 
 namespace grainbridge::fluid {
 
@@ -80,6 +81,10 @@ struct SimpleSettings {
   // phase's inventory: what keeps a long run's mass balance to round-off.
   double massTolerance = 1e-10;
   int maxIterations = 50;
+  // How each momentum component's system and the gas pressure correction are solved
+  // (StencilSystem.hpp); the solids fraction corrections are always solved directly.
+  LinearSolve momentumSolve;
+  LinearSolve pressureSolve;
 };
 
 struct StepResult {

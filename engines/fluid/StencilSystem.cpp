@@ -1,6 +1,7 @@
 #include "engines/fluid/StencilSystem.hpp"
 
 #include <Eigen/Sparse>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,9 @@
 #include "core/Error.hpp"
 
 // LAPACK: LU with partial pivoting of a band matrix, and the solve (Fortran interface).
+// LAPACK: Cholesky factorisation and solve of a symmetric positive definite band matrix.
+extern "C" void dpbsv_(const char* uplo, const int* n, const int* kd, const int* nrhs, double* ab, const int* ldab,
+                       double* b, const int* ldb, int* info);
 extern "C" void dgbsv_(const int* n, const int* kl, const int* ku, const int* nrhs, double* ab, const int* ldab,
                        int* ipiv, double* b, const int* ldb, int* info);
 
@@ -86,57 +90,169 @@ bool solveBanded(long unknowns, long bandwidth, const std::vector<Eigen::Triplet
   return info == 0;
 }
 
+// Solves A x = rhs by LAPACK's band Cholesky (dpbsv) when A is symmetric; false, with rhs
+// unchanged, when it is not, or not positive definite.
+bool solveBandedCholesky(long unknowns, long bandwidth, const std::vector<Eigen::Triplet<double>>& entries,
+                         Eigen::VectorXd& rhs) {
+  const int n = static_cast<int>(unknowns), kd = static_cast<int>(bandwidth), nrhs = 1, ldab = kd + 1;
+  thread_local std::vector<double> upper, lower;
+  upper.assign(static_cast<std::size_t>(ldab) * static_cast<std::size_t>(n), 0.0);
+  lower.assign(upper.size(), 0.0);
+  // A(i, j), i <= j, at AB(kd + i - j, j) (LAPACK's upper storage); the lower triangle, mirrored,
+  // in a second band, to check the symmetry.
+  for (const auto& t : entries) {
+    const long i = std::min(t.row(), t.col()), j = std::max(t.row(), t.col());
+    auto& band = t.row() <= t.col() ? upper : lower;
+    band[static_cast<std::size_t>(kd + i - j) + static_cast<std::size_t>(j) * static_cast<std::size_t>(ldab)] +=
+        t.value();
+  }
+  for (std::size_t k = 0; k < upper.size(); ++k) {
+    if (k % static_cast<std::size_t>(ldab) == static_cast<std::size_t>(kd)) continue;  // the diagonal
+    if (upper[k] != lower[k]) return false;
+  }
+  Eigen::VectorXd x = rhs;
+  int info = 0;
+  dpbsv_("U", &n, &kd, &nrhs, upper.data(), &ldab, x.data(), &n, &info);
+  if (info != 0) return false;
+  rhs = std::move(x);
+  return true;
+}
+
 }  // namespace
 
-void StencilSystem::solve(std::vector<double>& phi) const {
+StencilSystem::Assembled StencilSystem::assemble(const std::vector<double>& phi) const {
   const std::size_t n = ap_.size();
-  std::vector<long> row(n, -1);
-  long unknowns = 0;
+  Assembled out;
+  out.row.assign(n, -1);
   for (std::size_t c = 0; c < n; ++c) {
-    if (active_[c] != 0) row[c] = unknowns++;
+    if (active_[c] != 0) out.row[c] = out.unknowns++;
   }
-  if (unknowns == 0) return;  // no unknown (a velocity component across a single cell): nothing to solve
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<std::size_t>(unknowns) * 7);
-  Eigen::VectorXd rhs(unknowns);
-  long bandwidth = 0;
+  out.entries.reserve(static_cast<std::size_t>(out.unknowns) * 7);
+  out.rhs.resize(out.unknowns);
   for (std::size_t c = 0; c < n; ++c) {
     if (active_[c] == 0) continue;
     if (ap_[c] == 0.0) throw Error("fluid: a_P is zero at padded cell " + std::to_string(c) + ": no equation there");
-    entries.emplace_back(row[c], row[c], ap_[c]);
+    const long r = out.row[c];
+    out.entries.emplace_back(r, r, ap_[c]);
     double known = b_[c];
     for (int nb = 0; nb < 6; ++nb) {
       std::size_t m = 0;
       if (!neighbourOf(*grid_, c, nb, m)) continue;
       const double a = anb_[static_cast<std::size_t>(nb)][c];
       if (active_[m] != 0) {
-        entries.emplace_back(row[c], row[m], -a);  // kept when zero: the pattern is the mask's
-        bandwidth = std::max(bandwidth, std::abs(row[c] - row[m]));
+        out.entries.emplace_back(r, out.row[m], -a);  // kept when zero: the pattern is the mask's
+        out.bandwidth = std::max(out.bandwidth, std::abs(r - out.row[m]));
       } else {
         known += a * phi[m];  // a boundary value: known
       }
     }
-    rhs[row[c]] = known;
+    out.rhs[r] = known;
   }
+  return out;
+}
+
+void StencilSystem::solveDirect(Assembled& system, std::vector<double>& phi, bool symmetric) const {
   Eigen::VectorXd x;
-  if (bandwidth <= kBandLimit) {
+  if (symmetric && system.bandwidth <= kBandLimit &&
+      solveBandedCholesky(system.unknowns, system.bandwidth, system.entries, system.rhs)) {
+    x = std::move(system.rhs);
+  } else if (system.bandwidth <= kBandLimit) {
     std::string failure;
-    if (!solveBanded(unknowns, bandwidth, entries, rhs, failure))
+    if (!solveBanded(system.unknowns, system.bandwidth, system.entries, system.rhs, failure))
       throw SingularSystem("fluid: the discretised system is singular (" + failure + ")");
-    x = std::move(rhs);
+    x = std::move(system.rhs);
   } else {
-    Eigen::SparseMatrix<double> A(unknowns, unknowns);
-    A.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SparseMatrix<double> A(system.unknowns, system.unknowns);
+    A.setFromTriplets(system.entries.begin(), system.entries.end());
     A.makeCompressed();
     Lu& lu = analysedFor(active_, A);
     lu.factorize(A);
     if (lu.info() != Eigen::Success)
       throw SingularSystem("fluid: the discretised system is singular (" + lu.lastErrorMessage() + ")");
-    x = lu.solve(rhs);
+    x = lu.solve(system.rhs);
   }
-  for (std::size_t c = 0; c < n; ++c) {
-    if (active_[c] != 0) phi[c] = x[row[c]];
+  for (std::size_t c = 0; c < ap_.size(); ++c) {
+    if (active_[c] != 0) phi[c] = x[system.row[c]];
   }
+}
+
+void StencilSystem::solve(std::vector<double>& phi) const { solve(phi, LinearSolve{}); }
+
+bool StencilSystem::sweep(std::vector<double>& phi, const LinearSolve& how) const {
+  const StaggeredGrid& grid = *grid_;
+  std::array<std::ptrdiff_t, 6> offset{};
+  std::array<bool, 6> used{};
+  for (int nb = 0; nb < 6; ++nb) {
+    const int axis = nb / 2;
+    used[static_cast<std::size_t>(nb)] = grid.active(axis);
+    if (used[static_cast<std::size_t>(nb)]) {
+      const std::size_t c = grid.index(0, 0, 0);
+      offset[static_cast<std::size_t>(nb)] =
+          static_cast<std::ptrdiff_t>(grid.neighbour(c, axis, nb % 2 == 0 ? -1 : +1)) - static_cast<std::ptrdiff_t>(c);
+    }
+  }
+  // The scale: the right-hand side with the boundary values moved over, as the LU sees it.
+  double rhs2 = 0.0;
+  for (std::size_t c = 0; c < ap_.size(); ++c) {
+    if (active_[c] == 0) continue;
+    if (ap_[c] == 0.0) throw Error("fluid: a_P is zero at padded cell " + std::to_string(c) + ": no equation there");
+    double known = b_[c];
+    for (int nb = 0; nb < 6; ++nb) {
+      if (!used[static_cast<std::size_t>(nb)]) continue;
+      const std::size_t m = c + static_cast<std::size_t>(offset[static_cast<std::size_t>(nb)]);
+      if (active_[m] == 0) known += anb_[static_cast<std::size_t>(nb)][c] * phi[m];
+    }
+    rhs2 += known * known;
+  }
+  const double target2 = how.tolerance * how.tolerance * rhs2;
+  for (int iteration = 0; iteration < how.maxIterations; ++iteration) {
+    double r2 = 0.0;
+    for (std::size_t c = 0; c < ap_.size(); ++c) {
+      if (active_[c] == 0) continue;
+      double sum = b_[c];
+      for (int nb = 0; nb < 6; ++nb) {
+        if (used[static_cast<std::size_t>(nb)])
+          sum += anb_[static_cast<std::size_t>(nb)][c] * phi[c + static_cast<std::size_t>(offset[static_cast<std::size_t>(nb)])];
+      }
+      const double r = sum - ap_[c] * phi[c];
+      r2 += r * r;
+      phi[c] += r / ap_[c];
+    }
+    if (!std::isfinite(r2)) return false;
+    if (r2 <= target2) return true;
+  }
+  return false;
+}
+
+void StencilSystem::solve(std::vector<double>& phi, const LinearSolve& how) const {
+  if (how.method == LinearSolve::Method::GaussSeidel) {
+    const std::vector<double> start = phi;
+    if (sweep(phi, how)) return;
+    phi = start;  // not converged: the exact solve from where it began
+  }
+  Assembled system = assemble(phi);
+  if (system.unknowns == 0) return;  // no unknown (a velocity component across a single cell): nothing to solve
+  if (how.method == LinearSolve::Method::Iterative) {
+    Eigen::SparseMatrix<double, Eigen::RowMajor> A(system.unknowns, system.unknowns);
+    A.setFromTriplets(system.entries.begin(), system.entries.end());
+    Eigen::VectorXd guess(system.unknowns);
+    for (std::size_t c = 0; c < ap_.size(); ++c) {
+      if (active_[c] != 0) guess[system.row[c]] = phi[c];
+    }
+    Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::DiagonalPreconditioner<double>> solver;
+    solver.setTolerance(how.tolerance);
+    solver.setMaxIterations(how.maxIterations);
+    solver.compute(A);
+    const Eigen::VectorXd x = solver.solveWithGuess(system.rhs, guess);
+    if (solver.info() == Eigen::Success && x.allFinite()) {
+      for (std::size_t c = 0; c < ap_.size(); ++c) {
+        if (active_[c] != 0) phi[c] = x[system.row[c]];
+      }
+      return;
+    }
+    // Not converged (a system far from diagonal dominance): the exact solve.
+  }
+  solveDirect(system, phi, how.method == LinearSolve::Method::Cholesky);
 }
 
 double StencilSystem::residual(const std::vector<double>& phi) const {

@@ -9,6 +9,8 @@
 // (2D grids, x numbered first: the band is a row of cells; measured 20 times faster than the
 // sparse LU on the 15 x 45 Goldschmidt bed), Eigen's sparse LU otherwise; both single-threaded,
 // so equal inputs give bit-equal results (a resumed run repeats an uninterrupted one).
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -25,6 +27,25 @@ namespace grainbridge::fluid {
 class SingularSystem : public Error {
  public:
   using Error::Error;
+};
+
+// How a system is solved. Direct: the band or sparse LU above, exact to round-off. Cholesky: for
+// a system the caller knows to be symmetric positive definite (an incompressible phase's pressure
+// correction with a fixed level), LAPACK's band Cholesky (dpbsv), about half the band LU's work;
+// the LU wherever the matrix turns out not to be (asymmetric, not banded or not definite). Iterative:
+// Eigen's BiCGSTAB with a diagonal preconditioner from the values `phi` holds, to a residual
+// |A x - b| <= tolerance |b|, and the direct solve if that fails within maxIterations. For
+// strongly diagonally dominant systems (momentum at a small step, where rho eps dV / dt dwarfs
+// the neighbour coefficients) it needs a few iterations where the LU needs a band's worth of
+// work per row. GaussSeidel: point Gauss-Seidel sweeps on the stencil itself (no matrix is
+// assembled; MFiX's leq_sor with omega 1), until the root-mean-square residual falls to tolerance
+// times that of the right-hand side, else the direct solve. An inner solve need not be exact, as an outer iteration's convergence test reads
+// the residual before the solve.
+struct LinearSolve {
+  enum class Method { Direct, Cholesky, Iterative, GaussSeidel };
+  Method method = Method::Direct;
+  double tolerance = 1e-8;
+  int maxIterations = 100;
 };
 
 // Neighbour slots: 2 * axis for the low side (W, S, B), 2 * axis + 1 for the high side (E, N, T).
@@ -56,6 +77,9 @@ class StencilSystem {
   void solve(std::vector<double>& phi) const;
   void solve(CellField& phi) const { solve(phi.values()); }
   void solve(FaceField& phi) const { solve(phi.values()); }
+  // The same by `how` (an iterative solve starts from phi's active values).
+  void solve(std::vector<double>& phi, const LinearSolve& how) const;
+  void solve(FaceField& phi, const LinearSolve& how) const { solve(phi.values(), how); }
   // The largest |a_P Phi_P - sum a_nb Phi_nb - b| over the active cells: the residual the
   // solver's convergence test reads.
   [[nodiscard]] double residual(const std::vector<double>& phi) const;
@@ -71,6 +95,21 @@ class StencilSystem {
   [[nodiscard]] Normalised normalisedResidual(const std::vector<double>& phi, double scale) const;
 
  private:
+  // The active cells' equations as a matrix: each active cell's row, the entries (the pattern is
+  // the active mask's: zero coefficients kept), the right-hand side with the known boundary
+  // values moved over, and the largest |row - column|.
+  struct Assembled {
+    std::vector<long> row;
+    long unknowns = 0;
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd rhs;
+    long bandwidth = 0;
+  };
+  [[nodiscard]] Assembled assemble(const std::vector<double>& phi) const;
+  void solveDirect(Assembled& system, std::vector<double>& phi, bool symmetric) const;
+  // Gauss-Seidel sweeps; false (phi then holds the last sweep) when they did not converge.
+  bool sweep(std::vector<double>& phi, const LinearSolve& how) const;
+
   const StaggeredGrid* grid_;
   std::vector<double> ap_, b_;
   std::array<std::vector<double>, 6> anb_;
