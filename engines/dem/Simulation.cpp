@@ -47,6 +47,7 @@ Simulation::Simulation(SimulationSetup setup, EngineState state)
   buildTime_ = state.buildTime;
   buildGhosts(shearOffset(buildTime_));
   list_.build(p_, setup_.lo, setup_.hi, cutoff_, setup_.skin, &state.pairHistory);
+  selectWallCandidates(/*clearOthers=*/false);
   for (std::size_t i = 0; i < p_.nOwned; ++i) p_.x[i] = current[i];
   p_.refreshGhosts(shearDrift());
 }
@@ -344,6 +345,32 @@ void Simulation::rebuild(bool sort) {
   buildTime_ = time_;
   buildGhosts(shearOffset(time_));
   list_.build(p_, setup_.lo, setup_.hi, cutoff_, setup_.skin);
+  selectWallCandidates(/*clearOthers=*/true);
+}
+
+void Simulation::selectWallCandidates(bool clearOthers) {
+  const std::size_t nw = setup_.walls.size();
+  wallCandidates_.resize(nw);
+  for (std::size_t w = 0; w < nw; ++w) {
+    const Wall& wall = setup_.walls[w];
+    auto& candidates = wallCandidates_[w];
+    candidates.clear();
+    const bool fixed = wall.vibration.amplitude == 0.0;
+    const Vec3 origin = wall.positionAt(buildTime_);
+    const Vec3 k = wall.direction;
+    for (std::size_t i = 0; i < p_.nOwned; ++i) {
+      if (p_.isFrozen(i)) continue;
+      const Vec3 rel = p_.x[i] - origin;
+      const double gap = wall.kind == Wall::Kind::Plane ? rel.dot(k) : wall.radius - (rel - rel.dot(k) * k).norm();
+      // A whole skin of margin where half would do: the gap moves by at most a particle's
+      // displacement, which stays below half the skin until the next build.
+      if (!fixed || gap < p_.radius[i] + setup_.skin) {
+        candidates.push_back(i);
+      } else if (clearOthers) {
+        wallHistory_[i * nw + w].setZero();
+      }
+    }
+  }
 }
 
 void Simulation::contactForces(Evaluation evaluation, bool ownedCleared) {
@@ -483,8 +510,7 @@ void Simulation::wallForces() {
     const Vec3 origin = wall.positionAt(time_);
     const Vec3 wallVelocity = wall.velocityAt(time_);
     const Vec3 k = wall.direction;
-    for (std::size_t i = 0; i < p_.nOwned; ++i) {
-      if (p_.isFrozen(i)) continue;
+    for (const std::size_t i : wallCandidates_[w]) {
       const double ai = p_.radius[i];
       const Vec3 rel = p_.x[i] - origin;
       Vec3 n;  // from the wall towards the particle centre

@@ -109,6 +109,12 @@ class Simulation {
  private:
   void validateSetup();
   void rebuild(bool sort);
+  // At a list build, per wall, the owned particles that can touch it before the next build (the
+  // same rule as the list's pairs: a particle moves less than half the skin between builds); the
+  // others' wall history is zeroed, as the contact loop would zero it at every step until then.
+  // A vibrating wall keeps every particle. `clearOthers` is false when a restored state's
+  // histories are already what the run had.
+  void selectWallCandidates(bool clearOthers);
   // How far one particle may move from its position at the last build before the list must be
   // rebuilt (<= 0: rebuild now).
   [[nodiscard]] double rebuildReach() const;
@@ -146,6 +152,7 @@ class Simulation {
   // Wall contact history u_t per (owned particle, wall), carried with the particle on re-sort.
   std::vector<Vec3> wallHistory_;
   std::vector<Vec3> wallForce_;
+  std::vector<std::vector<std::size_t>> wallCandidates_;  // per wall, increasing particle index
   bool contactsCurrent_ = false;  // recordedContacts_ belong to the current state
   core::data::ContactList recordedContacts_;
   core::data::WallContactList recordedWallContacts_;
