@@ -147,6 +147,8 @@ void TfdemEngine::advance(bool observed) {
   flow_ = std::move(state);
   deposit_ = std::move(next);
   lastIterations_ = r.iterations;
+  ++gasSteps_;
+  gasIterations_ += r.iterations;
 
   // What the gas received over its step, at the cell centres, and Eq. 7.34's beta per cell.
   const ParticleGasModel converged(setup_.gas, setup_.drag, setup_.gasReaction, deposit_, &summedDrag_);
@@ -304,7 +306,8 @@ std::string TfdemEngine::throughputNote() const {
   std::ostringstream note;
   note.setf(std::ios::fixed);
   note.precision(2);
-  note << lastIterations_ << " gas iterations in the last gas step, "
+  note << static_cast<double>(gasIterations_) / static_cast<double>(std::max<std::int64_t>(gasSteps_, 1))
+       << " gas iterations per gas step, "
        << 2.0 * static_cast<double>(sim_.contactCount()) / static_cast<double>(std::max<std::size_t>(sim_.particles().nOwned, 1))
        << " contacts per particle";
   return note.str();

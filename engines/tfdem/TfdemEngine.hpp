@@ -131,6 +131,7 @@ class TfdemEngine final : public core::engine::SteppedEngine {
   std::vector<Vec3> particleImpulse_, gasImpulse_;
   std::int64_t step_ = 0;
   int lastIterations_ = 0;
+  std::int64_t gasSteps_ = 0, gasIterations_ = 0;  // since this engine was made: the log's mean
   bool gasActive_ = true;
   core::io::ParticleFrameWriter particleWriter_;
   core::io::FieldFrameWriter gasWriter_;

@@ -132,6 +132,14 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   e.solver.maxIterations = p.at("max_iterations");
   e.solver.momentumRelaxation = p.at("momentum_relaxation");
   e.solver.pressureRelaxation = p.at("pressure_relaxation");
+  e.solver.momentumSolve.method =
+      choice(p, "momentum_solver", {std::pair{"direct", fluid::LinearSolve::Method::Direct},
+                                    std::pair{"bicgstab", fluid::LinearSolve::Method::Iterative},
+                                    std::pair{"gauss_seidel", fluid::LinearSolve::Method::GaussSeidel}});
+  e.solver.momentumSolve.tolerance = p.at("momentum_solver_tolerance");
+  // The incompressible gas's pressure correction is symmetric positive definite (an outlet fixes
+  // its level): the band Cholesky, half the LU's work.
+  e.solver.pressureSolve.method = fluid::LinearSolve::Method::Cholesky;
   s.initialGasVelocity = core::json::vec3FromJson(p.at("initial_gas_velocity"));
   for (const auto& b : fluidSetup.boundaries) {
     if (b.kind == "pressure_outlet") {
