@@ -2,6 +2,7 @@
 
 #include "core/grid/CellGrid.hpp"
 #include "core/io/FieldFrameReader.hpp"
+#include "extract/observe/MeanForceRatio.hpp"
 
 namespace grainbridge::extract::observe {
 
@@ -23,7 +24,9 @@ void FieldObserver::finish(OutputSink& out, ExtractResult& /*result*/) {
   out.addArtifact("fields.xmf", "xdmf");
   // The time-averaged fields with their block-averaging errors, as a one-frame collection.
   core::io::FieldFrameWriter meanWriter(dir / "mean", options_.stamp);
-  meanWriter.write(average_.mean());
+  core::data::FieldFrame mean = average_.mean();
+  useRatioOfMeans(mean);  // Figs. 7.7b and 7.12b: the ratio of the mean forces, not the mean ratio
+  meanWriter.write(mean);
   for (const auto& f : core::io::listFieldFrames(dir / "mean")) {
     out.addArtifact(f.lexically_relative(dir).string(), "mean_field_frame");
   }

@@ -19,7 +19,7 @@ class ExtractStage final : public StageType {
   // velocity statistics over every frame, no failure when no frame has a contact; 4: under
   // Lees-Edwards shear the dissipation rate is the shear work (frictional sliding losses included);
   // 5: every CSV at full precision (was 12 significant digits)
-  [[nodiscard]] int implVersion() const override { return 5; }
+  [[nodiscard]] int implVersion() const override { return 6; }
   // The state and the closure forms (shear-scaled, then theta-scaled: core/ClosureForms).
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"solid_fraction", "–"}, {"restitution", "–"}, {"friction", "–"},  {"p_shear", "–"}, {"tau_shear", "–"},

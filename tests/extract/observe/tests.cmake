@@ -1,6 +1,7 @@
-# extract/observe: the per-frame analyses of the extract stage (surface verdict).
+# extract/observe: the per-frame analyses of the extract stage (surface verdict, the mean force ratio).
 grainbridge_add_test(test_extract_observe
   SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/observe/SurfaceObserverTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/observe/MeanForceRatioTest.cpp
   LIBS extract
   LABELS "unit;extract")
