@@ -95,20 +95,20 @@ bool solveBanded(long unknowns, long bandwidth, const std::vector<Eigen::Triplet
 bool solveBandedCholesky(long unknowns, long bandwidth, const std::vector<Eigen::Triplet<double>>& entries,
                          Eigen::VectorXd& rhs) {
   const int n = static_cast<int>(unknowns), kd = static_cast<int>(bandwidth), nrhs = 1, ldab = kd + 1;
-  thread_local std::vector<double> upper, lower;
+  thread_local std::vector<double> upper;
   upper.assign(static_cast<std::size_t>(ldab) * static_cast<std::size_t>(n), 0.0);
-  lower.assign(upper.size(), 0.0);
-  // A(i, j), i <= j, at AB(kd + i - j, j) (LAPACK's upper storage); the lower triangle, mirrored,
-  // in a second band, to check the symmetry.
+  // A(i, j), i <= j, at AB(kd + i - j, j) (LAPACK's upper storage). The entries come row by row,
+  // one per neighbour, so A(j, i) below the diagonal meets its mirror A(i, j), stored when row i
+  // came: the symmetry check as the band fills.
   for (const auto& t : entries) {
     const long i = std::min(t.row(), t.col()), j = std::max(t.row(), t.col());
-    auto& band = t.row() <= t.col() ? upper : lower;
-    band[static_cast<std::size_t>(kd + i - j) + static_cast<std::size_t>(j) * static_cast<std::size_t>(ldab)] +=
-        t.value();
-  }
-  for (std::size_t k = 0; k < upper.size(); ++k) {
-    if (k % static_cast<std::size_t>(ldab) == static_cast<std::size_t>(kd)) continue;  // the diagonal
-    if (upper[k] != lower[k]) return false;
+    double& stored =
+        upper[static_cast<std::size_t>(kd + i - j) + static_cast<std::size_t>(j) * static_cast<std::size_t>(ldab)];
+    if (t.row() <= t.col()) {
+      stored += t.value();
+    } else if (stored != t.value()) {
+      return false;
+    }
   }
   Eigen::VectorXd x = rhs;
   int info = 0;

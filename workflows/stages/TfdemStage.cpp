@@ -76,7 +76,7 @@ TfdemStage::TfdemStage() {
                .doc("the gas momentum systems: Gauss-Seidel sweeps or Jacobi-preconditioned BiCGSTAB to "
                     "momentum_solver_tolerance (the band LU where they fail), or the band LU"))
       .add(ParamSpec::number("momentum_solver_tolerance")
-               .defaultValue(1e-8)
+               .defaultValue(1e-6)
                .positive()
                .doc("gauss_seidel, bicgstab: the residual norm of each momentum solve over its right-hand side's"))
       // The coupling (docs/tfdem.md).
