@@ -4,6 +4,7 @@ grainbridge_add_test(test_tfdem
     ${CMAKE_CURRENT_SOURCE_DIR}/tfdem/ParticleDepositTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/tfdem/TfdemEngineTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/tfdem/ParticleBedMeasuresTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/tfdem/ParticleForcesTest.cpp
   LIBS engines_tfdem
   LABELS "unit;tfdem")
 
