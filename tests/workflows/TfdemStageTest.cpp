@@ -1,9 +1,12 @@
 // The `tfdem` stage end to end: a small 2D bed settles without the gas, then runs fluidized; the
 // particle frames, the gas's frames, the series and the summary are where docs/tfdem.md says, and
 // a run killed in either phase resumes from its checkpoint to the same bytes as a run that was
-// never stopped (DESIGN.md failure behaviour).
+// never stopped (DESIGN.md failure behaviour). The shipped smoke beds run as CI-sized versions of
+// the central jet and the uniform-inflow bed.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 
 #include "tests/support/Cli.hpp"
 #include "tests/support/WorkflowResults.hpp"
@@ -127,6 +130,29 @@ TEST(TfdemJetSmoke, TheCentralJetBedSettlesToItsHeightAndTheJetBlowsThroughIt) {
   EXPECT_GT(summary.at("dp_jet").get<double>(), 0.0);
   EXPECT_LT(summary.at("dp_jet").get<double>(), 1.2 * 3550.0);
   EXPECT_TRUE(fs::exists(bed / "gas/fields.xmf"));
+}
+
+}  // namespace
+
+namespace {
+
+// The shipped uniform-inflow bed (Table 7.1's material and inflow), CI-sized: 400 beads of 2.5 mm
+// in a 5 x 20 cm column on 5 x 20 gas cells, settled 0.3 s, then 1.92 m/s (1.5 U_mf) for 1.5 s.
+// Fluidized, the bed hangs on the gas: the pressure drop over the last second carries the beads'
+// buoyant weight per area, 400 (pi/6) (2.5 mm)^3 (2526 - 1.2) kg/m3 9.81 m/s2 / (5 cm 2.5 mm).
+TEST(TfdemUniformSmoke, TheUniformInflowBedIsCarriedByTheGas) {
+  TempDir work;
+  fs::copy_file(sourceDir() / "configs/goldschmidt-tfdem-smoke.json", work.path() / "smoke.json");
+  const auto r = runGrainbridge(work.path(), "run smoke.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const fs::path bed = onlyInstance(work.path() / "results/goldschmidt-tfdem-smoke/bed");
+  ASSERT_FALSE(bed.empty());
+  const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
+  const double weight = 400.0 * M_PI / 6.0 * std::pow(2.5e-3, 3) * (2526.0 - 1.2) * 9.81 / (0.05 * 2.5e-3);
+  const double dp = summary.at("dp_bed").get<double>();
+  std::printf("uniform smoke: dp over 0.5-1.5 s %.1f +- %.1f Pa, buoyant weight %.1f Pa\n", dp,
+              summary.at("dp_bed_err").get<double>(), weight);
+  EXPECT_NEAR(dp, weight, 0.03 * weight);
 }
 
 }  // namespace
