@@ -11,8 +11,8 @@
 
 #include "core/Error.hpp"
 
-// LAPACK: LU with partial pivoting of a band matrix, and the solve (Fortran interface).
-// LAPACK: Cholesky factorisation and solve of a symmetric positive definite band matrix.
+// LAPACK (Fortran interface): Cholesky factorisation and solve of a symmetric positive definite
+// band matrix; LU with partial pivoting of a band matrix, and the solve.
 extern "C" void dpbsv_(const char* uplo, const int* n, const int* kd, const int* nrhs, double* ab, const int* ldab,
                        double* b, const int* ldb, int* info);
 extern "C" void dgbsv_(const int* n, const int* kl, const int* ku, const int* nrhs, double* ab, const int* ldab,

@@ -29,18 +29,22 @@ class SingularSystem : public Error {
   using Error::Error;
 };
 
-// How a system is solved. Direct: the band or sparse LU above, exact to round-off. Cholesky: for
-// a system the caller knows to be symmetric positive definite (an incompressible phase's pressure
-// correction with a fixed level), LAPACK's band Cholesky (dpbsv), about half the band LU's work;
-// the LU wherever the matrix turns out not to be (asymmetric, not banded or not definite). Iterative:
-// Eigen's BiCGSTAB with a diagonal preconditioner from the values `phi` holds, to a residual
-// |A x - b| <= tolerance |b|, and the direct solve if that fails within maxIterations. For
-// strongly diagonally dominant systems (momentum at a small step, where rho eps dV / dt dwarfs
-// the neighbour coefficients) it needs a few iterations where the LU needs a band's worth of
-// work per row. GaussSeidel: point Gauss-Seidel sweeps on the stencil itself (no matrix is
-// assembled; MFiX's leq_sor with omega 1), until the root-mean-square residual falls to tolerance
-// times that of the right-hand side, else the direct solve. An inner solve need not be exact, as an outer iteration's convergence test reads
-// the residual before the solve.
+// How a system is solved.
+// - Direct: the band or sparse LU above, exact to round-off.
+// - Cholesky: for a system the caller knows to be symmetric positive definite (an incompressible
+//   phase's pressure correction with a fixed level), LAPACK's band Cholesky (dpbsv), about half
+//   the band LU's work; the LU wherever the matrix turns out not to be (asymmetric, not banded or
+//   not definite).
+// - Iterative: Eigen's BiCGSTAB with a diagonal preconditioner, from the values `phi` holds, to a
+//   residual |A x - b| <= tolerance |b|.
+// - GaussSeidel: point Gauss-Seidel sweeps on the stencil itself (no matrix is assembled; MFiX's
+//   leq_sor with omega 1), until the root-mean-square residual falls to tolerance times that of
+//   the right-hand side.
+// The last two take the direct solve when they do not converge within maxIterations. For strongly
+// diagonally dominant systems (momentum at a small step, where rho eps dV / dt dwarfs the
+// neighbour coefficients) they need a few iterations where the LU needs a band's worth of work per
+// row. An inner solve need not be exact: an outer iteration's convergence test reads the residual
+// before the solve.
 struct LinearSolve {
   enum class Method { Direct, Cholesky, Iterative, GaussSeidel };
   Method method = Method::Direct;

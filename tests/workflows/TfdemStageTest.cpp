@@ -108,18 +108,28 @@ TEST_F(TfdemStage, ACrashWhileRunningResumesBitForBit) {
   EXPECT_EQ(artifactDigests(work.path()), artifactDigests(reference.path()));
 }
 
+// Runs the shipped config configs/<name>.json in `work` and returns its `bed` stage's summary.
+json runShippedBed(const TempDir& work, const std::string& name) {
+  fs::copy_file(sourceDir() / ("configs/" + name + ".json"), work.path() / "smoke.json");
+  const auto r = runGrainbridge(work.path(), "run smoke.json");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  const fs::path bed = onlyInstance(work.path() / "results" / name / "bed");
+  if (bed.empty()) {
+    ADD_FAILURE() << "no finished instance of " << name << "'s bed";
+    return json::object();
+  }
+  return json::parse(readText(bed / "manifest.json")).at("summary");
+}
+
 // The shipped central-jet bed (Table 7.1), CI-sized: 2400 beads of 4 mm settle for 0.3 s, then
 // the jet runs 0.15 s. One layer of 4 mm spheres packed at an area fraction phi over the 15 cm
 // width stands 2400 pi (2 mm)^2 / (15 cm phi) high: 23.1 cm at hexagonal packing's 0.907, 24.2 cm
 // at a random layer's 0.86 (the issue expects 23-25 cm).
 TEST(TfdemJetSmoke, TheCentralJetBedSettlesToItsHeightAndTheJetBlowsThroughIt) {
   TempDir work;
-  fs::copy_file(sourceDir() / "configs/tsuji-jet-tfdem-smoke.json", work.path() / "smoke.json");
-  const auto r = runGrainbridge(work.path(), "run smoke.json");
-  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const json summary = runShippedBed(work, "tsuji-jet-tfdem-smoke");
+  ASSERT_FALSE(summary.empty());
   const fs::path bed = onlyInstance(work.path() / "results/tsuji-jet-tfdem-smoke/bed");
-  ASSERT_FALSE(bed.empty());
-  const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
   EXPECT_EQ(summary.at("particles").get<int>(), 2400);
   EXPECT_GT(summary.at("start_bed_height").get<double>(), 0.23);
   EXPECT_LT(summary.at("start_bed_height").get<double>(), 0.25);
@@ -132,22 +142,14 @@ TEST(TfdemJetSmoke, TheCentralJetBedSettlesToItsHeightAndTheJetBlowsThroughIt) {
   EXPECT_TRUE(fs::exists(bed / "gas/fields.xmf"));
 }
 
-}  // namespace
-
-namespace {
-
 // The shipped uniform-inflow bed (Table 7.1's material and inflow), CI-sized: 400 beads of 2.5 mm
 // in a 5 x 20 cm column on 5 x 20 gas cells, settled 0.3 s, then 1.92 m/s (1.5 U_mf) for 1.5 s.
 // Fluidized, the bed hangs on the gas: the pressure drop over the last second carries the beads'
 // buoyant weight per area, 400 (pi/6) (2.5 mm)^3 (2526 - 1.2) kg/m3 9.81 m/s2 / (5 cm 2.5 mm).
 TEST(TfdemUniformSmoke, TheUniformInflowBedIsCarriedByTheGas) {
   TempDir work;
-  fs::copy_file(sourceDir() / "configs/goldschmidt-tfdem-smoke.json", work.path() / "smoke.json");
-  const auto r = runGrainbridge(work.path(), "run smoke.json");
-  ASSERT_EQ(r.exitCode, 0) << r.output;
-  const fs::path bed = onlyInstance(work.path() / "results/goldschmidt-tfdem-smoke/bed");
-  ASSERT_FALSE(bed.empty());
-  const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
+  const json summary = runShippedBed(work, "goldschmidt-tfdem-smoke");
+  ASSERT_FALSE(summary.empty());
   const double weight = 400.0 * M_PI / 6.0 * std::pow(2.5e-3, 3) * (2526.0 - 1.2) * 9.81 / (0.05 * 2.5e-3);
   const double dp = summary.at("dp_bed").get<double>();
   std::printf("uniform smoke: dp over 0.5-1.5 s %.1f +- %.1f Pa, buoyant weight %.1f Pa\n", dp,
