@@ -1,6 +1,8 @@
 #include "engines/fluid/Momentum.hpp"
 
 #include <algorithm>
+#include <array>
+#include <vector>
 
 #include "engines/fluid/SuperbeeOnGrid.hpp"
 
@@ -89,6 +91,28 @@ StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, c
 
   StencilSystem system(grid);
   for (std::size_t f = 0; f < grid.paddedCount(); ++f) system.setActive(f, in.boundaries->solvedFace(a, f));
+  // Each control-volume face is the high face of one velocity face and the low face of the next
+  // along d: its deferred correction F (superbee - upwind), worked out as the high face's, is kept
+  // for the next face's low side (the same operands in the same order, so the same bits).
+  std::array<std::vector<double>, 3> highCorrection;
+  std::array<std::vector<char>, 3> highDone;
+  for (int d = 0; d < grid.dimensions(); ++d) {
+    highCorrection[static_cast<std::size_t>(d)].assign(grid.paddedCount(), 0.0);
+    highDone[static_cast<std::size_t>(d)].assign(grid.paddedCount(), 0);
+  }
+
+  // div(v) of the cells on either side of the active faces, each worked out once (a cell is E of
+  // one face and P of the next).
+  const CellField& lambda = props.bulkViscosity;
+  std::vector<double> cellDivergence(grid.paddedCount(), 0.0);
+  std::vector<char> divergenceDone(grid.paddedCount(), 0);
+  const auto divergenceAt = [&](std::size_t c) {
+    if (divergenceDone[c] == 0) {
+      cellDivergence[c] = divergence(grid, phase, c);
+      divergenceDone[c] = 1;
+    }
+    return cellDivergence[c];
+  };
 
   for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
     if (!system.active(f)) continue;
@@ -133,12 +157,18 @@ StencilSystem assembleMomentum(const MomentumInputs& in, std::size_t m, int a, c
         system.anb(f, 2 * d) = aLo;
         sumNb += aHi + aLo;
         const int position = at[static_cast<std::size_t>(d)];
-        b -= Fhi * correction(grid, u, f, d, position, Fhi) -
-             Flo * correction(grid, u, grid.neighbour(f, d, -1), d, position - 1, Flo);
+        const std::size_t low = grid.neighbour(f, d, -1);
+        const double high = Fhi * correction(grid, u, f, d, position, Fhi);
+        highCorrection[static_cast<std::size_t>(d)][f] = high;
+        highDone[static_cast<std::size_t>(d)][f] = 1;
+        // A face in the first layer along d has no face before it in the grid (along a, ia = -1
+        // takes its own flux as the low one).
+        const bool kept = position >= 0 && highDone[static_cast<std::size_t>(d)][low] != 0;
+        b -= high - (kept ? highCorrection[static_cast<std::size_t>(d)][low]
+                          : Flo * correction(grid, u, low, d, position - 1, Flo));
         b += transposed;
       }
-      const CellField& lambda = props.bulkViscosity;
-      b += (lambda[E] * divergence(grid, phase, E) - lambda[P] * divergence(grid, phase, P)) * grid.faceArea(a);
+      b += (lambda[E] * divergenceAt(E) - lambda[P] * divergenceAt(P)) * grid.faceArea(a);
     }
     // (rho eps)^0 of the control volume: the continuity-subtracted transient.
     const double a0 =

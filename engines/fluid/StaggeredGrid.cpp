@@ -22,6 +22,17 @@ StaggeredGrid::StaggeredGrid(core::data::GridGeometry geometry) : geometry_(std:
     padded_[static_cast<std::size_t>(a)] = static_cast<std::size_t>(cells(a) + 2 * ghosts(a));
   }
   stride_ = {1, padded_[0], padded_[0] * padded_[1]};
+  coordinates_.resize(paddedCount());
+  interior_.resize(paddedCount());
+  for (std::size_t c = 0; c < paddedCount(); ++c) {
+    const int i = static_cast<int>(c % padded_[0]) - ghosts(0);
+    const int j = static_cast<int>((c / padded_[0]) % padded_[1]) - ghosts(1);
+    const int k = static_cast<int>(c / (padded_[0] * padded_[1])) - ghosts(2);
+    coordinates_[c] = {i, j, k};
+    interior_[c] = interior(i, j, k) ? 1 : 0;
+  }
+  cellVolume_ = geometry_.spacing.prod();
+  for (int a = 0; a < 3; ++a) faceArea_[static_cast<std::size_t>(a)] = cellVolume_ / spacing(a);
 }
 
 Vec3 StaggeredGrid::cellCentre(int i, int j, int k) const {
@@ -34,9 +45,5 @@ Vec3 StaggeredGrid::faceCentre(int axis, int i, int j, int k) const {
   c[axis] += 0.5 * spacing(axis);
   return c;
 }
-
-double StaggeredGrid::cellVolume() const { return geometry_.spacing.prod(); }
-
-double StaggeredGrid::faceArea(int axis) const { return cellVolume() / spacing(axis); }
 
 }  // namespace grainbridge::fluid

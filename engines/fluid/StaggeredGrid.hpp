@@ -13,6 +13,7 @@
 // in [k][j][i] order, the same layout as core's field frames.
 #include <array>
 #include <cstddef>
+#include <vector>
 
 #include "core/Types.hpp"
 #include "core/data/FieldFrame.hpp"
@@ -46,16 +47,9 @@ class StaggeredGrid {
     return direction > 0 ? c + stride_[static_cast<std::size_t>(axis)] : c - stride_[static_cast<std::size_t>(axis)];
   }
   // (i, j, k) of a flat index: the inverse of index().
-  [[nodiscard]] std::array<int, 3> coordinates(std::size_t c) const {
-    const int i = static_cast<int>(c % padded_[0]) - ghosts(0);
-    const int j = static_cast<int>((c / padded_[0]) % padded_[1]) - ghosts(1);
-    const int k = static_cast<int>(c / (padded_[0] * padded_[1])) - ghosts(2);
-    return {i, j, k};
-  }
-  [[nodiscard]] bool interior(std::size_t c) const {
-    const auto [i, j, k] = coordinates(c);
-    return interior(i, j, k);
-  }
+  // Looked up, not divided out: every assembly loop asks at every index.
+  [[nodiscard]] std::array<int, 3> coordinates(std::size_t c) const { return coordinates_[c]; }
+  [[nodiscard]] bool interior(std::size_t c) const { return interior_[c] != 0; }
   [[nodiscard]] bool interior(int i, int j, int k) const {
     return i >= 0 && i < cells(0) && j >= 0 && j < cells(1) && k >= 0 && k < cells(2);
   }
@@ -63,13 +57,18 @@ class StaggeredGrid {
   [[nodiscard]] Vec3 cellCentre(int i, int j, int k) const;
   // Centre of face (axis, i, j, k): the high face of cell (i, j, k) along `axis`.
   [[nodiscard]] Vec3 faceCentre(int axis, int i, int j, int k) const;
-  [[nodiscard]] double cellVolume() const;
-  [[nodiscard]] double faceArea(int axis) const;
+  // Worked out once: the assembly loops ask for them at every face.
+  [[nodiscard]] double cellVolume() const { return cellVolume_; }
+  [[nodiscard]] double faceArea(int axis) const { return faceArea_[static_cast<std::size_t>(axis)]; }
 
  private:
   core::data::GridGeometry geometry_;
   std::array<std::size_t, 3> padded_{};
   std::array<std::size_t, 3> stride_{};
+  std::vector<std::array<int, 3>> coordinates_;
+  std::vector<char> interior_;
+  double cellVolume_ = 0.0;
+  std::array<double, 3> faceArea_{};
 };
 
 }  // namespace grainbridge::fluid

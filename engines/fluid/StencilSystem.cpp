@@ -205,18 +205,29 @@ bool StencilSystem::sweep(std::vector<double>& phi, const LinearSolve& how) cons
     rhs2 += known * known;
   }
   const double target2 = how.tolerance * how.tolerance * rhs2;
+  // The sweeps visit only the active entries and the active axes' neighbours, in slot order (so
+  // each sum adds up as it always has).
+  std::vector<std::size_t> cells;
+  for (std::size_t c = 0; c < ap_.size(); ++c) {
+    if (active_[c] != 0) cells.push_back(c);
+  }
+  std::array<const double*, 6> coefficient{};
+  std::array<std::ptrdiff_t, 6> step{};
+  std::size_t slots = 0;
+  for (int nb = 0; nb < 6; ++nb) {
+    if (!used[static_cast<std::size_t>(nb)]) continue;
+    coefficient[slots] = anb_[static_cast<std::size_t>(nb)].data();
+    step[slots++] = offset[static_cast<std::size_t>(nb)];
+  }
+  double* x = phi.data();
   for (int iteration = 0; iteration < how.maxIterations; ++iteration) {
     double r2 = 0.0;
-    for (std::size_t c = 0; c < ap_.size(); ++c) {
-      if (active_[c] == 0) continue;
+    for (const std::size_t c : cells) {
       double sum = b_[c];
-      for (int nb = 0; nb < 6; ++nb) {
-        if (used[static_cast<std::size_t>(nb)])
-          sum += anb_[static_cast<std::size_t>(nb)][c] * phi[c + static_cast<std::size_t>(offset[static_cast<std::size_t>(nb)])];
-      }
-      const double r = sum - ap_[c] * phi[c];
+      for (std::size_t k = 0; k < slots; ++k) sum += coefficient[k][c] * x[static_cast<std::ptrdiff_t>(c) + step[k]];
+      const double r = sum - ap_[c] * x[c];
       r2 += r * r;
-      phi[c] += r / ap_[c];
+      x[c] += r / ap_[c];
     }
     if (!std::isfinite(r2)) return false;
     if (r2 <= target2) return true;
