@@ -1,5 +1,6 @@
 #include "engines/tfdem/ParticleBedMeasures.hpp"
 
+#include <cmath>
 #include <unordered_map>
 
 namespace grainbridge::tfdem {
@@ -13,6 +14,16 @@ double meanParticleHeight(std::span<const Vec3> positions, const fluid::Vertical
 
 double meanParticleHeight(const dem::Particles& particles, const fluid::VerticalAxis& up, double bottom) {
   return meanParticleHeight(std::span<const Vec3>(particles.x.data(), particles.nOwned), up, bottom);
+}
+
+double buoyantWeightPerArea(const dem::Particles& particles, double gasDensity, double gravity, double bottomArea) {
+  double weight = 0.0;
+  for (std::size_t i = 0; i < particles.nOwned; ++i) {
+    const double a = particles.radius[i];
+    const double volume = 4.0 / 3.0 * M_PI * a * a * a;
+    weight += (particles.mass[i] - gasDensity * volume) * gravity;
+  }
+  return bottomArea > 0.0 ? weight / bottomArea : 0.0;
 }
 
 ContactNumbers contactNumbers(const core::data::ContactList& contacts, std::int64_t particles) {

@@ -18,6 +18,12 @@ namespace grainbridge::tfdem {
 [[nodiscard]] double meanParticleHeight(std::span<const Vec3> positions, const fluid::VerticalAxis& up, double bottom);
 [[nodiscard]] double meanParticleHeight(const dem::Particles& particles, const fluid::VerticalAxis& up, double bottom);
 
+// The particles' buoyant weight per unit area of the bottom [Pa]: sum_p m_p (1 - rho_g / rho_p) |g|
+// over `bottomArea` (what a fluidized bed's pressure drop carries; a 2D bed's area is its width
+// times its one-particle depth). Frozen particles count too: the gas sees them as well.
+[[nodiscard]] double buoyantWeightPerArea(const dem::Particles& particles, double gasDensity, double gravity,
+                                          double bottomArea);
+
 struct ContactNumbers {
   double coordination = 0.0;       // 2 contacts / particles
   double multiContactRatio = 0.0;  // N_c >= 2 over N_c >= 1; 0 when no particle touches another

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <sstream>
 
 #include "tests/support/Cli.hpp"
 #include "tests/support/WorkflowResults.hpp"
@@ -68,7 +70,8 @@ TEST_F(TfdemStage, WritesParticleAndGasFramesSeriesAndSummary) {
   EXPECT_EQ(gasFrames, 5);
   const std::string series = readText(bed / "series.csv");
   EXPECT_EQ(series.substr(0, series.find('\n')),
-            "time,step,dp_bed,mean_height,contacts,coordination,multi_contact_ratio,gas_iterations");
+            "time,step,dp_bed,mean_height,mean_height_fields,contacts,coordination,multi_contact_ratio,"
+            "gas_iterations");
   EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 21);  // header and 0.06 / 0.003 rows
   const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
   EXPECT_EQ(summary.at("particles").get<int>(), 60);
@@ -86,6 +89,50 @@ TEST_F(TfdemStage, WritesParticleAndGasFramesSeriesAndSummary) {
   EXPECT_GE(summary.at("multi_contact_ratio").get<double>(), 0.0);
   EXPECT_LE(summary.at("multi_contact_ratio").get<double>(), 1.0);
   EXPECT_EQ(summary.at("pressure_drop_tap").get<std::string>(), "bed");
+  // The products a comparing stage reads: the beads' buoyant weight per area of the bottom,
+  // 60 (pi/6) (4 mm)^3 (2700 - 1.2) kg/m3 9.81 m/s2 / (8 cm 4 mm); Eq. 5.22 of the deposited
+  // fraction beside the particles' own mean height (the centre-cell deposit puts each bead at its
+  // cell's centre, 1 cm rows: within a row's half height of it); the window's mean fields.
+  const double weight = 60.0 * M_PI / 6.0 * std::pow(4e-3, 3) * (2700.0 - 1.2) * 9.81 / (0.08 * 4e-3);
+  EXPECT_NEAR(summary.at("bed_weight").get<double>(), weight, 1e-9 * weight);
+  EXPECT_NEAR(summary.at("mean_height_fields").get<double>(), summary.at("mean_height").get<double>(), 0.005);
+  EXPECT_EQ(summary.at("window_frames").get<int>(), 5);  // the window is the whole run: its 5 gas frames
+  EXPECT_TRUE(fs::exists(bed / "mean/fields.xmf"));
+}
+
+// bed_compare reads a tfdem run through its products alone (DESIGN.md, "Stage contracts"): it
+// passes the config check and writes the table and figures, with the particle run's own measures.
+TEST_F(TfdemStage, BedCompareReadsATfdemRun) {
+  json wf = json::parse(kWorkflow);
+  wf["stages"]["beds"] = {{"type", "bed_compare"},
+                          {"from", "bed"},
+                          {"params", {{"references", {{{"label", "a layer"}, {"mean_height", "1 cm"}}}}}}};
+  writeText(work.path() / "wf.json", wf.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const fs::path beds = onlyInstance(work.path() / "results/wf/beds");
+  ASSERT_FALSE(beds.empty());
+  const std::string csv = readText(beds / "beds.csv");
+  const auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream in(line.substr(0, line.find('\n')));
+    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  const auto header = split(csv), row = split(csv.substr(csv.find('\n') + 1));
+  ASSERT_EQ(row.size(), header.size()) << csv;
+  // The run's row carries its stage type as the colour key and the particle run's own measures.
+  EXPECT_EQ(row[0], "bed");
+  EXPECT_EQ(row[1], "tfdem");
+  for (const char* column : {"mean_height", "mean_height_fields", "bed_weight", "pressure_drop", "coordination",
+                             "multi_contact_ratio", "reference_height"}) {
+    const auto at = std::find(header.begin(), header.end(), column);
+    ASSERT_NE(at, header.end()) << column << " in " << csv;
+    EXPECT_FALSE(row[static_cast<std::size_t>(at - header.begin())].empty()) << column << " in " << csv;
+  }
+  for (const char* figure : {"solid_fraction_maps.svg", "mean_height.svg", "pressure_drop.svg", "contact_numbers.svg"})
+    EXPECT_TRUE(fs::exists(beds / figure)) << figure;
+  EXPECT_NE(readText(beds / "mean_height.svg").find("Eq. 5.22 of the deposited fraction"), std::string::npos);
 }
 
 TEST_F(TfdemStage, ACrashWhileSettlingResumesBitForBit) {
@@ -106,6 +153,11 @@ TEST_F(TfdemStage, ACrashWhileRunningResumesBitForBit) {
   ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("resuming from the checkpoint"), std::string::npos) << resumed.output;
   EXPECT_EQ(artifactDigests(work.path()), artifactDigests(reference.path()));
+  // The summary's window averages and the mean fields hold the samples from before the crash too.
+  const auto summaryOf = [](const fs::path& root) {
+    return json::parse(readText(onlyInstance(root / "results/wf/bed") / "manifest.json")).at("summary");
+  };
+  EXPECT_EQ(summaryOf(work.path()), summaryOf(reference.path()));
 }
 
 // Runs the shipped config configs/<name>.json in `work` and returns its `bed` stage's summary.

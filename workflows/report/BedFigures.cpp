@@ -8,7 +8,7 @@
 namespace grainbridge::workflows::report {
 
 Figure averagedHeightFigure(const std::vector<BedRun>& runs) {
-  Figure figure{"Time-averaged mean particle height (Eq. 5.22)", {"run (row of the table)", "–"},
+  Figure figure{"Time-averaged mean particle height", {"run (row of the table)", "–"},
                 {"mean particle height", "m"}, {}};
   std::map<std::string, Series> byClosure, byReference;
   for (std::size_t b = 0; b < runs.size(); ++b) {
@@ -20,6 +20,18 @@ Figure averagedHeightFigure(const std::vector<BedRun>& runs) {
     points.x.push_back(static_cast<double>(b + 1));
     points.y.push_back(run.meanHeight);
     points.yError.push_back(std::isfinite(run.meanHeightError) ? run.meanHeightError : 0.0);
+    // A particle run's mean height is its particles'; Eq. 5.22 of its deposited fraction beside it.
+    if (const double deposited = run.value("mean_height_fields"); std::isfinite(deposited)) {
+      auto& fields = byClosure[run.closure + " (Eq. 5.22)"];
+      fields.label = "runs, " + run.closure + ", Eq. 5.22 of the deposited fraction";
+      fields.model = run.closure;
+      fields.style = Series::Style::PointsWithErrors;
+      fields.variant = 1;
+      fields.x.push_back(static_cast<double>(b + 1));
+      fields.y.push_back(deposited);
+      const double err = run.value("mean_height_fields_err");
+      fields.yError.push_back(std::isfinite(err) ? err : 0.0);
+    }
     for (const auto& r : run.references) {
       const bool first = !byReference.contains(r.label);
       auto& ref = byReference[r.label];
@@ -56,12 +68,38 @@ TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap)
       const std::string label = run.label + (run.phases.size() > 1 ? ", " + run.phases[m] : "");
       out.height.series.push_back({label, run.closure, Series::Style::Line, variant, time->second, h->second, {}});
     }
+    // A particle run: its particles' arithmetic mean height, and Eq. 5.22 of its deposited fraction.
+    for (const auto& [column, what] : {std::pair{"mean_height", ", particles"},
+                                       std::pair{"mean_height_fields", ", Eq. 5.22 of the deposited fraction"}}) {
+      const auto h = run.series.find(column);
+      if (h == run.series.end()) continue;
+      out.height.series.push_back({run.label + what, run.closure, Series::Style::Line, variants[run.closure]++,
+                                   time->second, h->second, {}});
+    }
     if (const auto dp = run.series.find(run.pressureDrop); dp != run.series.end()) {
       out.pressureDrop.series.push_back(
           {run.label, run.closure, Series::Style::Line, runVariant, time->second, dp->second, {}});
     }
   }
   return out;
+}
+
+Figure contactFigure(const std::vector<BedRun>& runs) {
+  Figure figure{"Contact numbers (Figs. 7.5, 7.6, 7.11)", {"time", "s"}, {"coordination / multi-contact ratio", "–"},
+                {}};
+  std::map<std::string, int> variants;
+  for (const auto& run : runs) {
+    const auto time = run.series.find("time");
+    if (time == run.series.end()) continue;
+    for (const auto& [column, what] : {std::pair{"coordination", ", coordination"},
+                                       std::pair{"multi_contact_ratio", ", multi-contact ratio"}}) {
+      const auto v = run.series.find(column);
+      if (v == run.series.end()) continue;
+      figure.series.push_back(
+          {run.label + what, run.closure, Series::Style::Line, variants[run.closure]++, time->second, v->second, {}});
+    }
+  }
+  return figure;
 }
 
 SegregationFigures segregationFigures(const std::vector<BedRun>& runs) {

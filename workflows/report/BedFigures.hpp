@@ -21,6 +21,10 @@ struct TimeFigures {
 };
 [[nodiscard]] TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap);
 
+// The coordination number and the multi-contact ratio against time (Figs. 7.5, 7.6, 7.11) of the
+// runs whose series record them (particle runs), a line each; no series when none does.
+[[nodiscard]] Figure contactFigure(const std::vector<BedRun>& runs);
+
 // Binary beds: s_p (Eqs. 5.23-5.25) of every run that records it against time with its 1 s block
 // means, and each phase's time-averaged solid fraction over the width against height (Fig. 5.6)
 // from its profiles.csv. No series in either when no run records s_p.

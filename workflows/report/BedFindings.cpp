@@ -28,14 +28,17 @@ std::string bedsCsv(const std::vector<BedRun>& runs, const std::vector<std::stri
   std::ostringstream csv;
   csv << "run,closure,mean_height,mean_height_err,pressure_drop,pressure_drop_err,dp_frequency,dp_amplitude,"
          "table_coverage_cell_steps,table_coverage_solids,solver_steps,retries,segregation_percentage,"
-         "segregation_percentage_err,reference,reference_kind,"
+         "segregation_percentage_err,mean_height_fields,mean_height_fields_err,bed_weight,coordination,"
+         "coordination_err,multi_contact_ratio,multi_contact_ratio_err,reference,reference_kind,"
          "reference_height,deviation\n";
   for (const auto& run : runs) {
     std::string fields = csvField(run.label) + ',' + run.closure + ',' + number(run.meanHeight) + ',' +
                          number(run.meanHeightError);
     for (const char* k : {"pressure_drop", "pressure_drop_err", "dp_frequency", "dp_amplitude",
                           "table_coverage_cell_steps", "table_coverage_solids", "solver_steps", "retries",
-                          "segregation_percentage", "segregation_percentage_err"}) {
+                          "segregation_percentage", "segregation_percentage_err", "mean_height_fields",
+                          "mean_height_fields_err", "bed_weight", "coordination", "coordination_err",
+                          "multi_contact_ratio", "multi_contact_ratio_err"}) {
       fields += ',' + number(run.value(k));
     }
     bool matchedAny = false;
@@ -60,8 +63,20 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
   const bool anyTable = std::any_of(runs.begin(), runs.end(), [](const BedRun& r) { return r.closure == "table"; });
   findings.columns = {"run", "closure", "mean height [m]"};
   for (const auto& l : referenceLabels) findings.columns.push_back("vs " + l);
+  // Particle runs (tfdem) report the particles' arithmetic mean height; Eq. 5.22 of their deposited
+  // fraction, what a multi-fluid run reports, stands beside it.
+  const auto records = [&runs](const char* k) {
+    return std::any_of(runs.begin(), runs.end(), [k](const BedRun& r) { return std::isfinite(r.value(k)); });
+  };
+  const bool anyDeposited = records("mean_height_fields");
+  const bool anyContacts = records("coordination");
+  const bool anyWeight = records("bed_weight");
+  if (anyDeposited) findings.columns.emplace_back("Eq. 5.22 of deposited fields [m]");
+  if (anyWeight) findings.columns.emplace_back("bed weight [Pa]");
   findings.columns.emplace_back("pressure drop [Pa]");
   findings.columns.emplace_back("Δp frequency [Hz]");
+  findings.columns.emplace_back("Δp amplitude [Pa]");
+  if (anyContacts) findings.columns.emplace_back("coordination / multi-contact ratio");
   if (anyTable) findings.columns.emplace_back("table coverage (cell-steps / solids)");
   const bool anyBinary = std::any_of(runs.begin(), runs.end(),
                                      [](const BedRun& r) { return std::isfinite(r.value("segregation_percentage")); });
@@ -83,8 +98,20 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
       }
       row.push_back(cell);
     }
+    const double deposited = run.value("mean_height_fields");
+    if (anyDeposited) row.push_back(withError(deposited, run.value("mean_height_fields_err")));
+    if (anyWeight) row.push_back(withError(run.value("bed_weight"), NAN));
     row.push_back(withError(run.value("pressure_drop"), run.value("pressure_drop_err")));
     row.push_back(std::isfinite(frequency) ? core::humanNumber(frequency, 3) : "–");
+    const double amplitude = run.value("dp_amplitude");
+    row.push_back(std::isfinite(amplitude) ? core::humanNumber(amplitude, 3) : "–");
+    const double coordination = run.value("coordination");
+    if (anyContacts) {
+      row.push_back(std::isfinite(coordination)
+                        ? withError(coordination, run.value("coordination_err"), 3) + " / " +
+                              withError(run.value("multi_contact_ratio"), run.value("multi_contact_ratio_err"), 3)
+                        : "–");
+    }
     std::string coverage;
     if (run.closure == "table") {
       coverage = core::humanNumber(100.0 * run.value("table_coverage_cell_steps"), 3) + " % / " +
@@ -95,7 +122,20 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
     if (anyBinary) row.push_back(withError(sp, run.value("segregation_percentage_err"), 3));
     findings.rows.push_back(std::move(row));
     headline << run.label << ": mean particle height " << withError(h, hErr) << " m";
+    if (std::isfinite(deposited)) {
+      headline << " over the particles (Eq. 5.22 of their deposited fraction "
+               << withError(deposited, run.value("mean_height_fields_err")) << " m)";
+    }
     if (compared.tellp() > 0) headline << " (" << compared.str() << ")";
+    const double dp = run.value("pressure_drop");
+    if (std::isfinite(dp)) {
+      headline << ", pressure drop " << withError(dp, run.value("pressure_drop_err")) << " Pa";
+      if (std::isfinite(frequency)) headline << " at " << core::humanNumber(frequency, 3) << " Hz";
+      if (std::isfinite(amplitude)) headline << ", amplitude " << core::humanNumber(amplitude, 3) << " Pa";
+      const double weight = run.value("bed_weight");
+      if (std::isfinite(weight)) headline << " (bed weight " << core::humanNumber(weight, 4) << " Pa)";
+    }
+    if (std::isfinite(coordination)) headline << ", coordination " << core::humanNumber(coordination, 3);
     if (run.closure == "table") headline << ", the table covering " << coverage << " of the cell-steps / solids";
     if (std::isfinite(sp)) headline << ", segregation percentage " << withError(sp, run.value("segregation_percentage_err"), 3);
     headline << ". ";

@@ -151,7 +151,7 @@ void BedCompareStage::checkAgainstUpstream(const json& p, const std::string& ptr
     std::string what;
     for (std::size_t k = 0; k < missing.size(); ++k) what += (k == 0 ? "" : "; ") + missing[k];
     d.add(ptr + (tap.empty() || up.records("dp_" + tap) ? "" : "/tap"),
-          from + " does not produce " + what + ": bed_compare takes bed runs that do (mfm with solids)");
+          from + " does not produce " + what + ": bed_compare takes bed runs that do (mfm with solids, tfdem)");
     return;
   }
   // A reference whose match selects no run (a parameter no run is swept over, a value not written
@@ -206,7 +206,7 @@ void BedCompareStage::checkAgainstUpstream(const json& p, const std::string& ptr
 
 void BedCompareStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
-  if (ctx.inputs().empty()) throw Error("bed_compare: no upstream runs; give it \"from\" (mfm stages)");
+  if (ctx.inputs().empty()) throw Error("bed_compare: no upstream runs; give it \"from\" (mfm or tfdem stages)");
   std::vector<Reference> references;
   for (const auto& r : p.value("references", json::array())) {
     Reference ref{r.at("label"), r.at("kind"), r.at("mean_height"), {}};
@@ -274,7 +274,14 @@ void BedCompareStage::run(StageContext& ctx) const {
              {"solver_steps", "solver_steps"},
              {"retries", "retries"},
              {"segregation_percentage", "segregation_percentage"},
-             {"segregation_percentage_err", "segregation_percentage_err"}}) {
+             {"segregation_percentage_err", "segregation_percentage_err"},
+             {"mean_height_fields", "mean_height_fields"},
+             {"mean_height_fields_err", "mean_height_fields_err"},
+             {"bed_weight", "bed_weight"},
+             {"coordination", "coordination"},
+             {"coordination_err", "coordination_err"},
+             {"multi_contact_ratio", "multi_contact_ratio"},
+             {"multi_contact_ratio_err", "multi_contact_ratio_err"}}) {
       run.values[column] = bed.value(key);
     }
     runs.push_back(std::move(run));
@@ -309,6 +316,12 @@ void BedCompareStage::run(StageContext& ctx) const {
   const auto overTime = report::timeFigures(runs, tap);
   addFigure(report::drawFigure(overTime.height, ctx.outputDir(), "mean_height"), "Mean particle height against time");
   addFigure(report::drawFigure(overTime.pressureDrop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");
+  const auto contacts = report::contactFigure(runs);
+  if (!contacts.series.empty()) {
+    addFigure(report::drawFigure(contacts, ctx.outputDir(), "contact_numbers"),
+              "Coordination number and multi-contact ratio against time, of the runs that record them (particle "
+              "runs)");
+  }
   const auto binary = report::segregationFigures(runs);
   if (!binary.segregation.series.empty()) {
     addFigure(report::drawFigure(binary.segregation, ctx.outputDir(), "segregation_percentage"),

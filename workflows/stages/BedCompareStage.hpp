@@ -19,10 +19,10 @@ class BedCompareStage final : public StageType {
   // 2: beds.csv and the table gain the segregation percentage of binary beds.
   // 3: figures as wide as their title and legend need (report/Plot): a sweep's long run labels
   //    ran off the right edge.
-  [[nodiscard]] int implVersion() const override { return 3; }
+  [[nodiscard]] int implVersion() const override { return 4; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}}; }
   [[nodiscard]] std::string summary() const override {
-    return "multi-fluid bed runs side by side: heights and pressure drops against references, solid-fraction maps";
+    return "bed runs (mfm, tfdem) side by side: heights and pressure drops against references, solid-fraction maps";
   }
   [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
   [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }

@@ -7,7 +7,8 @@ namespace grainbridge::workflows::stages {
 TfdemSeriesColumns::TfdemSeriesColumns(tfdem::TfdemEngine& engine, const TfdemStageSetup& setup)
     : engine_(engine), setup_(setup) {
   for (const auto& tap : setup.taps) names_.push_back("dp_" + tap.name);
-  for (const char* n : {"mean_height", "contacts", "coordination", "multi_contact_ratio", "gas_iterations"})
+  for (const char* n :
+       {"mean_height", "mean_height_fields", "contacts", "coordination", "multi_contact_ratio", "gas_iterations"})
     names_.push_back(n);
 }
 
@@ -20,6 +21,7 @@ void TfdemSeriesColumns::sample(driver::SeriesRow& row) {
   }
   const auto& particles = engine_.simulation().particles();
   values.push_back(tfdem::meanParticleHeight(particles, setup_.vertical, setup_.bottom));
+  values.push_back(fluid::meanParticleHeight(flow, setup_.vertical, 1));  // Eq. 5.22, the deposited phase
   const auto& contacts = engine_.particleFrame().contacts;
   const auto numbers = tfdem::contactNumbers(contacts, static_cast<std::int64_t>(particles.nOwned));
   values.push_back(static_cast<double>(contacts.size()));
@@ -27,10 +29,6 @@ void TfdemSeriesColumns::sample(driver::SeriesRow& row) {
   values.push_back(numbers.multiContactRatio);
   values.push_back(engine_.gasIterations());
   for (double v : values) row.add(v);
-  const double slack = 1e-9 * setup_.outputInterval;  // round-off in the sampling times
-  if (engine_.time() >= setup_.averageFrom - slack && engine_.time() <= setup_.averageTo + slack) {
-    for (std::size_t k = 0; k < names_.size(); ++k) window_[names_[k]].push_back(values[k]);
-  }
 }
 
 }  // namespace grainbridge::workflows::stages

@@ -7,11 +7,14 @@
 
 #include "core/Error.hpp"
 #include "core/averaging/DominantFrequency.hpp"
+#include "core/averaging/FieldTimeAverage.hpp"
 #include "core/io/FieldFrameReader.hpp"
+#include "core/io/FieldFrameWriter.hpp"
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/tfdem/ParticleBedMeasures.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
+#include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/FluidSchema.hpp"
 #include "workflows/stages/ParticleSchema.hpp"
@@ -213,9 +216,7 @@ void TfdemStage::run(StageContext& ctx) const {
   run.output = true;
   run.configure = [&e] { e.setGasActive(true); };
   loop.addPhase(std::move(run));
-  auto columns = std::make_unique<TfdemSeriesColumns>(e, setup);
-  TfdemSeriesColumns& observed = *columns;
-  loop.addColumns(std::move(columns));
+  loop.addColumns(std::make_unique<TfdemSeriesColumns>(e, setup));
   loop.run(e);
 
   // The gas's frames, beside the particles'.
@@ -225,7 +226,21 @@ void TfdemStage::run(StageContext& ctx) const {
   if (!gasFrames.empty()) ctx.addArtifact("gas/fields.xmf", "xdmf");
 
   json summary;
-  const auto& window = observed.windowSamples();
+  // The window's samples, read back from series.csv and its mean fields from the frames on disk,
+  // so that a run resumed from a checkpoint averages what an uninterrupted one does.
+  const double slack = 1e-9 * setup.outputInterval;  // round-off in the sampling times
+  const auto inWindow = [&](double t) { return t >= setup.averageFrom - slack && t <= setup.averageTo + slack; };
+  std::map<std::string, std::vector<double>> window;
+  {
+    const auto series = report::readNumericCsv(ctx.outputDir() / "series.csv");
+    const auto& time = series.at("time");
+    for (const auto& [column, values] : series) {
+      auto& kept = window[column];
+      for (std::size_t k = 0; k < time.size(); ++k) {
+        if (inWindow(time[k])) kept.push_back(values[k]);
+      }
+    }
+  }
   const auto& particles = e.simulation().particles();
   summary["particles"] = static_cast<std::int64_t>(particles.nOwned);
   for (std::size_t k = 0; k < setup.taps.size(); ++k) {
@@ -239,8 +254,16 @@ void TfdemStage::run(StageContext& ctx) const {
     }
   }
   if (!setup.taps.empty()) summary["pressure_drop_tap"] = setup.taps.front().name;
-  for (const char* column : {"mean_height", "coordination", "multi_contact_ratio"})
+  for (const char* column : {"mean_height", "mean_height_fields", "coordination", "multi_contact_ratio"})
     addAverage(summary, column, window.at(column));
+  // What the gas carries: the particles' buoyant weight per unit area of the bottom.
+  const auto& geometry = setup.engine.grid;
+  double bottomArea = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    if (a != setup.vertical.axis) bottomArea *= geometry.cells[static_cast<std::size_t>(a)] * geometry.spacing[a];
+  }
+  summary["bed_weight"] = tfdem::buoyantWeightPerArea(particles, setup.engine.gas.density,
+                                                      setup.engine.solver.gravity.norm(), bottomArea);
   const auto& ratios = window.at("multi_contact_ratio");
   if (!ratios.empty()) {
     const auto above = std::count_if(ratios.begin(), ratios.end(), [](double r) { return r > kMultiContactMark; });
@@ -261,6 +284,20 @@ void TfdemStage::run(StageContext& ctx) const {
     const double start = tfdem::meanParticleHeight(first.position, setup.vertical, setup.bottom);
     summary["start_mean_height"] = start;
     summary["start_bed_height"] = 2.0 * start;
+  }
+  // The window's time-averaged gas and deposited particle fields, over its gas frames, beside the
+  // frames (mean/fields.xmf).
+  core::averaging::FieldTimeAverage fields;
+  for (const auto& f : gasFrames) {
+    auto frame = core::io::readFieldFrame(f);
+    if (inWindow(frame.time)) fields.add(frame);
+  }
+  summary["window_frames"] = fields.frames();
+  if (fields.frames() > 0) {
+    core::io::FieldFrameWriter mean(ctx.outputDir() / "mean", stamp);
+    const auto path = mean.write(fields.mean());
+    ctx.addArtifact(path.lexically_relative(ctx.outputDir()).string(), "mean_field_frame");
+    ctx.addArtifact("mean/fields.xmf", "xdmf");
   }
   ctx.setSummary(summary);
 }
@@ -285,8 +322,13 @@ std::optional<PlannedOutput> TfdemStage::plannedOutput(const json& p) const {
     keys.push_back("dp_" + tap.at("name").get<std::string>());
     out.seriesColumns.push_back("dp_" + tap.at("name").get<std::string>());
   }
-  keys.push_back("mean_height");
-  for (const char* c : {"mean_height", "contacts", "coordination", "multi_contact_ratio"}) out.seriesColumns.push_back(c);
+  for (const char* k : {"mean_height", "mean_height_fields", "bed_weight"}) keys.push_back(k);
+  for (const char* c : {"mean_height", "mean_height_fields", "contacts", "coordination", "multi_contact_ratio"})
+    out.seriesColumns.push_back(c);
+  // The gas frames (with the deposited particle fraction) at every particle frame, and the
+  // window's mean fields (average_from before the end is the stage's own rule).
+  out.fieldFrames = p.at("frames").get<std::int64_t>() > 0;
+  out.meanFieldFrames = true;
   return out;
 }
 

@@ -16,7 +16,7 @@ class TfdemStage final : public StageType {
  public:
   TfdemStage();
   [[nodiscard]] std::string name() const override { return "tfdem"; }
-  [[nodiscard]] int implVersion() const override { return 3; }
+  [[nodiscard]] int implVersion() const override { return 4; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"coordination", "–"}, {"multi_contact_ratio", "–"}};
   }
