@@ -60,7 +60,7 @@ StencilSystem assemblePressureCorrection(const FlowState& state, const FlowState
   if (!boundaries.hasOutlet() && !anyCompressible) {
     const std::size_t first = grid.index(0, 0, 0);
     system.ap(first) = 1.0;
-    for (int nb = 0; nb < 6; ++nb) system.anb(first, nb) = 0.0;
+    for (int nb = 0; nb < 2 * grid.dimensions(); ++nb) system.anb(first, nb) = 0.0;
     system.b(first) = 0.0;
   }
   return system;

@@ -231,7 +231,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     for (int a = 0; a < dims; ++a) {
       std::vector<StencilSystem> systems;
       for (std::size_t m = 0; m < M; ++m)
-        systems.push_back(given[m] != 0 ? StencilSystem(grid) : assembleMomentum(in, m, a, flux[m]));
+        systems.push_back(given[m] != 0 ? StencilSystem::unsolved(grid) : assembleMomentum(in, m, a, flux[m]));
       corrections.push_back(
           coupleAndRelax(systems, state, props, a, settings.momentumRelaxation, settings.diluteFraction, given));
       for (std::size_t m = 0; m < M; ++m) {

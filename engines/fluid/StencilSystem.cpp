@@ -34,7 +34,9 @@ bool neighbourOf(const StaggeredGrid& grid, std::size_t c, int n, std::size_t& o
 
 StencilSystem::StencilSystem(const StaggeredGrid& grid)
     : grid_(&grid), ap_(grid.paddedCount(), 0.0), b_(grid.paddedCount(), 0.0), active_(grid.paddedCount(), 0) {
-  for (auto& a : anb_) a.assign(grid.paddedCount(), 0.0);
+  // The active axes' slots only: a 2D grid has no z neighbours, and a system is built for every
+  // equation of every outer iteration.
+  for (int nb = 0; nb < 2 * grid.dimensions(); ++nb) anb_[static_cast<std::size_t>(nb)].assign(grid.paddedCount(), 0.0);
   for (int k = 0; k < grid.cells(2); ++k)
     for (int j = 0; j < grid.cells(1); ++j)
       for (int i = 0; i < grid.cells(0); ++i) active_[grid.index(i, j, k)] = 1;

@@ -59,6 +59,9 @@ class StencilSystem {
  public:
   // All coefficients zero; the interior cells active.
   explicit StencilSystem(const StaggeredGrid& grid);
+  // The place of an equation that is not solved (a phase given, not solved): it holds no
+  // coefficients, and nothing may read or solve it.
+  [[nodiscard]] static StencilSystem unsolved(const StaggeredGrid& grid) { return StencilSystem(&grid); }
 
   [[nodiscard]] const StaggeredGrid& grid() const { return *grid_; }
   [[nodiscard]] double& ap(std::size_t c) { return ap_[c]; }
@@ -114,9 +117,12 @@ class StencilSystem {
   // Gauss-Seidel sweeps; false (phi then holds the last sweep) when they did not converge.
   bool sweep(std::vector<double>& phi, const LinearSolve& how) const;
 
+  // unsolved(): no storage.
+  explicit StencilSystem(const StaggeredGrid* grid) : grid_(grid) {}
+
   const StaggeredGrid* grid_;
   std::vector<double> ap_, b_;
-  std::array<std::vector<double>, 6> anb_;
+  std::array<std::vector<double>, 6> anb_;  // the active axes' slots (2 * dimensions) hold values
   std::vector<char> active_;
 };
 

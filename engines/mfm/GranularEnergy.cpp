@@ -101,7 +101,7 @@ fluid::StencilSystem assembleGranularEnergy(const GranularEnergyInputs& in, std:
           // Nothing couples this cell (a steady solve of solids at rest and adiabatic): theta stays.
           system.ap(c) = 1.0;
           system.b(c) = theta[c];
-          for (int slot = 0; slot < 6; ++slot) system.anb(c, slot) = 0.0;
+          for (int slot = 0; slot < 2 * grid.dimensions(); ++slot) system.anb(c, slot) = 0.0;
           continue;
         }
         system.ap(c) = sumNb + diagonal;
