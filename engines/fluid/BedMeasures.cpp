@@ -59,6 +59,14 @@ double pressureAtHeight(const FlowState& state, VerticalAxis v, double height) {
   return (1.0 - w) * rowPressure(state, v, row(below)) + w * rowPressure(state, v, row(below + 1));
 }
 
+double bottomArea(const core::data::GridGeometry& geometry, VerticalAxis vertical) {
+  double area = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    if (a != vertical.axis) area *= geometry.cells[static_cast<std::size_t>(a)] * geometry.spacing[a];
+  }
+  return area;
+}
+
 double meanParticleHeight(const FlowState& state, VerticalAxis v, std::size_t m) {
   const auto& grid = state.grid();
   double weighted = 0.0, total = 0.0;

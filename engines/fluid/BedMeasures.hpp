@@ -21,6 +21,10 @@ struct VerticalAxis {
 };
 [[nodiscard]] VerticalAxis verticalAxis(const Vec3& gravity);
 
+// The area of the domain's bottom [m^2]: the product of its horizontal extents (what a bed's weight
+// per unit area divides by).
+[[nodiscard]] double bottomArea(const core::data::GridGeometry& geometry, VerticalAxis vertical);
+
 // P_g at height h [m] above the domain's bottom, averaged over the cells of that height; between
 // cell centres linearly, below the first centre extrapolated from the first two (the inlet face).
 [[nodiscard]] double pressureAtHeight(const FlowState& state, VerticalAxis vertical, double height);

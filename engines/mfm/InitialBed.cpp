@@ -10,11 +10,7 @@ InitialInventory initialInventory(const MultiFluidSetup& setup, const InitialSta
   const fluid::StaggeredGrid grid(setup.geometry);
   fluid::FlowState state(grid, 1 + solids.size());
   applyRegions(state, initial);
-  const auto& g = setup.geometry;
-  const fluid::VerticalAxis vertical = fluid::verticalAxis(setup.settings.gravity);
-  // The bottom's area: the domain's volume over its height.
-  const double bottom =
-      g.spacing.prod() * g.cellCount() / (g.spacing[vertical.axis] * g.cells[static_cast<std::size_t>(vertical.axis)]);
+  const double bottom = fluid::bottomArea(setup.geometry, fluid::verticalAxis(setup.settings.gravity));
   InitialInventory inventory;
   for (std::size_t m = 1; m <= solids.size(); ++m) {
     const double v = fluid::solidsVolume(state, m);

@@ -1,7 +1,8 @@
 #include "engines/tfdem/ParticleBedMeasures.hpp"
 
-#include <cmath>
 #include <unordered_map>
+
+#include "engines/tfdem/ParticleDeposit.hpp"
 
 namespace grainbridge::tfdem {
 
@@ -19,9 +20,7 @@ double meanParticleHeight(const dem::Particles& particles, const fluid::Vertical
 double buoyantWeightPerArea(const dem::Particles& particles, double gasDensity, double gravity, double bottomArea) {
   double weight = 0.0;
   for (std::size_t i = 0; i < particles.nOwned; ++i) {
-    const double a = particles.radius[i];
-    const double volume = 4.0 / 3.0 * M_PI * a * a * a;
-    weight += (particles.mass[i] - gasDensity * volume) * gravity;
+    weight += (particles.mass[i] - gasDensity * particleVolume(particles.radius[i])) * gravity;
   }
   return bottomArea > 0.0 ? weight / bottomArea : 0.0;
 }

@@ -30,7 +30,8 @@ struct BedRun {
   std::vector<std::filesystem::path> profiles;              // profiles.csv files
   // Further summary values, by beds.csv column: pressure_drop(_err) (of the compared tap),
   // dp_frequency, dp_amplitude, table_coverage_cell_steps, table_coverage_solids, solver_steps,
-  // retries, segregation_percentage(_err); NaN where the run did not record one.
+  // retries, segregation_percentage(_err), bed_weight, and a particle run's mean_height_fields(_err),
+  // coordination(_err) and multi_contact_ratio(_err); NaN where the run did not record one.
   std::map<std::string, double> values;
   [[nodiscard]] double value(const std::string& column) const;
 };

@@ -257,13 +257,9 @@ void TfdemStage::run(StageContext& ctx) const {
   for (const char* column : {"mean_height", "mean_height_fields", "coordination", "multi_contact_ratio"})
     addAverage(summary, column, window.at(column));
   // What the gas carries: the particles' buoyant weight per unit area of the bottom.
-  const auto& geometry = setup.engine.grid;
-  double bottomArea = 1.0;
-  for (int a = 0; a < 3; ++a) {
-    if (a != setup.vertical.axis) bottomArea *= geometry.cells[static_cast<std::size_t>(a)] * geometry.spacing[a];
-  }
-  summary["bed_weight"] = tfdem::buoyantWeightPerArea(particles, setup.engine.gas.density,
-                                                      setup.engine.solver.gravity.norm(), bottomArea);
+  summary["bed_weight"] =
+      tfdem::buoyantWeightPerArea(particles, setup.engine.gas.density, setup.engine.solver.gravity.norm(),
+                                  fluid::bottomArea(setup.engine.grid, setup.vertical));
   const auto& ratios = window.at("multi_contact_ratio");
   if (!ratios.empty()) {
     const auto above = std::count_if(ratios.begin(), ratios.end(), [](double r) { return r > kMultiContactMark; });
@@ -326,9 +322,9 @@ std::optional<PlannedOutput> TfdemStage::plannedOutput(const json& p) const {
   for (const char* c : {"mean_height", "mean_height_fields", "contacts", "coordination", "multi_contact_ratio"})
     out.seriesColumns.push_back(c);
   // The gas frames (with the deposited particle fraction) at every particle frame, and the
-  // window's mean fields (average_from before the end is the stage's own rule).
+  // window's mean fields over them (average_from before the end is the stage's own rule).
   out.fieldFrames = p.at("frames").get<std::int64_t>() > 0;
-  out.meanFieldFrames = true;
+  out.meanFieldFrames = out.fieldFrames;
   return out;
 }
 
