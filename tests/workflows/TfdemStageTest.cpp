@@ -10,8 +10,12 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/units/UnitSystem.hpp"
+#include "engines/closures/SyamlalOBrien.hpp"
 #include "tests/support/Cli.hpp"
 #include "tests/support/WorkflowResults.hpp"
+#include "workflows/stages/TfdemSetup.hpp"
+#include "workflows/stages/TfdemStage.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge;
@@ -98,6 +102,36 @@ TEST_F(TfdemStage, WritesParticleAndGasFramesSeriesAndSummary) {
   EXPECT_NEAR(summary.at("mean_height_fields").get<double>(), summary.at("mean_height").get<double>(), 0.005);
   EXPECT_EQ(summary.at("window_frames").get<int>(), 5);  // the window is the whole run: its 5 gas frames
   EXPECT_TRUE(fs::exists(bed / "mean/fields.xmf"));
+}
+
+// The multi-fluid default drag (Syamlal-O'Brien with its C and D) reaches the particles, so a
+// TF-DEM bed can be compared with a multi-fluid one at equal drag: the engine's law is the closure
+// with the config's C and D, not the defaults.
+TEST(TfdemStageDrag, SyamlalOBrienCarriesTheConfigsCAndD) {
+  json p = json::parse(kWorkflow)["stages"]["bed"]["params"];
+  p["drag"] = "syamlal_obrien";
+  p["drag_c"] = 0.7;
+  p["drag_d"] = 3.44;  // Table 4.3's second set
+  core::json::Diagnostics d;
+  const workflows::stages::TfdemStage stage;
+  const json resolved = stage.params().resolve(p, {}, core::units::UnitSystem::si(), "/params", d);
+  ASSERT_TRUE(d.empty());
+  const auto setup = workflows::stages::makeTfdemSetup(resolved);
+  ASSERT_TRUE(setup.problems.empty());
+  const auto* law = std::get_if<closures::SyamlalOBrien>(&setup.engine.drag.law);
+  ASSERT_NE(law, nullptr);
+  EXPECT_EQ(law->params.c, 0.7);
+  EXPECT_EQ(law->params.d, 3.44);
+  closures::DragState state;
+  state.voidFraction = 0.6;
+  state.solidFraction = 0.4;
+  state.slip = 1.5;
+  state.diameter = 4e-3;
+  state.gasDensity = 1.2;
+  state.gasViscosity = 1.8e-5;
+  const closures::SyamlalOBrien expected{{0.7, 3.44}};
+  EXPECT_EQ(setup.engine.drag.evaluate(state).beta, expected.evaluate(state).beta);
+  EXPECT_NE(closures::SyamlalOBrien{}.evaluate(state).beta, expected.evaluate(state).beta);
 }
 
 // bed_compare reads a tfdem run through its products alone (DESIGN.md, "Stage contracts"): it

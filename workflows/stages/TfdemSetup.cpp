@@ -119,6 +119,10 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   if (problems.size() == before) e.boundaries = fluidSetup.patches(1);
   e.gas = {p.at("gas_density").get<double>(), p.at("gas_viscosity").get<double>()};
   e.drag = closures::GasSolidsDrag::byName(p.at("drag").get<std::string>());
+  if (auto* so = std::get_if<closures::SyamlalOBrien>(&e.drag.law)) {
+    so->params = {p.at("drag_c").get<double>(), p.at("drag_d").get<double>()};
+    if (const auto why = so->params.continuityProblem(); !why.empty()) problems.add("/drag_d", why);
+  }
   e.deposition = choice(p, "deposition", {std::pair{"centre_cell", tfdem::VolumeDeposition::CentreCell},
                                           std::pair{"exact_overlap", tfdem::VolumeDeposition::ExactOverlap}});
   e.gasReaction = choice(p, "gas_reaction", {std::pair{"cell_average", tfdem::GasReaction::CellAverage},

@@ -13,6 +13,7 @@
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/tfdem/ParticleBedMeasures.hpp"
+#include "workflows/closures/ClosureCatalog.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/DemInitialState.hpp"
@@ -26,6 +27,7 @@ namespace grainbridge::workflows::stages {
 
 using core::units::Dimension;
 using nlohmann::json;
+namespace catalog = workflows::closures;
 using params::ParamSpec;
 
 namespace {
@@ -46,8 +48,11 @@ TfdemStage::TfdemStage() {
                .doc("gas viscosity mu_g (air)"))
       .add(ParamSpec::string("drag")
                .defaultValue("ergun_wen_yu")
-               .options({"ergun_wen_yu", "gidaspow"})
-               .doc("gas-particle drag: Eqs. 7.30-7.31 as printed, or Gidaspow's form of them"))
+               .options({"ergun_wen_yu", "gidaspow", "syamlal_obrien"})
+               .doc("gas-particle drag: Eqs. 7.30-7.31 as printed, Gidaspow's form of them, or the multi-fluid "
+                    "default Syamlal-O'Brien (Eqs. 3.10-3.16; to compare with a multi-fluid run at equal drag)"))
+      .add(catalog::closureParameter("syamlal_obrien", "c").renamed("drag_c"))
+      .add(catalog::closureParameter("syamlal_obrien", "d").renamed("drag_d"))
       .add(ParamSpec::objectList("boundaries", boundarySchema())
                .required()
                .doc("gas boundary patches; sides no patch covers are no-slip walls (the particles meet plane "
