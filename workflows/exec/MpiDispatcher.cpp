@@ -79,8 +79,16 @@ std::optional<std::pair<std::size_t, InstanceOutcome>> MpiDispatcher::poll() {
 void runMpiWorker(const stages::StageRegistry& registry, const std::filesystem::path& resultsRoot) {
   const int me = core::parallel::worldRank();
   while (true) {
+    // Waiting as rank 0 does: Open MPI's blocking probe spins, so an idle worker would take a
+    // whole core from the instances still running (with more ranks than cores, each idle rank
+    // halved a running stage's speed).
     MPI_Status status;
-    MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+    int flag = 0;
+    while (true) {
+      MPI_Iprobe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+      if (flag != 0) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
     if (status.MPI_TAG == kTagStop) {
       MPI_Recv(nullptr, 0, MPI_CHAR, 0, kTagStop, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       return;
