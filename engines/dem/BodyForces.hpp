@@ -85,7 +85,7 @@ class BodyForceSet {
   void setRecording(bool on) {
     std::get<RecordedBodyForce<Force>>(records_).record = on;
   }
-  // What Force applied to each owned particle at the last evaluation (empty unless recording).
+  // What Force applied to each owned particle at the last evaluation (empty unless it recorded).
   template <class Force>
   [[nodiscard]] const std::vector<Vec3>& applied() const {
     return std::get<RecordedBodyForce<Force>>(records_).applied;
@@ -94,7 +94,12 @@ class BodyForceSet {
  private:
   template <class Force>
   static void prepare(RecordedBodyForce<Force>& r, std::size_t n) {
-    if (r.record) r.applied.assign(n, Vec3::Zero());
+    // A record belongs to the evaluation that made it: one that does not record drops it.
+    if (r.record) {
+      r.applied.assign(n, Vec3::Zero());
+    } else if (!r.applied.empty()) {
+      r.applied.clear();
+    }
   }
   template <class Force>
   static void add(RecordedBodyForce<Force>& r, bool active, const Particles& p, const SimulationSetup& s, std::size_t i,

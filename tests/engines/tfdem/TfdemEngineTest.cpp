@@ -127,6 +127,26 @@ TEST(TfdemEngine, AResumedRunContinuesBitForBit) {
   EXPECT_EQ(straight.particleFrame().externalForce.size(), a.nOwned);
 }
 
+// With cell_average the drag is recorded only for an observed step's frame: such a frame carries
+// each particle's drag (not zero: the gas moves them), and a frame after an unobserved step none,
+// rather than a record left over from an earlier step.
+TEST(TfdemEngine, AFrameCarriesTheDragOfItsOwnStep) {
+  Scratch scratch("grainbridge-tfdem-frame-drag");
+  const TfdemSetup setup = smallBed(DragTransfer::CellAverage, GasReaction::CellAverage, VolumeDeposition::CentreCell);
+  const fluid::StaggeredGrid grid(setup.grid);
+  TfdemEngine e(setup, smallBedParticles(), uniformGas(grid, 1.0), scratch.dir, core::io::ArtifactStamp{"test"});
+  e.advance(true);
+  const auto& observed = e.particleFrame().externalForce;
+  ASSERT_EQ(observed.size(), e.simulation().particles().nOwned);
+  double largest = 0.0;
+  for (const Vec3& f : observed) largest = std::max(largest, f.norm());
+  EXPECT_GT(largest, 0.0);
+  e.advance(false);
+  EXPECT_TRUE(e.particleFrame().externalForce.empty());
+  e.advance(true);
+  EXPECT_EQ(e.particleFrame().externalForce.size(), e.simulation().particles().nOwned);
+}
+
 TEST(TfdemEngine, WithTheGasOffTheBedSettlesAndTheGasWaits) {
   Scratch scratch("grainbridge-tfdem-settle");
   const TfdemSetup setup = smallBed(DragTransfer::CellAverage, GasReaction::CellAverage, VolumeDeposition::CentreCell);
