@@ -133,6 +133,7 @@ class Simulation {
   void constrainToPlane();
   template <class Law, bool Record, contact::History H>
   void pairForces();
+  void secondHalfKick(double half);  // the step's closing v += F dt / 2m, omega += T dt / 2I
   template <class Law, bool Record, contact::History H>
   void wallForces();
   void sortByCell();
