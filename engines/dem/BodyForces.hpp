@@ -67,16 +67,18 @@ class BodyForceSet {
   void apply(Particles& p, const SimulationSetup& s) {
     const bool active[] = {Forces::active(s)...};
     std::apply([&](auto&... r) { (prepare(r, p.nOwned), ...); }, records_);
-    for (std::size_t i = 0; i < p.nOwned; ++i) {
+    Vec3* const force = p.force.data();  // a local pointer: see Simulation::step
+    const std::size_t n = p.nOwned;
+    for (std::size_t i = 0; i < n; ++i) {
       if (p.isFrozen(i)) {
-        p.force[i].setZero();
+        force[i].setZero();
         p.torque[i].setZero();
         continue;
       }
       Vec3 total = Vec3::Zero();
       std::size_t k = 0;
       std::apply([&](auto&... r) { (add<Forces>(r, active[k++], p, s, i, total), ...); }, records_);
-      p.force[i] += total;
+      force[i] += total;
     }
   }
 
