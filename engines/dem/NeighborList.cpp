@@ -129,4 +129,28 @@ void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, dou
   ++builds_;
 }
 
+void NeighborList::buildInner(const Particles& p, double innerSkin) {
+  const std::size_t n = offset_.size() - 1;
+  GB_ASSERT(n == p.nOwned, "inner list built over another particle set");
+  innerOffset_.assign(n + 1, 0);
+  innerPartner_.clear();
+  innerSlot_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& xi = p.x[i];
+    const double reachI = p.radius[i] + innerSkin;
+    for (std::size_t s = offset_[i]; s < offset_[i + 1]; ++s) {
+      const std::uint32_t j = partner_[s];
+      const double reach = reachI + p.radius[j];
+      if ((p.x[j] - xi).squaredNorm() < reach * reach) {
+        innerPartner_.push_back(j);
+        innerSlot_.push_back(s);
+      } else {
+        history_[s].setZero();
+      }
+    }
+    innerOffset_[i + 1] = innerPartner_.size();
+  }
+  x1_.assign(p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
 }  // namespace grainbridge::dem

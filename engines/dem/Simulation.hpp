@@ -118,6 +118,8 @@ class Simulation {
   // How far one particle may move from its position at the last build before the list must be
   // rebuilt (<= 0: rebuild now).
   [[nodiscard]] double rebuildReach() const;
+  [[nodiscard]] double innerRebuildReach() const;  // the same rule for the inner list
+  void buildInner();
   void wrapAndCheck();
   void buildGhosts(double shearOffsetNow);
   [[nodiscard]] double shearDrift() const;  // offset growth since the last build
@@ -146,6 +148,8 @@ class Simulation {
   double cutoff_ = 0.0;
   double time_ = 0.0;
   double buildTime_ = 0.0;
+  double innerSkin_ = 0.0;  // the inner list's skin (NeighborList::buildInner)
+  double innerBuildTime_ = 0.0;
   std::int64_t step_ = 0;
   std::int64_t rebuildsSinceSort_ = 0;
   std::size_t contactCount_ = 0;
