@@ -9,10 +9,16 @@
 # Builds nothing: it uses build-release/bin/grainbridge (scripts/quickstart.sh builds it) or
 # $GRAINBRIDGE. Installs Debian's lammps package if missing (bench/lammps/run-lammps-reference.sh).
 #
+# Then a dilute sheared box, closure-sweep style (bench/lammps/in.shear-gas): 2,000 spheres at
+# solid fraction 0.15 in a periodic cube, no gravity, the same contact law, sheared at rate 1
+# (d = m = 1 units) for 20,000 steps: LAMMPS with fix deform xy erate, remap v; grainbridge with
+# its Lees-Edwards boundaries (shear_rate). Both read the same LAMMPS-prepared gas.
+#
 # Usage: bench/dem-vs-lammps.sh [--runs N] [--scaling]
 #   --scaling  also times 5,000 (n 25, nz 8) and 80,000 (n 50, nz 32) beds, settled the same way,
 #              and says for each engine whether its rate is flat: rate(80k) >= 0.85 x rate(5k).
-# Last line: ratio grainbridge/lammps = X   (particle-steps per second, the 20,000 bed)
+# Last two lines: `dilute sheared box: ratio grainbridge/lammps = Y`, then
+#                 `ratio grainbridge/lammps = X`   (particle-steps per second, the 20,000 bed)
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -87,6 +93,63 @@ JSON
   awk -v g="$(cat "$work/$tag.gb")" -v l="$(cat "$work/$tag.lmp")" 'BEGIN {printf "  ratio on this bed: %.3f\n", g / l}'
 }
 
+# time_gas: prepare (or find) the sheared gas's start, time both engines on it `runs` times,
+# interleaved, and leave the medians in $work/gas.{gb,lmp}.
+time_gas() {
+  local lmp datafile L gn gt r log lr gr line glog
+  lmp=$(command -v lmp || true)
+  [[ -n "$lmp" ]] || "$lmp_ref" --settle-only > /dev/null  # installs Debian's lammps if missing
+  lmp=$(command -v lmp) || { echo "no lmp binary" >&2; exit 1; }
+  datafile="$repo/bench/lammps/.cache/gas-n2000-phi0.15.data"
+  mkdir -p "$(dirname "$datafile")" "$work/gas"
+  if [[ ! -s "$datafile" ]]; then
+    (cd "$work/gas" && OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+      "$lmp" -in "$repo/bench/lammps/in.shear-gas" -var prepare 1 -var datafile "$datafile.partial" \
+      -screen none -log prepare.log) || { echo "preparing the gas failed: $work/gas/prepare.log" >&2; exit 1; }
+    mv "$datafile.partial" "$datafile"
+  fi
+  L=$(awk '/xlo xhi/ {print $2; exit}' "$datafile")
+  gn=$(awk 'BEGIN {pi = atan2(0, -1); b = -log(0.9) / pi; printf "%.17g", 2 * b * sqrt(2e5 / 0.5) / sqrt(1 + b * b)}')
+  gt=$(awk -v g="$gn" 'BEGIN {printf "%.17g", g / 2}')
+  cat > "$work/gas/bench.json" <<JSON
+{
+  "name": "bench-sheared-gas",
+  "stages": {
+    "gas": {"type": "dem", "params": {
+      "box_lo": [0, 0, 0], "box_hi": [$L, $L, $L], "periodic": "xyz",
+      "gravity": [0, 0, 0], "shear_rate": 1.0, "dt": 2e-4, "duration": 4.0, "frames": 0, "series_points": 1,
+      "skin": 0.3, "progress": false,
+      "species": [{"name": "grain", "diameter": 1, "density": 1.909859317102744}],
+      "lammps_data": "$datafile",
+      "lammps_types": [{"type": 1, "species": "grain"}],
+      "contact": {"kn": 2e5, "kt": 57142.857142857145, "gamma_n": $gn, "gamma_t": $gt, "mu": 0.5}}}
+  }
+}
+JSON
+  : > "$work/gas.gb.rates"; : > "$work/gas.lmp.rates"
+  echo "dilute sheared box, 2000 spheres at solid fraction 0.15: $datafile"
+  for ((r = 1; r <= runs; r++)); do
+    log="$work/gas/timed-$r.log"
+    (cd "$work/gas" && OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 taskset -c "$core" \
+      "$lmp" -in "$repo/bench/lammps/in.shear-gas" -var datafile "$datafile" -screen none -log "$log") ||
+      { echo "LAMMPS sheared gas failed: $log" >&2; exit 1; }
+    # "Loop time of 2.9 on 1 procs for 20000 steps with 2000 atoms"
+    lr=$(awk '/^Loop time of/ {printf "%.6g", $12 * $9 / $4; exit}' "$log")
+    echo "$lr" >> "$work/gas.lmp.rates"
+    # The whole log first: grep -m1 in the pipe would close it early, and pipefail would see
+    # grainbridge die of SIGPIPE.
+    glog=$(cd "$work/gas" && OMP_NUM_THREADS=1 taskset -c "$core" "$gb" run bench.json --force 2>&1) ||
+      { echo "$glog" >&2; echo "grainbridge sheared gas failed" >&2; exit 1; }
+    line=$(grep -m1 'particle-steps/s' <<<"$glog") || { echo "$glog" >&2; exit 1; }
+    gr=$(sed -E 's/.*s: ([0-9.e+]+) particle-steps\/s.*/\1/' <<<"$line")
+    echo "$gr" >> "$work/gas.gb.rates"
+    echo "  run $r: lammps $lr particle-steps/s, grainbridge $gr particle-steps/s"
+  done
+  median < "$work/gas.lmp.rates" > "$work/gas.lmp"
+  median < "$work/gas.gb.rates" > "$work/gas.gb"
+  echo "  lammps median: $(cat "$work/gas.lmp") particle-steps/s; grainbridge median: $(cat "$work/gas.gb") particle-steps/s"
+}
+
 echo "machine: $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 # The binary's own version line (its git SHA and dirty flag), not the checkout's HEAD: GRAINBRIDGE
 # may point at another build.
@@ -110,4 +173,6 @@ if ((scaling)); then
     }'
   done
 fi
+time_gas
+awk -v g="$(cat "$work/gas.gb")" -v l="$(cat "$work/gas.lmp")" 'BEGIN {printf "dilute sheared box: ratio grainbridge/lammps = %.3f\n", g / l}'
 awk -v g="$(cat "$work/25-32.gb")" -v l="$(cat "$work/25-32.lmp")" 'BEGIN {printf "ratio grainbridge/lammps = %.3f\n", g / l}'
