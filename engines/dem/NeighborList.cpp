@@ -151,6 +151,7 @@ void NeighborList::buildInner(const Particles& p, double innerSkin) {
     innerOffset_[i + 1] = innerPartner_.size();
   }
   x1_.assign(p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(n));
+  ++innerBuilds_;
 }
 
 }  // namespace grainbridge::dem

@@ -75,6 +75,7 @@ class NeighborList {
   // Positions of owned particles at the last build, for the half-skin rebuild criterion.
   [[nodiscard]] const std::vector<Vec3>& referencePositions() const { return x0_; }
   [[nodiscard]] std::int64_t builds() const { return builds_; }
+  [[nodiscard]] std::int64_t innerBuilds() const { return innerBuilds_; }
 
  private:
   std::vector<std::size_t> offset_;
@@ -83,6 +84,7 @@ class NeighborList {
   std::vector<Vec3> x0_;
   std::vector<std::int64_t> idsAtBuild_;  // global ids by index at the last build, to key history
   std::int64_t builds_ = 0;
+  std::int64_t innerBuilds_ = 0;
   std::vector<std::size_t> innerOffset_;
   std::vector<std::uint32_t> innerPartner_;
   std::vector<std::size_t> innerSlot_;

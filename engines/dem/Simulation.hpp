@@ -63,6 +63,7 @@ class Simulation {
   [[nodiscard]] std::int64_t mobileCount() const;
   [[nodiscard]] Vec3 momentum() const;
   [[nodiscard]] std::int64_t rebuilds() const { return list_.builds(); }
+  [[nodiscard]] std::int64_t innerRebuilds() const { return list_.innerBuilds(); }  // NeighborList::buildInner
   // Lees-Edwards offset of the image above at time t, in [0, L_x).
   [[nodiscard]] double shearOffset(double t) const;
   [[nodiscard]] std::size_t contactCount() const { return contactCount_; }
