@@ -6,7 +6,7 @@
 // carried over by the pair's global ids, which keeps it across rebuilds and re-sorting.
 //
 // Inside it, an inner list with a thinner skin holds the pairs the force loop walks: in a dense
-// bed with a skin of 0.3 d about half the listed pairs are apart, and each costs the loop a
+// bed with a skin of 0.3 d three in five listed pairs are apart, and each costs the loop a
 // distance test and a branch it cannot predict. The inner list is built from this one (no
 // binning), in its order, and rebuilt when some particle has moved more than half the inner
 // skin; each entry keeps its pair's slot here, where the history stays.
