@@ -38,20 +38,22 @@ lmp_ref="$repo/bench/lammps/run-lammps-reference.sh"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# The contact law of both beds: gamma_n as in.box computes it (e = 0.9 at m_eff = 1/2), gamma_t
+# half of it.
+gn=$(awk 'BEGIN {pi = atan2(0, -1); b = -log(0.9) / pi; printf "%.17g", 2 * b * sqrt(2e5 / 0.5) / sqrt(1 + b * b)}')
+gt=$(awk -v g="$gn" 'BEGIN {printf "%.17g", g / 2}')
 median() { sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 
 # time_bed N NZ: settle (or find) the N x N x NZ bed, time both engines on it `runs` times,
 # interleaved, and leave the medians in $work/N-NZ.{gb,lmp} (particle-steps per second).
 time_bed() {
-  local n=$1 nz=$2 tag="$1-$2" datafile xlo xhi ylo yhi zlo zhi gn gt r out lr lc log line gr gc
+  local n=$1 nz=$2 tag="$1-$2" datafile xlo xhi ylo yhi zlo zhi r out lr lc log line gr gc
   datafile=$("$lmp_ref" --settle-only --n "$n" --nz "$nz" | awk -F' = ' '/^lammps_datafile/ {print $2}')
   [[ -f "$datafile" ]] || { echo "settled bed ($n x $n x $nz) not found" >&2; exit 1; }
-  # The box comes from the data file; gamma_n as in.box computes it (e = 0.9 at m_eff = 1/2).
+  # The box comes from the data file.
   read -r xlo xhi < <(awk '/xlo xhi/ {print $1, $2; exit}' "$datafile")
   read -r ylo yhi < <(awk '/ylo yhi/ {print $1, $2; exit}' "$datafile")
   read -r zlo zhi < <(awk '/zlo zhi/ {print $1, $2; exit}' "$datafile")
-  gn=$(awk 'BEGIN {pi = atan2(0, -1); b = -log(0.9) / pi; printf "%.17g", 2 * b * sqrt(2e5 / 0.5) / sqrt(1 + b * b)}')
-  gt=$(awk -v g="$gn" 'BEGIN {printf "%.17g", g / 2}')
   mkdir -p "$work/$tag"
   cat > "$work/$tag/bench.json" <<JSON
 {
@@ -96,10 +98,12 @@ JSON
 # time_gas: prepare (or find) the sheared gas's start, time both engines on it `runs` times,
 # interleaved, and leave the medians in $work/gas.{gb,lmp}.
 time_gas() {
-  local lmp datafile L gn gt r log lr gr line glog
-  lmp=$(command -v lmp || true)
-  [[ -n "$lmp" ]] || "$lmp_ref" --settle-only > /dev/null  # installs Debian's lammps if missing
-  lmp=$(command -v lmp) || { echo "no lmp binary" >&2; exit 1; }
+  local lmp="" c datafile L r log lr gr line glog
+  # The names run-lammps-reference.sh looks for; the dense bed, timed first, installed the package.
+  for c in lmp lmp_serial lmp_mpi lmp_stable; do
+    if command -v "$c" > /dev/null 2>&1; then lmp=$(command -v "$c"); break; fi
+  done
+  [[ -n "$lmp" ]] || { echo "no LAMMPS binary (lmp, lmp_serial, lmp_mpi, lmp_stable)" >&2; exit 1; }
   datafile="$repo/bench/lammps/.cache/gas-n2000-phi0.15.data"
   mkdir -p "$(dirname "$datafile")" "$work/gas"
   if [[ ! -s "$datafile" ]]; then
@@ -109,8 +113,6 @@ time_gas() {
     mv "$datafile.partial" "$datafile"
   fi
   L=$(awk '/xlo xhi/ {print $2; exit}' "$datafile")
-  gn=$(awk 'BEGIN {pi = atan2(0, -1); b = -log(0.9) / pi; printf "%.17g", 2 * b * sqrt(2e5 / 0.5) / sqrt(1 + b * b)}')
-  gt=$(awk -v g="$gn" 'BEGIN {printf "%.17g", g / 2}')
   cat > "$work/gas/bench.json" <<JSON
 {
   "name": "bench-sheared-gas",

@@ -49,7 +49,7 @@ Simulation::Simulation(SimulationSetup setup, EngineState state)
   list_.build(p_, setup_.lo, setup_.hi, cutoff_, setup_.skin, &state.pairHistory);
   selectWallCandidates(/*clearOthers=*/false);
   for (std::size_t i = 0; i < p_.nOwned; ++i) p_.x[i] = current[i];
-  p_.refreshGhosts(shearDrift());
+  p_.refreshGhosts(shearDrift(buildTime_));
   // The inner list from the current positions: which pairs it holds changes no result.
   buildInner();
 }
@@ -95,8 +95,8 @@ double Simulation::shearOffset(double t) const {
   return offset < 0 ? offset + lx : offset;
 }
 
-double Simulation::shearDrift() const {
-  return setup_.shearRate * (setup_.hi[1] - setup_.lo[1]) * (time_ - buildTime_);
+double Simulation::shearDrift(double since) const {
+  return setup_.shearRate * (setup_.hi[1] - setup_.lo[1]) * (time_ - since);
 }
 
 void Simulation::setFrozen(std::int64_t id, bool frozen) {
@@ -185,9 +185,9 @@ void Simulation::step(bool recordContacts) {
   // the cache.
   time_ += dt;
   ++step_;
-  const double reach = rebuildReach();
+  const double reach = rebuildReach(setup_.skin, buildTime_);
   const double reach2 = reach * reach;
-  const double innerReach = innerRebuildReach();
+  const double innerReach = rebuildReach(innerSkin_, innerBuildTime_);  // the same rule
   const double innerReach2 = innerReach * innerReach;
   const auto& x0 = list_.referencePositions();
   bool movedTooFar = reach <= 0.0;
@@ -216,7 +216,7 @@ void Simulation::step(bool recordContacts) {
   if (movedTooFar) {
     rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
   } else {
-    p_.refreshGhosts(shearDrift());
+    p_.refreshGhosts(shearDrift(buildTime_));
     if (innerMovedTooFar) buildInner();
   }
   computeForces(recordContacts ? Evaluation::StepRecorded : Evaluation::Step, /*ownedCleared=*/true);
@@ -257,22 +257,17 @@ void Simulation::forceRebuild(bool sort) {
   rebuild(sort);
 }
 
-double Simulation::innerRebuildReach() const {
-  const double drift = setup_.shearRate * (setup_.hi[1] - setup_.lo[1]) * (time_ - innerBuildTime_);
-  return 0.5 * (innerSkin_ - std::abs(drift));
-}
-
 void Simulation::buildInner() {
   list_.buildInner(p_, innerSkin_);
   innerBuildTime_ = time_;
 }
 
-double Simulation::rebuildReach() const {
+double Simulation::rebuildReach(double skin, double builtAt) const {
   // The list holds every pair within a_i + a_j + skin at the build. Two particles close that
   // gap by at most |dx_i| + |dx_j| <= 2 max|dx|. A ghost across the shearing boundary also moves
   // with the offset drift, so a pair there closes it by up to 2 max|dx| + |drift|: rebuild once
   // that could exceed the skin. Without shear the drift is 0 and this is the half-skin rule.
-  return 0.5 * (setup_.skin - std::abs(shearDrift()));
+  return 0.5 * (skin - std::abs(shearDrift(builtAt)));
 }
 
 void Simulation::wrapAndCheck() {

@@ -116,14 +116,14 @@ class Simulation {
   // A vibrating wall keeps every particle. `clearOthers` is false when a restored state's
   // histories are already what the run had.
   void selectWallCandidates(bool clearOthers);
-  // How far one particle may move from its position at the last build before the list must be
-  // rebuilt (<= 0: rebuild now).
-  [[nodiscard]] double rebuildReach() const;
-  [[nodiscard]] double innerRebuildReach() const;  // the same rule for the inner list
+  // How far one particle may move from its position at a list's last build before that list must
+  // be rebuilt (<= 0: rebuild now): the Verlet list with setup_.skin since buildTime_, the inner
+  // list with innerSkin_ since innerBuildTime_.
+  [[nodiscard]] double rebuildReach(double skin, double builtAt) const;
   void buildInner();
   void wrapAndCheck();
   void buildGhosts(double shearOffsetNow);
-  [[nodiscard]] double shearDrift() const;  // offset growth since the last build
+  [[nodiscard]] double shearDrift(double since) const;  // offset growth since `since` (a build)
   // A step's force evaluation, the same with its contacts recorded for frame(), or the set-up
   // evaluation of a run (recorded, contact history kept as it is).
   enum class Evaluation { Step, StepRecorded, Setup };
