@@ -219,23 +219,19 @@ void Simulation::step(bool recordContacts) {
     p_.refreshGhosts(shearDrift(buildTime_));
     if (innerMovedTooFar) buildInner();
   }
-  computeForces(recordContacts ? Evaluation::StepRecorded : Evaluation::Step, /*ownedCleared=*/true);
-  secondHalfKick(half);
-}
-
-void Simulation::secondHalfKick(double half) {
-  // Its own function: a rebuild in between may have re-sorted the arrays, so their addresses are
-  // taken anew.
-  Vec3* const v = p_.v.data();
-  Vec3* const omega = p_.omega.data();
-  const Vec3* const force = p_.force.data();
-  const Vec3* const torque = p_.torque.data();
-  const double* const invMass = p_.invMass.data();
-  const double* const invInertia = p_.invInertia.data();
-  for (std::size_t i = 0; i < p_.nOwned; ++i) {
-    v[i] += (half * invMass[i]) * force[i];
-    omega[i] += (half * invInertia[i]) * torque[i];
-  }
+  contactForces(recordContacts ? Evaluation::StepRecorded : Evaluation::Step, /*ownedCleared=*/true);
+  // The closing half kick in the body forces' pass. The addresses are taken here: a rebuild
+  // above may have re-sorted the arrays.
+  Vec3* const vNow = p_.v.data();
+  Vec3* const omegaNow = p_.omega.data();
+  const Vec3* const forceNow = p_.force.data();
+  const Vec3* const torqueNow = p_.torque.data();
+  const double* const invMassNow = p_.invMass.data();
+  const double* const invInertiaNow = p_.invInertia.data();
+  finishForces([&](std::size_t i) {
+    vNow[i] += (half * invMassNow[i]) * forceNow[i];
+    omegaNow[i] += (half * invInertiaNow[i]) * torqueNow[i];
+  });
 }
 
 void Simulation::refreshContacts() {
@@ -435,14 +431,24 @@ void Simulation::contactForces(Evaluation evaluation, bool ownedCleared) {
 
 void Simulation::computeForces(Evaluation evaluation, bool ownedCleared) {
   contactForces(evaluation, ownedCleared);
+  finishForces([](std::size_t /*i*/) {});
+}
+
+template <class Then>
+void Simulation::finishForces(Then&& then) {
   // Forces on ghosts belong to their owners (the reverse communication of a parallel run).
   for (std::size_t k = 0; k < p_.ghostOwner.size(); ++k) {
     const std::size_t o = p_.ghostOwner[k];
     p_.force[o] += p_.force[p_.nOwned + k];
     p_.torque[o] += p_.torque[p_.nOwned + k];
   }
-  bodyForces_.apply(p_, setup_);  // gravity, background damping (Eq. 6.7), TF-DEM coupling; frozen: zero
-  if (setup_.planarAxis >= 0) constrainToPlane();
+  // Gravity, background damping (Eq. 6.7), TF-DEM coupling (frozen: zero), a 2-D bed held in its
+  // plane, then `then`, particle by particle.
+  const int planar = setup_.planarAxis;
+  bodyForces_.apply(p_, setup_, [&](std::size_t i) {
+    if (planar >= 0) constrainToPlane(i, planar);
+    then(i);
+  });
 }
 
 template <class Law>
@@ -464,15 +470,12 @@ void Simulation::contactLoops(Evaluation evaluation) {
   }
 }
 
-void Simulation::constrainToPlane() {
+void Simulation::constrainToPlane(std::size_t i, int a) {
   // 2-D beds: the layer stays in its plane and spins only about the plane's normal.
-  const int a = setup_.planarAxis;
-  for (std::size_t i = 0; i < p_.nOwned; ++i) {
-    p_.force[i][a] = 0.0;
-    const double spin = p_.torque[i][a];
-    p_.torque[i].setZero();
-    p_.torque[i][a] = spin;
-  }
+  p_.force[i][a] = 0.0;
+  const double spin = p_.torque[i][a];
+  p_.torque[i].setZero();
+  p_.torque[i][a] = spin;
 }
 
 template <class Law, bool Record, contact::History H>

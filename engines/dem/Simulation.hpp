@@ -133,10 +133,13 @@ class Simulation {
   void contactForces(Evaluation evaluation, bool ownedCleared = false);
   template <class Law>
   void contactLoops(Evaluation evaluation);
-  void constrainToPlane();
+  // After the contacts: ghost forces to their owners, body forces, the plane of a 2-D bed, then
+  // then(i) for each owned particle in the same pass.
+  template <class Then>
+  void finishForces(Then&& then);
+  void constrainToPlane(std::size_t i, int axis);
   template <class Law, bool Record, contact::History H>
   void pairForces();
-  void secondHalfKick(double half);  // the step's closing v += F dt / 2m, omega += T dt / 2I
   template <class Law, bool Record, contact::History H>
   void wallForces();
   void sortByCell();

@@ -19,6 +19,7 @@ std::pair<double, double> relax(double dt) {
   SimulationSetup s = openBox(table61Particle());
   s.gravity = Vec3(0, 0, -9.81);
   s.dt = dt;
+  s.fluidCoupled = true;  // the coupling arrays act only in a fluid-coupled run
   Particles p;
   const double m = 2e-3;
   p.addOwned(0, 0, 0.5, m, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), false);
@@ -53,6 +54,33 @@ TEST(Coupling, LinearDragRelaxesToTerminalVelocity) {
   EXPECT_LT(fineFinal, 1e-4);
 }
 
+// The coupling arrays act only in a fluid-coupled run (TF-DEM): a plain DEM run falls freely
+// whatever they hold, and the same run coupled feels them.
+TEST(Coupling, ArraysActOnlyInAFluidCoupledRun) {
+  auto fall = [](bool coupled) {
+    SimulationSetup s = openBox(table61Particle());
+    s.gravity = Vec3(0, 0, -9.81);
+    s.dt = 1e-4;
+    s.fluidCoupled = coupled;
+    Particles p;
+    p.addOwned(0, 0, 0.5, 2e-3, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), false);
+    p.couplingA[0] = Vec3(0.0, 1e-3, 0.0);
+    p.couplingB[0] = 0.05;
+    p.couplingU[0] = Vec3(0.3, 0.0, 0.1);
+    p.couplingPressure[0] = Vec3(2e-3, 0.0, 0.0);
+    Simulation sim(s, std::move(p));
+    for (int k = 0; k < 100; ++k) sim.step();
+    return sim.particles().v[0];
+  };
+  const Vec3 plain = fall(false);
+  EXPECT_EQ(plain.x(), 0.0);
+  EXPECT_EQ(plain.y(), 0.0);
+  EXPECT_NEAR(plain.z(), -9.81 * 100 * 1e-4, 1e-12);
+  const Vec3 coupled = fall(true);
+  EXPECT_GT(coupled.x(), 1e-3);  // pushed by the pressure force and dragged towards u
+  EXPECT_GT(coupled.y(), 1e-3);  // a_p
+}
+
 // Body forces record what they applied (BodyForces.hpp): TF-DEM hands the gas exactly the
 // coupling force the particles received, so the recorded parts must add up to the force the
 // step integrated, bit for bit, and a frozen particle receives nothing.
@@ -61,6 +89,7 @@ TEST(BodyForces, RecordExactlyWhatTheParticlesReceived) {
   s.gravity = Vec3(0.1, 0, -9.81);
   s.backgroundDamping = 1e-3;
   s.dt = 1e-4;
+  s.fluidCoupled = true;
   Particles p;
   p.addOwned(0, 0, 0.5, 2e-3, Vec3(1, 1, 1), Vec3(0.2, 0, 0), Vec3::Zero(), false);  // free: no contacts
   p.addOwned(1, 0, 0.5, 2e-3, Vec3(3, 3, 3), Vec3::Zero(), Vec3::Zero(), true);      // frozen
