@@ -167,6 +167,14 @@ CREATE TABLE closure_tables(
   UNIQUE(run_id, name, quantity));
 CREATE INDEX closure_tables_name ON closure_tables(name, quantity);
 )sql",
+      // 3: a sheared closure point's dense-flow variables (issue 30): the inertial number and
+      // the stress ratio tau / p, each with its error (extract's ClosurePointObserver).
+      R"sql(
+ALTER TABLE closure_points ADD COLUMN inertial_number REAL;
+ALTER TABLE closure_points ADD COLUMN inertial_number_err REAL;
+ALTER TABLE closure_points ADD COLUMN stress_ratio REAL;
+ALTER TABLE closure_points ADD COLUMN stress_ratio_err REAL;
+)sql",
   };
   return scripts;
 }

@@ -6,6 +6,7 @@
 #include "core/ClosureForms.hpp"
 #include "core/Log.hpp"
 #include "core/averaging/BlockAverage.hpp"
+#include "core/averaging/RatioOfMeans.hpp"
 #include "core/text/NumberText.hpp"
 #include "extract/coarse/DissipationRate.hpp"
 
@@ -140,6 +141,17 @@ void ClosurePointObserver::finish(OutputSink& out, ExtractResult& result) {
     addForm(core::ClosureForm::TauShear, tau);
     addForm(core::ClosureForm::TShear, T);
     if (T.mean > 0.0) addForm(core::ClosureForm::EtaTheta, mu);
+    if (P.mean > 0.0) {
+      // The dense-flow variables (Chialvo, Sun and Sundaresan 2012, PRE 85 021305): the inertial
+      // number I = gammadot d / sqrt(p / rho_p), whose relative error is half the pressure's,
+      // and the stress ratio tau / p, its error from the frame series (RatioOfMeans.hpp).
+      const double I = g * diameter_ / std::sqrt(P.mean / density_);
+      row["inertial_number"] = I;
+      row["inertial_number_err"] = 0.5 * I * P.error / P.mean;
+      const auto ratio = core::averaging::ratioOfMeans(shearStress_, pressure_);
+      row["stress_ratio"] = ratio.value;
+      row["stress_ratio_err"] = ratio.standardError;
+    }
   }
   result.point = std::move(row);
 }

@@ -77,6 +77,22 @@ TEST(ShearDissipation, TheClosureDissipationIsTheShearWorkAndTheDashpotsMissTheF
     const double T = p["granular_temperature"].get<double>();
     EXPECT_NEAR(p["j_theta"].get<double>(), J * d / (rho * std::pow(T, 1.5)), 1e-12 * p["j_theta"].get<double>());
 
+    // The dense-flow variables (extract impl 7): I = gammadot d / sqrt(p / rho), tau / p, and
+    // the ratio's error smaller than quadrature of the two relative errors would say, as the
+    // frames' shear stress and pressure rise and fall together.
+    const double P = p["pressure"].get<double>(), tau = p["shear_stress"].get<double>();
+    const double I = p["inertial_number"].get<double>();
+    EXPECT_NEAR(I, gammadot * d / std::sqrt(P / rho), 1e-12 * I);
+    EXPECT_NEAR(p["inertial_number_err"].get<double>(), 0.5 * I * p["pressure_err"].get<double>() / P, 1e-12 * I);
+    const double ratio = p["stress_ratio"].get<double>();
+    EXPECT_NEAR(ratio, tau / P, 1e-12 * ratio);
+    const double ratioErr = p["stress_ratio_err"].get<double>();
+    const double quadrature = ratio * std::hypot(p["shear_stress_err"].get<double>() / tau, p["pressure_err"].get<double>() / P);
+    std::printf("friction %g: I %.4g +- %.2g, tau/p %.4g +- %.2g (quadrature %.2g)\n", mu, I,
+                p["inertial_number_err"].get<double>(), ratio, ratioErr, quadrature);
+    EXPECT_GT(ratioErr, 0.0);
+    EXPECT_LT(ratioErr, quadrature);
+
     const auto extra = json::parse(p["extra_json"].get<std::string>());
     EXPECT_EQ(extra.at("dissipation_rate_source"), "shear_work");
     const double dashpots = extra.at("dissipation_rate_dashpots").get<double>();
