@@ -28,6 +28,7 @@ void writeEngineState(core::io::H5OutputFile& f, const EngineState& s, const std
   f.writeAttribute(group, "time", s.time);
   f.writeAttribute(group, "step", static_cast<std::int64_t>(s.step));
   f.writeAttribute(group, "rebuilds_since_sort", static_cast<std::int64_t>(s.rebuildsSinceSort));
+  f.writeAttribute(group, "build_time", s.buildTime);
   // Every per-particle array by its name (Particles::forEach*Array), exactly as held.
   auto write = [&](const char* name, const auto& a) { f.writeDataset(at(name), a); };
   Particles::forEachParticleArray(s.particles, write);
@@ -53,6 +54,7 @@ EngineState readEngineState(const core::io::H5InputFile& f, const std::string& g
   s.time = f.readDoubleAttribute(group, "time");
   s.step = f.readIntAttribute(group, "step");
   s.rebuildsSinceSort = f.readIntAttribute(group, "rebuilds_since_sort");
+  s.buildTime = f.readDoubleAttribute(group, "build_time");
   const std::size_t n = f.readInt64s(at("id"), {std::nullopt}).size();
   auto read = [&](const char* name, auto& a) { readArray(f, at(name), n, a); };
   Particles::forEachParticleArray(s.particles, read);

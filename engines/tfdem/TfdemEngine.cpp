@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // 1: the DEM state in /particles, the flow in /gas, the summed drag and the step at the root.
-constexpr int kCheckpointFormatVersion = 1;
+// 2: the particles' state holds the time of their last list build (dem's format 4)
+constexpr int kCheckpointFormatVersion = 2;
 
 // The setup with the DEM told that the gas's forces apply.
 TfdemSetup fluidCoupled(TfdemSetup setup) {

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <random>
 #include <string>
 
+#include "engines/dem/Checkpoint.hpp"
 #include "engines/dem/DomainStress.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
@@ -208,4 +210,59 @@ TEST(LeesEdwards, RebuildCountsTheOffsetDriftWithBothDisplacements) {
   EXPECT_TRUE(touched);
   // The contact pushed them apart: A no longer moves straight toward B.
   EXPECT_LT(sim.particles().v[*sim.indexOf(0)].dot(towardB), travel);
+}
+
+// A sheared box resumed from its checkpoint file continues bit for bit: the file keeps the time
+// of the last list build, which sets the Lees-Edwards offset its ghosts were built with.
+TEST(LeesEdwards, ResumedFromItsCheckpointFileContinuesBitForBit) {
+  PairMaterial mat;
+  mat.kn = 1e5 * 6.0 / M_PI;
+  mat.kt = 2.0 / 7.0 * mat.kn;
+  mat.mu = 0.5;
+  mat.gammaN = gammaForRestitution(0.9, mat.kn, 0.5);
+  mat.gammaT = 0.5 * mat.gammaN;
+  const int n = 200;
+  const double box = std::cbrt(n * M_PI / 6.0 / 0.3);
+  SimulationSetup s;
+  s.lo = Vec3::Zero();
+  s.hi = Vec3::Constant(box);
+  s.periodic = {true, true, true};
+  s.dt = linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0;
+  s.skin = 0.3;
+  s.species = 1;
+  s.pairMaterial = {mat};
+  s.shearRate = 1.0;
+  InsertionRequest rq;
+  rq.lo = s.lo;
+  rq.hi = s.hi;
+  rq.periodic = {true, true, true};
+  rq.radii.assign(static_cast<std::size_t>(n), 0.5);
+  std::mt19937_64 rng(5);
+  const auto centres = insertRandomly(rq, rng);
+  auto particles = [&] {
+    Particles p;
+    for (int i = 0; i < n; ++i) {
+      const Vec3& x = centres[static_cast<std::size_t>(i)];
+      p.addOwned(i, 0, 0.5, 1.0, x, Vec3(x[1] - 0.5 * box, 0, 0), Vec3::Zero(), false);
+    }
+    return p;
+  };
+  Simulation uninterrupted(s, particles());
+  uninterrupted.run(20000);
+  ASSERT_GT(uninterrupted.rebuilds(), 3);
+  ASSERT_GT(s.shearRate * box * uninterrupted.time(), box);  // the offset has gone round
+  const auto file = std::filesystem::temp_directory_path() / "grainbridge-lees-edwards-restart.ckpt";
+  writeCheckpoint(file, uninterrupted.captureState(), "fingerprint");
+  Simulation resumed(s, readCheckpoint(file, "fingerprint"));
+  std::filesystem::remove(file);
+  uninterrupted.run(5000);
+  resumed.run(5000);
+  ASSERT_EQ(resumed.particles().nOwned, uninterrupted.particles().nOwned);
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < uninterrupted.particles().nOwned; ++i) {
+    const auto& a = uninterrupted.particles();
+    const auto& b = resumed.particles();
+    if (a.id[i] != b.id[i] || a.x[i] != b.x[i] || a.v[i] != b.v[i] || a.omega[i] != b.omega[i]) ++differing;
+  }
+  EXPECT_EQ(differing, 0u);
 }
