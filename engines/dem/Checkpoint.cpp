@@ -29,6 +29,11 @@ void writeEngineState(core::io::H5OutputFile& f, const EngineState& s, const std
   f.writeAttribute(group, "step", static_cast<std::int64_t>(s.step));
   f.writeAttribute(group, "rebuilds_since_sort", static_cast<std::int64_t>(s.rebuildsSinceSort));
   f.writeAttribute(group, "build_time", s.buildTime);
+  f.writeAttribute(group, "box_high_y", s.boxHighY);
+  f.writeAttribute(group, "shear_offset_base", s.shearOffsetBase);
+  f.writeAttribute(group, "shear_offset_time", s.shearOffsetTime);
+  f.writeAttribute(group, "normal_stress_sum", s.normalStressSum);
+  f.writeAttribute(group, "normal_stress_samples", static_cast<std::int64_t>(s.normalStressSamples));
   // Every per-particle array by its name (Particles::forEach*Array), exactly as held.
   auto write = [&](const char* name, const auto& a) { f.writeDataset(at(name), a); };
   Particles::forEachParticleArray(s.particles, write);
@@ -55,6 +60,11 @@ EngineState readEngineState(const core::io::H5InputFile& f, const std::string& g
   s.step = f.readIntAttribute(group, "step");
   s.rebuildsSinceSort = f.readIntAttribute(group, "rebuilds_since_sort");
   s.buildTime = f.readDoubleAttribute(group, "build_time");
+  s.boxHighY = f.readDoubleAttribute(group, "box_high_y");
+  s.shearOffsetBase = f.readDoubleAttribute(group, "shear_offset_base");
+  s.shearOffsetTime = f.readDoubleAttribute(group, "shear_offset_time");
+  s.normalStressSum = f.readDoubleAttribute(group, "normal_stress_sum");
+  s.normalStressSamples = f.readIntAttribute(group, "normal_stress_samples");
   const std::size_t n = f.readInt64s(at("id"), {std::nullopt}).size();
   auto read = [&](const char* name, auto& a) { readArray(f, at(name), n, a); };
   Particles::forEachParticleArray(s.particles, read);

@@ -16,7 +16,8 @@ namespace grainbridge::dem {
 // 2: every per-particle array by name (inverse mass and inertia instead of a frozen flag)
 // 3: TF-DEM's pressure-gradient force apart from its drag (coupling_pressure)
 // 4: the time of the last list build: a sheared run's ghosts were built with the Lees-Edwards
-//    offset of that time, and without it a resumed sheared run left its bits at the first step
+//    offset of that time, and without it a resumed sheared run left its bits at the first step;
+//    and pressure control's box, offset base and running p_yy sum
 inline constexpr int kCheckpointFormatVersion = 4;
 
 // `state` into `group` of an open file, created unless it is the root.

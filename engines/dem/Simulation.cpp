@@ -39,6 +39,13 @@ Simulation::Simulation(SimulationSetup setup, EngineState state)
   time_ = state.time;
   step_ = state.step;
   rebuildsSinceSort_ = state.rebuildsSinceSort;
+  if (setup_.pressureControl.active()) {
+    setup_.hi[1] = state.boxHighY;
+    shearOffsetBase_ = state.shearOffsetBase;
+    shearOffsetTime_ = state.shearOffsetTime;
+    normalStressSum_ = state.normalStressSum;
+    normalStressSamples_ = state.normalStressSamples;
+  }
   wallHistory_ = std::move(state.wallHistory);
   // Rebuild the list exactly as it was built: from the positions of that moment, so the same
   // pairs (and ghosts) come in the same order.
@@ -65,6 +72,11 @@ EngineState Simulation::captureState() const {
   s.buildTime = buildTime_;
   s.pairHistory = list_.exportHistory();
   s.wallHistory = wallHistory_;
+  s.boxHighY = setup_.hi[1];
+  s.shearOffsetBase = shearOffsetBase_;
+  s.shearOffsetTime = shearOffsetTime_;
+  s.normalStressSum = normalStressSum_;
+  s.normalStressSamples = normalStressSamples_;
   return s;
 }
 
@@ -91,7 +103,8 @@ void Simulation::validateSetup() {
 
 double Simulation::shearOffset(double t) const {
   const double lx = setup_.hi[0] - setup_.lo[0];
-  const double offset = std::fmod(setup_.shearRate * (setup_.hi[1] - setup_.lo[1]) * t, lx);
+  const double offset =
+      std::fmod(shearOffsetBase_ + setup_.shearRate * (setup_.hi[1] - setup_.lo[1]) * (t - shearOffsetTime_), lx);
   return offset < 0 ? offset + lx : offset;
 }
 
@@ -220,6 +233,14 @@ void Simulation::step(bool recordContacts) {
     if (innerMovedTooFar) buildInner();
   }
   contactForces(recordContacts ? Evaluation::StepRecorded : Evaluation::Step, /*ownedCleared=*/true);
+  if (setup_.pressureControl.active()) {
+    // Eq. 2.3's contact part of p_yy, sum over pairs of r_y F_y, as sum_k y_k F_y,k over owned
+    // particles and ghosts before the ghosts' forces go to their owners (LAMMPS's fdotr virial):
+    // an O(N) pass for the controlled box only, nothing in the pair loop.
+    double virial = 0.0;
+    for (std::size_t k = 0; k < p_.size(); ++k) virial += p_.x[k][1] * p_.force[k][1];
+    contactVirialYY_ = virial;
+  }
   // The closing half kick in the body forces' pass. The addresses are taken here: a rebuild
   // above may have re-sorted the arrays.
   Vec3* const vNow = p_.v.data();
@@ -232,6 +253,34 @@ void Simulation::step(bool recordContacts) {
     vNow[i] += (half * invMassNow[i]) * forceNow[i];
     omegaNow[i] += (half * invInertiaNow[i]) * torqueNow[i];
   });
+  if (setup_.pressureControl.active()) controlPressure();
+}
+
+void Simulation::controlPressure() {
+  // p_yy of Eq. 2.3 over the whole box: (sum m v_y v_y + sum_contacts r_y F_y) / V. The
+  // streaming velocity of Lees-Edwards shear is along x, so v_y is already the fluctuation.
+  double kinetic = 0.0;
+  for (std::size_t i = 0; i < p_.nOwned; ++i) kinetic += p_.mass[i] * p_.v[i][1] * p_.v[i][1];
+  const Vec3 length = setup_.hi - setup_.lo;
+  normalStressYY_ = (kinetic + contactVirialYY_) / (length[0] * length[1] * length[2]);
+  normalStressSum_ += normalStressYY_;
+  ++normalStressSamples_;
+  const auto& control = setup_.pressureControl;
+  if (step_ % control.interval != 0) return;
+  const double mean = normalStressSum_ / static_cast<double>(normalStressSamples_);
+  normalStressSum_ = 0.0;
+  normalStressSamples_ = 0;
+  const double error = std::clamp((mean - control.stress) / control.stress, -1.0, 1.0);
+  const double scale = 1.0 + control.interval * setup_.dt / control.relaxationTime * error;
+  // The offset so far, then the new box: positions scaled affinely about its lower face,
+  // velocities kept (as LAMMPS's fix deform with remap x). The forces of this step stay those of
+  // the positions they were computed at; the list is rebuilt for the new box.
+  shearOffsetBase_ = shearOffset(time_);
+  shearOffsetTime_ = time_;
+  const double low = setup_.lo[1];
+  for (std::size_t i = 0; i < p_.nOwned; ++i) p_.x[i][1] = low + (p_.x[i][1] - low) * scale;
+  setup_.hi[1] = low + length[1] * scale;
+  rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
 }
 
 void Simulation::refreshContacts() {

@@ -32,6 +32,13 @@ struct EngineState {
   double buildTime = 0.0;            // time of the last list build (Lees-Edwards offset then)
   std::vector<PairHistory> pairHistory;
   std::vector<Vec3> wallHistory;  // per (particle, wall), particle-major
+  // Pressure control (SimulationSetup::PressureControl): the box's upper y as it now is, the
+  // Lees-Edwards offset at the last box change and its time, and the p_yy samples summed since.
+  double boxHighY = 0.0;
+  double shearOffsetBase = 0.0;
+  double shearOffsetTime = 0.0;
+  double normalStressSum = 0.0;
+  std::int64_t normalStressSamples = 0;
 };
 
 struct Energies {
@@ -70,6 +77,11 @@ class Simulation {
   // Power dissipated by the dashpots (-F_n,diss . v_n - F_t,diss . v_t summed over contacts) at
   // the last force evaluation that recorded contacts; Coulomb sliding losses are not included.
   [[nodiscard]] double dashpotDissipation() const { return dissipation_; }
+  // The box as it now is (pressure control moves its upper y) and the whole-domain normal stress
+  // p_yy of Eq. 2.3 at the last step (kinetic + contact part; computed under pressure control).
+  [[nodiscard]] Vec3 boxLow() const { return setup_.lo; }
+  [[nodiscard]] Vec3 boxHigh() const { return setup_.hi; }
+  [[nodiscard]] double normalStressYY() const { return normalStressYY_; }
   // Total force each wall received from the particles at the last force evaluation.
   [[nodiscard]] const std::vector<Vec3>& wallForces() const { return wallForce_; }
   // The body forces the step applies; each can record what it applied (BodyForces.hpp).
@@ -143,12 +155,23 @@ class Simulation {
   template <class Law, bool Record, contact::History H>
   void wallForces();
   void sortByCell();
+  // Pressure control: p_yy of this step into the running mean, and every interval steps the box
+  // scaled along y (SimulationSetup::PressureControl).
+  void controlPressure();
 
   SimulationSetup setup_;
   contact::AnyContactLaw law_;  // the composition setup_.contact names
   BodyForces bodyForces_;
   Particles p_;
   NeighborList list_;
+  double contactVirialYY_ = 0.0;  // sum over touching pairs of r_y F_y at the last evaluation
+  double normalStressYY_ = 0.0;
+  double normalStressSum_ = 0.0;
+  std::int64_t normalStressSamples_ = 0;
+  // The Lees-Edwards offset is shearOffsetBase_ + gammadot L_y (t - shearOffsetTime_): L_y is
+  // constant between box changes (both 0 without pressure control: the plain formula).
+  double shearOffsetBase_ = 0.0;
+  double shearOffsetTime_ = 0.0;
   double cutoff_ = 0.0;
   double time_ = 0.0;
   double buildTime_ = 0.0;

@@ -85,6 +85,27 @@ std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter,
   if (shearRate != 0.0 && !(periodic[0] && periodic[1])) {
     add("/shear_rate", text("Lees-Edwards shear needs periodic \"x\" (flow) and \"y\" (gradient)"));
   }
+  if (pressureControl.stress < 0.0) {
+    add("/pressure_control/stress", text("the target stress must be positive, found ", pressureControl.stress));
+  }
+  if (pressureControl.active()) {
+    if (shearRate == 0.0) {
+      add("/pressure_control", text("pressure control adjusts a Lees-Edwards box: give a shear_rate"));
+    }
+    if (!(periodic[0] && periodic[1] && periodic[2])) {
+      add("/pressure_control", text("pressure control needs a box periodic in \"xyz\""));
+    }
+    if (!walls.empty()) {
+      add("/pressure_control", text("pressure control needs a box without walls, found ", walls.size()));
+    }
+    if (!(pressureControl.relaxationTime > 0.0)) {
+      add("/pressure_control/relaxation_time",
+          text("the relaxation time must be positive, found ", pressureControl.relaxationTime));
+    }
+    if (pressureControl.interval < 1) {
+      add("/pressure_control/interval", text("the interval must be at least 1 step, found ", pressureControl.interval));
+    }
+  }
   if (planarAxis < -1 || planarAxis > 2) {
     add("/planar", text("the planar axis must be x, y, z or none, found index ", planarAxis));
   }
@@ -154,6 +175,12 @@ void to_json(json& j, const SimulationSetup& s) {
        {"pair_materials", pairs},
        {"walls", walls},
        {"sort_every_rebuilds", s.sortEveryRebuilds}};
+  // Only when on: a run without it keeps the JSON (and fingerprint) it always had.
+  if (s.pressureControl.active()) {
+    j["pressure_control"] = {{"stress", s.pressureControl.stress},
+                             {"relaxation_time", s.pressureControl.relaxationTime},
+                             {"interval", s.pressureControl.interval}};
+  }
 }
 
 void from_json(const json& j, SimulationSetup& s) {
@@ -188,6 +215,13 @@ void from_json(const json& j, SimulationSetup& s) {
     s.walls.push_back(std::move(w));
   }
   s.sortEveryRebuilds = j.at("sort_every_rebuilds");
+  s.pressureControl = {};
+  if (j.contains("pressure_control")) {
+    const auto& pc = j.at("pressure_control");
+    s.pressureControl.stress = pc.at("stress");
+    s.pressureControl.relaxationTime = pc.at("relaxation_time");
+    s.pressureControl.interval = pc.at("interval");
+  }
 }
 
 }  // namespace grainbridge::dem

@@ -31,6 +31,18 @@ struct SimulationSetup {
   // periodic image above (y + L_y) is displaced by the offset shearRate L_y t (mod L_x) in x and
   // moves with + shearRate L_y. Needs x and y periodic.
   double shearRate = 0.0;
+  // Pressure-controlled Lees-Edwards shear (issue 30) when `stress` > 0: every `interval` steps
+  // the box length along the gradient (y) is scaled, positions with it, by
+  //   L_y <- L_y (1 + (interval dt / relaxationTime) clamp((<p_yy> - stress) / stress, -1, 1)),
+  // <p_yy> the mean normal stress of Eq. 2.3 over those steps. A first-order relaxation of ln L_y
+  // towards the target with time constant relaxationTime; the clamp bounds the box's strain rate
+  // at 1/relaxationTime however far p_yy is from the target (a dilute start, or a jammed one).
+  struct PressureControl {
+    double stress = 0.0;          // target p_yy [Pa]
+    double relaxationTime = 0.0;  // [s]
+    int interval = 10;            // steps between box adjustments
+    [[nodiscard]] bool active() const { return stress > 0.0; }
+  } pressureControl;
   // Planar mode for 2-D beds (one particle layer): no motion along this axis (0, 1, 2) and
   // rotation about it only; -1 for full 3-D.
   int planarAxis = -1;

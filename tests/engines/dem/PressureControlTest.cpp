@@ -1,0 +1,146 @@
+// Pressure-controlled Lees-Edwards shear (issue 30; SimulationSetup::PressureControl): the box
+// length along the gradient relaxes until the normal stress p_yy of Eq. 2.3 holds its target.
+// Frictionless spheres, d = m = gammadot = 1, e = 0.9, k* = k_n / (rho d^3 gammadot^2) = 1e4,
+// target p = rho (gammadot d / I)^2 at inertial number I = 0.1 (Chialvo, Sun and Sundaresan 2012).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "engines/dem/Checkpoint.hpp"
+#include "engines/dem/LatticeInsertion.hpp"
+#include "tests/engines/dem/DemTestSupport.hpp"
+
+using namespace grainbridge;
+using namespace grainbridge::dem;
+using namespace grainbridge::dem::testing;
+
+namespace {
+
+constexpr int kParticles = 256;  // a whole 4 x 4 x 4 fcc lattice: it fits up to phi 0.74
+constexpr double kRho = 6.0 / M_PI;  // m = 1 for d = 1
+constexpr double kInertialNumber = 0.1;
+const double kTarget = kRho / (kInertialNumber * kInertialNumber);
+
+SimulationSetup controlledBox(double phi) {
+  PairMaterial mat;
+  mat.kn = 1e4 * kRho;
+  mat.kt = 0.0;
+  mat.mu = 0.0;
+  mat.gammaN = gammaForRestitution(0.9, mat.kn, 0.5);
+  const double box = std::cbrt(kParticles * M_PI / 6.0 / phi);
+  SimulationSetup s;
+  s.lo = Vec3::Zero();
+  s.hi = Vec3::Constant(box);
+  s.periodic = {true, true, true};
+  s.dt = linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0;
+  s.skin = 0.3;
+  s.species = 1;
+  s.pairMaterial = {mat};
+  s.shearRate = 1.0;
+  s.pressureControl.stress = kTarget;
+  s.pressureControl.relaxationTime = 2.0;  // strain units
+  s.pressureControl.interval = 10;
+  return s;
+}
+
+Particles shearedGas(const SimulationSetup& s, unsigned seed) {
+  // A lattice start: random insertion jams near phi 0.38. Shear melts it in a few strain units.
+  std::mt19937_64 rng(seed);
+  const auto centres = fccLatticeSites(s.lo, s.hi, kParticles, 1.0, rng);
+  const double mid = 0.5 * (s.lo[1] + s.hi[1]);
+  Particles p;
+  for (int i = 0; i < kParticles; ++i) {
+    const Vec3& x = centres[static_cast<std::size_t>(i)];
+    p.addOwned(i, 0, 0.5, 1.0, x, Vec3(s.shearRate * (x[1] - mid), 0, 0), Vec3::Zero(), false);
+  }
+  return p;
+}
+
+double solidFraction(const Simulation& sim) {
+  const Vec3 l = sim.boxHigh() - sim.boxLow();
+  return kParticles * M_PI / 6.0 / (l[0] * l[1] * l[2]);
+}
+
+struct Held {
+  double stress = 0.0;  // mean p_yy over the second half
+  double phi = 0.0;     // mean solid fraction over the second half
+};
+
+Held run(double phi0, double strains) {
+  const SimulationSetup s = controlledBox(phi0);
+  Simulation sim(s, shearedGas(s, 3));
+  const auto steps = static_cast<std::int64_t>(strains / s.dt);
+  sim.run(steps / 2);
+  Held h;
+  for (std::int64_t k = 0; k < steps / 2; ++k) {
+    sim.step();
+    h.stress += sim.normalStressYY();
+    h.phi += solidFraction(sim);
+  }
+  h.stress /= static_cast<double>(steps / 2);
+  h.phi /= static_cast<double>(steps / 2);
+  return h;
+}
+
+}  // namespace
+
+TEST(PressureControl, HoldsItsTargetAndReachesOneSolidFractionFromTwoStarts) {
+  // 20 strain units, the last 10 averaged: the box reaches its length within a few relaxation
+  // times (2 strain units each).
+  const Held dilute = run(0.55, 20.0);
+  const Held dense = run(0.60, 20.0);
+  std::printf("target p_yy %.4g: from phi 0.55 %.4g at phi %.4f, from phi 0.60 %.4g at phi %.4f\n", kTarget,
+              dilute.stress, dilute.phi, dense.stress, dense.phi);
+  EXPECT_NEAR(dilute.stress, kTarget, 0.02 * kTarget);
+  EXPECT_NEAR(dense.stress, kTarget, 0.02 * kTarget);
+  EXPECT_NEAR(dilute.phi, dense.phi, 0.005);
+}
+
+TEST(PressureControl, ResumedFromItsCheckpointFileContinuesBitForBit) {
+  const SimulationSetup s = controlledBox(0.55);
+  Simulation uninterrupted(s, shearedGas(s, 4));
+  uninterrupted.run(20005);  // mid-way between box adjustments
+  ASSERT_NE(uninterrupted.boxHigh()[1], s.hi[1]);
+  const auto file = std::filesystem::temp_directory_path() / "grainbridge-pressure-control-restart.ckpt";
+  writeCheckpoint(file, uninterrupted.captureState(), "fingerprint");
+  Simulation resumed(s, readCheckpoint(file, "fingerprint"));
+  std::filesystem::remove(file);
+  uninterrupted.run(3000);
+  resumed.run(3000);
+  EXPECT_EQ(resumed.boxHigh()[1], uninterrupted.boxHigh()[1]);
+  EXPECT_EQ(resumed.shearOffset(resumed.time()), uninterrupted.shearOffset(uninterrupted.time()));
+  ASSERT_EQ(resumed.particles().nOwned, uninterrupted.particles().nOwned);
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < uninterrupted.particles().nOwned; ++i) {
+    const auto& a = uninterrupted.particles();
+    const auto& b = resumed.particles();
+    if (a.id[i] != b.id[i] || a.x[i] != b.x[i] || a.v[i] != b.v[i]) ++differing;
+  }
+  EXPECT_EQ(differing, 0u);
+}
+
+TEST(PressureControl, SetupProblemsNameTheKey) {
+  auto pointers = [](const SimulationSetup& s) {
+    std::vector<std::string> out;
+    for (const auto& p : s.problems(1.0)) out.push_back(p.pointer);
+    return out;
+  };
+  using ::testing::Contains;
+  SimulationSetup s = controlledBox(0.55);
+  EXPECT_TRUE(pointers(s).empty());
+  SimulationSetup unsheared = s;
+  unsheared.shearRate = 0.0;
+  EXPECT_THAT(pointers(unsheared), Contains("/pressure_control"));
+  SimulationSetup open = s;
+  open.periodic = {true, true, false};
+  EXPECT_THAT(pointers(open), Contains("/pressure_control"));
+  SimulationSetup negative = s;
+  negative.pressureControl.stress = -1.0;
+  EXPECT_THAT(pointers(negative), Contains("/pressure_control/stress"));
+  SimulationSetup instant = s;
+  instant.pressureControl.relaxationTime = 0.0;
+  EXPECT_THAT(pointers(instant), Contains("/pressure_control/relaxation_time"));
+}
