@@ -280,6 +280,13 @@ void Simulation::controlPressure() {
   const double low = setup_.lo[1];
   for (std::size_t i = 0; i < p_.nOwned; ++i) p_.x[i][1] = low + (p_.x[i][1] - low) * scale;
   setup_.hi[1] = low + length[1] * scale;
+  if (setup_.hi[1] - low < 2.0 * cutoff_) {
+    // Ghosts need a periodic length of at least twice the interaction range (problems()).
+    throw Error("DEM: pressure control shrank the box along y to " + std::to_string(setup_.hi[1] - low) +
+                " m at step " + std::to_string(step_) + ", below twice the interaction range (" +
+                std::to_string(2.0 * cutoff_) + " m): the target stress packs these particles into a slab "
+                "too thin for this box; use more particles, a larger box in x and z, or a lower stress");
+  }
   rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
 }
 

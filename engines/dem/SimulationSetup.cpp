@@ -88,7 +88,7 @@ std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter,
   if (pressureControl.stress < 0.0) {
     add("/pressure_control/stress", text("the target stress must be positive, found ", pressureControl.stress));
   }
-  if (pressureControl.active()) {
+  if (pressureControl.stress != 0.0) {  // configured (a negative target is reported above too)
     if (shearRate == 0.0) {
       add("/pressure_control", text("pressure control adjusts a Lees-Edwards box: give a shear_rate"));
     }

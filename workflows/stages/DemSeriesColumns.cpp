@@ -1,6 +1,7 @@
 #include "workflows/stages/DemSeriesColumns.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "core/Error.hpp"
@@ -43,21 +44,42 @@ class ContactColumns final : public SeriesColumns {
   dem::DemEngine& engine_;
 };
 
-// Eq. 2.3 over the whole box.
+// Eq. 2.3 over the whole box, as it is now (pressure control moves it).
 class StressColumns final : public SeriesColumns {
  public:
-  StressColumns(dem::DemEngine& engine, double volume) : engine_(engine), volume_(volume) {}
+  explicit StressColumns(dem::DemEngine& engine) : engine_(engine) {}
   [[nodiscard]] std::vector<std::string> names() const override {
     return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_xz", "stress_yz"};
   }
   void sample(SeriesRow& row) override {
-    const Mat3 sigma = dem::wholeDomainStress(engine_.frame(), volume_);
+    const auto& sim = engine_.simulation();
+    const Mat3 sigma = dem::wholeDomainStress(engine_.frame(), (sim.boxHigh() - sim.boxLow()).prod());
     for (auto [a, b] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) row.add(sigma(a, b));
   }
 
  private:
   dem::DemEngine& engine_;
-  double volume_;
+};
+
+// Pressure control: the box length along the gradient, the solid fraction in it, and the p_yy
+// the control saw at the step (the stress_yy column is Eq. 2.3 of the frame, the same state).
+class PressureControlColumns final : public SeriesColumns {
+ public:
+  explicit PressureControlColumns(const dem::DemEngine& engine) : engine_(engine) {}
+  [[nodiscard]] std::vector<std::string> names() const override {
+    return {"box_length_y", "solid_fraction", "controlled_stress_yy"};
+  }
+  void sample(SeriesRow& row) override {
+    const auto& sim = engine_.simulation();
+    const Vec3 length = sim.boxHigh() - sim.boxLow();
+    const auto& p = sim.particles();
+    double volume = 0.0;
+    for (std::size_t i = 0; i < p.nOwned; ++i) volume += 4.0 / 3.0 * M_PI * std::pow(p.radius[i], 3);
+    row.add(length[1]).add(volume / length.prod()).add(sim.normalStressYY());
+  }
+
+ private:
+  const dem::DemEngine& engine_;
 };
 
 class WallForceColumns final : public SeriesColumns {
@@ -139,7 +161,8 @@ std::vector<std::unique_ptr<SeriesColumns>> demSeriesColumns(dem::DemEngine& eng
   std::vector<std::unique_ptr<SeriesColumns>> out;
   out.push_back(std::make_unique<EnergyColumns>(engine));
   out.push_back(std::make_unique<ContactColumns>(engine));
-  out.push_back(std::make_unique<StressColumns>(engine, (setup.engine.hi - setup.engine.lo).prod()));
+  out.push_back(std::make_unique<StressColumns>(engine));
+  if (setup.engine.pressureControl.active()) out.push_back(std::make_unique<PressureControlColumns>(engine));
   out.push_back(std::make_unique<WallForceColumns>(engine));
   out.push_back(std::make_unique<SpeciesHeightColumns>(engine, std::move(species)));
   out.push_back(std::make_unique<TrackedHeightColumns>(engine, setup.trackedIds));

@@ -67,6 +67,12 @@ DemSetup makeDemSetup(const json& p) {
   e.backgroundDamping = p.at("background_damping");
   for (const auto& id : p.at("track_ids")) out.trackedIds.push_back(std::llround(id.get<double>()));
   e.shearRate = p.at("shear_rate");
+  if (p.contains("pressure_control")) {
+    const auto& pc = p.at("pressure_control");
+    e.pressureControl.stress = pc.at("stress");
+    e.pressureControl.relaxationTime = pc.at("relaxation_time");
+    e.pressureControl.interval = pc.at("interval");
+  }
   const std::string planar = p.at("planar");
   e.planarAxis = planar.empty() ? -1 : planar[0] - 'x';
   e.dt = p.at("dt");

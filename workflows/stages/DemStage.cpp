@@ -74,6 +74,18 @@ std::shared_ptr<ParamSchema> placeSchema() {
 
 // Section 6.2's two-step preparation: shake the whole container at high frequency with some
 // particles held in place, then let the bed relax, then release them.
+std::shared_ptr<ParamSchema> pressureControlSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::quantity("stress", Dimension::pressure())
+             .required()
+             .doc("target normal stress p_yy along the gradient (Eq. 2.3)"))
+      .add(ParamSpec::quantity("relaxation_time", Dimension::timeDim())
+               .required()
+               .doc("time constant of the box's relaxation towards the target"))
+      .add(ParamSpec::integer("interval").defaultValue(10).doc("steps between box adjustments"));
+  return s;
+}
+
 std::shared_ptr<ParamSchema> preparationSchema() {
   auto s = std::make_shared<ParamSchema>();
   s->add(
@@ -124,6 +136,9 @@ DemStage::DemStage() {
   schema_.add(ParamSpec::quantity("shear_rate", Dimension::frequency())
                .defaultValue(0.0)
                .doc("Lees-Edwards simple shear rate: u_x = shear_rate (y - y_mid), needs periodic \"xy\""))
+      .add(ParamSpec::object("pressure_control", pressureControlSchema())
+               .doc("hold p_yy at a target by relaxing the box length along y (sheared box periodic in xyz, no "
+                    "walls; docs/dem.md)"))
       .add(ParamSpec::quantity("background_damping", Dimension{0, 1, -1})
                .defaultValue(0.0)
                .min(0.0)
