@@ -28,7 +28,11 @@ double gasModified(double dilute, double factor, double beta, double rho, double
 // as MFIX 21.3's own comment says it should ("the proper extension for M>1 when ro_g=0").
 double gasModifiedInMixture(double dilute, double factor, double beta, double rho, double eps, double g0, double sum,
                             double theta) {
-  if (!(sum > 0.0)) return dilute;  // no solids anywhere: the one-phase dilute limit
+  // No solids in the cell: no stress, as MFIX's form gives at eps_m = 0 (its single-particle drag
+  // keeps the denominator finite). The granular-gas limit c0 here put the dilute viscosity of a
+  // pure granular gas, rho d sqrt(theta) at the neighbours' theta, into empty cells beside a thin
+  // phase's faces (FIX26).
+  if (!(sum > 0.0)) return 0.0;
   const double share = eps * g0 / sum;
   if (beta == 0.0) return dilute * share;
   const double a = rho * rho * eps * sum * theta;

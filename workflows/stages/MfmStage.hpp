@@ -26,7 +26,9 @@ class MfmStage final : public StageType {
   // 6: each converged step closes every solids phase's continuity implicitly (no undershoot).
   // 7: with several solids phases each feels its volume share of the mixture's plastic pressure
   //    gradient (engines/fluid Momentum); one solids phase unchanged bit for bit.
-  [[nodiscard]] int implVersion() const override { return 7; }
+  // 8: with several solids phases a cell without solids has no kinetic viscosity or conductivity
+  //    (was the pure granular gas's); one solids phase unchanged bit for bit.
+  [[nodiscard]] int implVersion() const override { return 8; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }
