@@ -116,4 +116,16 @@ inline double elasticEnergy(const core::data::ParticleFrame& f, const PairMateri
   return e;
 }
 
+// Particles whose id, position, velocity or spin differ in any bit (a and b hold as many): the
+// measure of the restart tests.
+inline std::size_t differingParticles(const Simulation& a, const Simulation& b) {
+  const auto& pa = a.particles();
+  const auto& pb = b.particles();
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < pa.nOwned; ++i) {
+    if (pa.id[i] != pb.id[i] || pa.x[i] != pb.x[i] || pa.v[i] != pb.v[i] || pa.omega[i] != pb.omega[i]) ++differing;
+  }
+  return differing;
+}
+
 }  // namespace grainbridge::dem::testing

@@ -258,11 +258,5 @@ TEST(LeesEdwards, ResumedFromItsCheckpointFileContinuesBitForBit) {
   uninterrupted.run(5000);
   resumed.run(5000);
   ASSERT_EQ(resumed.particles().nOwned, uninterrupted.particles().nOwned);
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < uninterrupted.particles().nOwned; ++i) {
-    const auto& a = uninterrupted.particles();
-    const auto& b = resumed.particles();
-    if (a.id[i] != b.id[i] || a.x[i] != b.x[i] || a.v[i] != b.v[i] || a.omega[i] != b.omega[i]) ++differing;
-  }
-  EXPECT_EQ(differing, 0u);
+  EXPECT_EQ(differingParticles(uninterrupted, resumed), 0u);
 }

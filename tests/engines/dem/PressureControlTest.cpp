@@ -113,13 +113,7 @@ TEST(PressureControl, ResumedFromItsCheckpointFileContinuesBitForBit) {
   EXPECT_EQ(resumed.boxHigh()[1], uninterrupted.boxHigh()[1]);
   EXPECT_EQ(resumed.shearOffset(resumed.time()), uninterrupted.shearOffset(uninterrupted.time()));
   ASSERT_EQ(resumed.particles().nOwned, uninterrupted.particles().nOwned);
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < uninterrupted.particles().nOwned; ++i) {
-    const auto& a = uninterrupted.particles();
-    const auto& b = resumed.particles();
-    if (a.id[i] != b.id[i] || a.x[i] != b.x[i] || a.v[i] != b.v[i]) ++differing;
-  }
-  EXPECT_EQ(differing, 0u);
+  EXPECT_EQ(differingParticles(uninterrupted, resumed), 0u);
 }
 
 TEST(PressureControl, SetupProblemsNameTheKey) {

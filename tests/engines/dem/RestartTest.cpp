@@ -51,17 +51,6 @@ Particles packingParticles() {
   return p;
 }
 
-// Particles whose id, position, velocity or spin differ in any bit (a and b hold as many).
-std::size_t differingParticles(const Simulation& a, const Simulation& b) {
-  const auto& pa = a.particles();
-  const auto& pb = b.particles();
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < pa.nOwned; ++i) {
-    if (pa.id[i] != pb.id[i] || pa.x[i] != pb.x[i] || pa.v[i] != pb.v[i] || pa.omega[i] != pb.omega[i]) ++differing;
-  }
-  return differing;
-}
-
 void expectBitwiseEqual(const Simulation& a, const Simulation& b) {
   ASSERT_EQ(a.particles().nOwned, b.particles().nOwned);
   EXPECT_EQ(a.stepCount(), b.stepCount());
