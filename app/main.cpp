@@ -81,8 +81,8 @@ int main(int argc, char** argv) {
   auto* dbQuery = dbCmd->add_subcommand(
       "query", "closure points (or force / structure statistics) filtered by family, state ranges and run");
   addDbSource(dbQuery);
-  dbQuery->add_option("--table", opt.table, "closure_points | force_statistics | structure_statistics")
-      ->check(CLI::IsMember({"closure_points", "force_statistics", "structure_statistics"}));
+  dbQuery->add_option("--table", opt.table, "closure_points | force_statistics | structure_statistics | rheology")
+      ->check(CLI::IsMember({"closure_points", "force_statistics", "structure_statistics", "rheology"}));
   dbQuery->add_option("--family", opt.family, "only this family (simple_shear, fluidized_cell, bnp, ...)");
   dbQuery->add_option("--where", opt.where, "COLUMN=LO:HI, COLUMN=VALUE, COLUMN=LO: or COLUMN=:HI (repeatable)");
   dbQuery->add_option("--run", opt.runId, "only rows of this run");

@@ -42,7 +42,7 @@ ClosureStore::ClosureStore(Database& db) : db_(db) {}
 
 const std::vector<std::string>& ClosureStore::recordTables() {
   static const std::vector<std::string> tables = {"closure_points", "force_statistics", "structure_statistics",
-                                                  "closure_tables"};
+                                                  "closure_tables", "rheology"};
   return tables;
 }
 

@@ -175,6 +175,42 @@ ALTER TABLE closure_points ADD COLUMN inertial_number_err REAL;
 ALTER TABLE closure_points ADD COLUMN stress_ratio REAL;
 ALTER TABLE closure_points ADD COLUMN stress_ratio_err REAL;
 )sql",
+      // 4: the dense-flow rheology a tabulate stage makes (issue 30): per restitution, the
+      // points of mu(I) (stress ratio) or phi(I) (solid fraction) against the inertial number,
+      // and the fit of mu_s + (mu_2 - mu_s) / (1 + I_0 / I) or phi_c - a I with its errors
+      // (extract/statistics/InertialRheologyFit). The fit columns are NULL when the points were
+      // too few to fit. diameter and density name the grains, so a continuum stage can refuse
+      // a rheology made from other grains.
+      R"sql(
+CREATE TABLE rheology(
+  id INTEGER PRIMARY KEY,
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  name TEXT NOT NULL,
+  family TEXT NOT NULL,
+  relation TEXT NOT NULL CHECK(relation IN ('mu_of_I', 'phi_of_I')),
+  form TEXT NOT NULL,
+  restitution REAL,
+  friction REAL,
+  diameter REAL NOT NULL CHECK(diameter > 0),
+  density REAL NOT NULL CHECK(density > 0),
+  points INTEGER NOT NULL,
+  inertial_numbers_json TEXT NOT NULL,
+  inertial_number_errors_json TEXT NOT NULL,
+  values_json TEXT NOT NULL,
+  uncertainties_json TEXT NOT NULL,
+  fit_inertial_number_max REAL,
+  fitted_points INTEGER,
+  mu_s REAL, mu_s_err REAL,
+  mu_2 REAL, mu_2_err REAL,
+  inertial_number_0 REAL, inertial_number_0_err REAL,
+  phi_c REAL, phi_c_err REAL,
+  slope REAL, slope_err REAL,
+  covariance_json TEXT,
+  chi2_per_dof REAL,
+  dof INTEGER,
+  weighted INTEGER);
+CREATE INDEX rheology_name ON rheology(name, relation);
+)sql",
   };
   return scripts;
 }

@@ -31,6 +31,9 @@ std::string humanNumber(double v, int significant) {
 
 std::string humanWithError(double mean, double error) {
   if (!(error > 0.0) || !std::isfinite(error) || !std::isfinite(mean)) return humanNumber(mean);
+  // An error at the level of the mean's rounding (a constant series' block error) says nothing,
+  // and its digits would be beyond a double's precision.
+  if (error < 1e-12 * std::abs(mean)) return humanNumber(mean);
   // The error's second significant digit sets the last digit shown.
   const int lastDigit = static_cast<int>(std::floor(std::log10(error))) - 1;
   const double magnitude = std::max(std::abs(mean), error);

@@ -17,7 +17,8 @@ std::string roundTripText(double v);
 std::string humanNumber(double v, int significant = 6);
 
 // A mean with its standard error: the error to two significant digits, the mean to the same
-// decimal place ("0.927 ± 0.024", "1.23e5 ± 4.1e3"); the mean alone when the error is not positive.
+// decimal place ("0.927 ± 0.024", "1.23e5 ± 4.1e3"); the mean alone when the error is not positive
+// or below 1e-12 of the mean (rounding, not a measured error).
 std::string humanWithError(double mean, double error);
 
 // A JSON value for display: numbers through humanNumber, strings verbatim, a list as

@@ -42,6 +42,8 @@ TEST(NumberText, HumanWithErrorRoundsToTheError) {
   EXPECT_EQ(humanWithError(6.261380592514366, 0.07088067392045917), "6.261 ± 0.071");
   EXPECT_EQ(humanWithError(641.7817705645383, 37.59329853770395), "642 ± 38");
   EXPECT_EQ(humanWithError(123456.0, 4100.0), "1.235e5 ± 4.1e3");
+  // A rounding-level error (a constant box's solid fraction) is not shown.
+  EXPECT_EQ(humanWithError(0.30000367119878024, 1.2735131497718753e-17), "0.300004");
   EXPECT_EQ(humanWithError(2.5e-9, 1.2e-10), "2.5e-9 ± 1.2e-10");
   EXPECT_EQ(humanWithError(0.5, 0.0), "0.5");
 }

@@ -4,10 +4,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
+#include "db/Statement.hpp"
 #include "tests/support/Cli.hpp"
 #include "tests/support/TinyShear.hpp"
 
@@ -89,4 +91,80 @@ TEST(TabulateStage, PointsOfSeveralFrictionsNeedTheFrictionParameter) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
   EXPECT_FALSE(db::ClosureStore(database).loadTable("t", "p_theta").table.twoDimensional());
+}
+
+TEST(TabulateStage, ShearedPointsGiveTheRheologyRowsThatDbQueryShows) {
+  TempDir work;
+  json wf = workflow({{"shear", shear({kBig, {"5.5 mm", "5.5 mm", "5.5 mm"}, kSmall, {"4.7 mm", "4.7 mm", "4.7 mm"}},
+                                      {0.9})}});
+  wf["stages"]["table"]["params"]["second_variable"] = "";
+  wf["stages"]["table"]["params"]["fit_inertial_number_max"] = 1e3;  // tiny boxes: fit every point
+  writeText(work.path() / "wf.json", wf.dump(2));
+  auto r = runGrainbridge(work.path(), "run wf.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  r = runGrainbridge(work.path(), "db query --config wf.json --table rheology --format json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const json rows = json::parse(r.output);
+  ASSERT_EQ(rows.size(), 2U) << r.output;
+  auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
+  db::ClosureQuery q;
+  const json points = db::ClosureStore(database).query(q);
+  ASSERT_EQ(points.size(), 4U);
+  for (const auto& row : rows) {
+    EXPECT_EQ(row["points"], 4);
+    EXPECT_EQ(row["fitted_points"], 4);
+    EXPECT_DOUBLE_EQ(row["restitution"].get<double>(), 0.9);
+    // The tabulated inertial numbers are the closure points' own, in increasing order.
+    const auto I = json::parse(row["inertial_numbers_json"].get<std::string>()).get<std::vector<double>>();
+    ASSERT_EQ(I.size(), 4U);
+    EXPECT_TRUE(std::is_sorted(I.begin(), I.end()));
+    for (const auto& p : points) {
+      EXPECT_NE(std::find(I.begin(), I.end(), p["inertial_number"].get<double>()), I.end());
+    }
+    if (row["relation"] == "phi_of_I") {
+      EXPECT_TRUE(row.contains("phi_c") && row["phi_c"].is_number()) << row.dump();
+      EXPECT_TRUE(row.contains("slope_err") && row["slope_err"].is_number()) << row.dump();
+    } else {
+      EXPECT_EQ(row["relation"], "mu_of_I");
+    }
+  }
+  // 0.02 s of 40 grains is noise, not rheology: mu(I) need not fit. The table is still made, and
+  // a missing fit is said in the stage's summary rather than failing the stage.
+  auto st = database.prepare("SELECT summary_json FROM runs WHERE stage = 'table' AND status = 'done'");
+  ASSERT_TRUE(st.step());
+  const json summary = json::parse(st.columnText(0));
+  EXPECT_EQ(summary["rheology_rows"], 2) << summary.dump();
+  EXPECT_TRUE(summary.contains("phi_c") && summary.contains("phi_c_err")) << summary.dump();
+  EXPECT_TRUE(summary.contains("mu_s") || summary.value("mu_of_I_fit", "").starts_with("none: the mu_of_I fit"))
+      << summary.dump();
+}
+
+TEST(TabulateStage, PressureControlledPointsExtendTheTableToTheirMeasuredSolidFractions) {
+  TempDir work;
+  json wf = workflow({{"cv", shear({kBig, kSmall}, {0.9})}});
+  json pc = tinyShearDemParams();
+  // Narrow in x and z, so that the packed slab stays thicker than twice the interaction range.
+  pc["box_hi"] = {"3.2 mm", "6 mm", "3.2 mm"};
+  pc["pressure_control"] = {{"stress", "500 Pa"}, {"relaxation_time", "2e-3 s"}};
+  wf["stages"]["pc"] = {{"type", "dem"}, {"params", pc}};
+  wf["stages"]["x_pc"] = {{"type", "extract"}, {"from", "pc"}, {"params", {{"family", "simple_shear"}}}};
+  wf["stages"]["table"]["from"].push_back("x_pc");
+  wf["stages"]["table"]["params"]["second_variable"] = "";
+  writeText(work.path() / "wf.json", wf.dump(2));
+  const auto r = runGrainbridge(work.path(), "run wf.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
+  db::ClosureStore store(database);
+  const auto table = store.loadTable("t", "p_theta").table;
+  ASSERT_EQ(table.solidFractions().size(), 3U);
+  // The pressure-controlled box's point sits at its measured (time-averaged) solid fraction,
+  // with its own p_theta, beside the two constant-volume ones.
+  db::ClosureQuery q;
+  const json points = store.query(q);
+  ASSERT_EQ(points.size(), 3U);
+  for (const auto& p : points) {
+    const auto v = table(p["solid_fraction"].get<double>());
+    EXPECT_TRUE(v.inRange);
+    EXPECT_NEAR(v.value, p["p_theta"].get<double>(), 1e-12 * std::abs(v.value));
+  }
 }

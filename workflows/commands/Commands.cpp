@@ -314,7 +314,7 @@ int commandDbShow(const CommandOptions& opt) {
       // What this run put in the closure database (db query --run shows the rows).
       db::ClosureStore closures(database);
       std::string records;
-      for (const auto& table : {"closure_points", "force_statistics", "structure_statistics"}) {
+      for (const auto& table : {"closure_points", "force_statistics", "structure_statistics", "rheology"}) {
         db::ClosureQuery q;
         q.table = table;
         q.runId = run->id;

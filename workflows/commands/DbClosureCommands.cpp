@@ -165,7 +165,7 @@ int commandDbExport(const CommandOptions& opt) {
   const std::filesystem::path out = opt.output;
   if (out.empty()) throw UsageError("db export: say where, --output FILE.json or --output FOLDER");
   json everything = json::object();
-  for (const auto& table : {"closure_points", "force_statistics", "structure_statistics"}) {
+  for (const auto& table : {"closure_points", "force_statistics", "structure_statistics", "rheology"}) {
     db::ClosureQuery q;
     q.table = table;
     q.workflow = opt.workflowFilter;
@@ -228,10 +228,11 @@ int commandDbExport(const CommandOptions& opt) {
     }
   }
   std::printf(
-      "exported %zu closure points, %zu force statistics, %zu structure statistics, %zu closure tables and "
-      "%zu runs to %s\n",
+      "exported %zu closure points, %zu force statistics, %zu structure statistics, %zu closure tables, "
+      "%zu rheology rows and %zu runs to %s\n",
       everything["closure_points"].size(), everything["force_statistics"].size(),
-      everything["structure_statistics"].size(), everything["closure_tables"].size(), everything["runs"].size(),
+      everything["structure_statistics"].size(), everything["closure_tables"].size(), everything["rheology"].size(),
+      everything["runs"].size(),
       out.string().c_str());
   return 0;
 }

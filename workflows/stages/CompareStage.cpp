@@ -14,6 +14,7 @@
 #include "core/io/XdmfText.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/closures/KineticModel.hpp"
+#include "extract/statistics/InertialRheologyFit.hpp"
 #include "workflows/report/Plot.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -32,6 +33,11 @@ CompareStage::CompareStage() {
                .defaultValue(0.2)
                .min(0.0)
                .doc("the summary's largest deviation is over points up to this solid fraction"))
+      .add(ParamSpec::number("fit_inertial_number_max")
+               .defaultValue(0.5)
+               .positive()
+               .doc("the mu(I) and phi(I) figures fit the points with inertial number up to this (as tabulate "
+                    "does)"))
       .add(ParamSpec::string("title").defaultValue("DEM closures against kinetic theory").doc("page title"));
 }
 
@@ -168,6 +174,98 @@ void describeDeviations(const std::vector<Point>& points, const std::vector<std:
   findings.headline = h.str();
 }
 
+// The dense-flow rheology (Chialvo, Sun and Sundaresan 2012): the stress ratio mu = tau / p and
+// the solid fraction against the inertial number I, DEM points per (e, friction) with their fit
+// (extract/statistics/InertialRheologyFit, points with I <= fitMax), and each kinetic theory's
+// steady simple shear, where I = 1 / sqrt(p*) and mu = tau* / p* depend on (phi, e) only.
+std::vector<report::Figure> rheologyFigures(const std::vector<Point>& points, const std::set<double>& restitutions,
+                                            double fitMax) {
+  namespace st = extract::statistics;
+  std::vector<report::Figure> figures;
+  for (const auto relation : {st::RheologyRelation::MuOfI, st::RheologyRelation::PhiOfI}) {
+    const bool mu = relation == st::RheologyRelation::MuOfI;
+    report::Figure fig;
+    fig.title = mu ? "Stress ratio against inertial number" : "Solid fraction against inertial number";
+    fig.x = {"inertial number I", "–", true};
+    fig.y = mu ? report::Axis{"μ = τ/p", "–", false} : report::Axis{"solid fraction φ", "–", false};
+    std::map<std::pair<double, double>, std::pair<report::Series, std::vector<st::RheologySample>>> dem;
+    for (const auto& pt : points) {
+      if (!pt.has("inertial_number") || !pt.has("stress_ratio")) continue;
+      auto& [s, samples] = dem[{pt.restitution, pt.friction}];
+      s.label = "DEM, e " + core::humanNumber(pt.restitution) +
+                (pt.friction != 0.0 ? ", μ " + core::humanNumber(pt.friction) : "");
+      s.model = "DEM";
+      s.style = report::Series::Style::PointsWithErrors;
+      const double I = pt.value("inertial_number");
+      const double y = mu ? pt.value("stress_ratio") : pt.solidFraction;
+      const double yErr = pt.error(mu ? "stress_ratio" : "solid_fraction");
+      s.x.push_back(I);
+      s.y.push_back(y);
+      s.yError.push_back(yErr);
+      if (I <= fitMax) samples.push_back({I, pt.error("inertial_number"), y, yErr});
+    }
+    if (dem.empty()) return {};
+    int variant = 0;
+    double lowest = std::numeric_limits<double>::infinity(), highest = 0.0;
+    for (auto& [state, entry] : dem) {
+      auto& [s, samples] = entry;
+      s.variant = variant;
+      lowest = std::min(lowest, *std::min_element(s.x.begin(), s.x.end()));
+      highest = std::max(highest, *std::max_element(s.x.begin(), s.x.end()));
+      report::Series fitted;
+      try {
+        const auto fit = st::fitRheology(relation, samples);
+        fitted.label = mu ? "fit, e " + core::humanNumber(state.first) + ": μs " +
+                                core::humanNumber(fit.params[0], 3) + " ± " + core::humanNumber(fit.errors[0], 1) +
+                                ", μ2 " + core::humanNumber(fit.params[1], 3) + " ± " +
+                                core::humanNumber(fit.errors[1], 1) + ", I0 " + core::humanNumber(fit.params[2], 3) +
+                                " ± " + core::humanNumber(fit.errors[2], 1)
+                          : "fit, e " + core::humanNumber(state.first) + ": φc " + core::humanNumber(fit.params[0], 4) +
+                                " ± " + core::humanNumber(fit.errors[0], 1) + ", a " +
+                                core::humanNumber(fit.params[1], 3) + " ± " + core::humanNumber(fit.errors[1], 1);
+        fitted.model = "DEM";
+        fitted.style = report::Series::Style::Line;
+        fitted.variant = variant;
+        double from = samples.front().inertialNumber, to = from;
+        for (const auto& x : samples) from = std::min(from, x.inertialNumber), to = std::max(to, x.inertialNumber);
+        for (int k = 0; k <= 60; ++k) {
+          const double I = from * std::pow(to / from, k / 60.0);
+          fitted.x.push_back(I);
+          fitted.y.push_back(fit(I));
+        }
+      } catch (const Error&) {
+        // Too few points below the cap, or points that do not determine the law: no line.
+      }
+      fig.series.push_back(std::move(s));
+      if (!fitted.x.empty()) fig.series.push_back(std::move(fitted));
+      ++variant;
+    }
+    int eIndex = 0;
+    for (double e : restitutions) {
+      for (auto model : kt::kAllKineticModels) {
+        report::Series curve;
+        curve.label = std::string(kt::toString(model)) + ", e " + core::humanNumber(e);
+        curve.model = kt::toString(model);
+        curve.style = report::Series::Style::Line;
+        curve.variant = eIndex;
+        for (double eps = 0.02; eps <= 0.6001; eps += 0.01) {
+          const Point& ref = points.front();
+          const auto pred = predict(model, eps, e, ref.shearRate, ref.diameter, ref.density);
+          const double I = 1.0 / std::sqrt(pred.pShear);
+          // Kinetic theory's I spans decades; draw it over the DEM points' range only.
+          if (!std::isfinite(I) || I < 0.5 * lowest || I > 2.0 * highest) continue;
+          curve.x.push_back(I);
+          curve.y.push_back(mu ? pred.tauShear / pred.pShear : eps);
+        }
+        if (!curve.x.empty()) fig.series.push_back(std::move(curve));
+      }
+      ++eIndex;
+    }
+    figures.push_back(std::move(fig));
+  }
+  return figures;
+}
+
 }  // namespace
 
 void CompareStage::checkAgainstUpstream(const json& /*p*/, const std::string& ptr,
@@ -294,6 +392,13 @@ void CompareStage::run(StageContext& ctx) const {
     ctx.addArtifact(drawn.svg, "svg");
     ctx.addArtifact(drawn.png, "png");
     findings.figures.push_back({drawn.svg, drawn.png, fig.title});
+  }
+  const auto rheology = rheologyFigures(points, restitutions, p.at("fit_inertial_number_max").get<double>());
+  for (std::size_t k = 0; k < rheology.size(); ++k) {
+    const auto drawn = report::drawFigure(rheology[k], ctx.outputDir(), k == 0 ? "compare_mu_of_I" : "compare_phi_of_I");
+    ctx.addArtifact(drawn.svg, "svg");
+    ctx.addArtifact(drawn.png, "png");
+    findings.figures.push_back({drawn.svg, drawn.png, rheology[k].title});
   }
   // Shear-scaled forms first; the first screen shows the three of one family.
   std::stable_partition(findings.figures.begin(), findings.figures.end(),

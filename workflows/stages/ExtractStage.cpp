@@ -331,6 +331,11 @@ void ExtractStage::run(StageContext& ctx) const {
     ctx.addRecord("closure_points", result.point);
     sink.writeFile("closure_point.csv", ob::closurePointCsv(result.point), "csv");
     summary = result.point;
+    // The solid fraction's error stays a summary value: a pressure-controlled box's fraction is
+    // measured (tabulate's phi(I) fit weighs it), a constant-volume box's is exact (0).
+    if (result.point.contains("extra_json") && result.point["extra_json"].contains("solid_fraction_err")) {
+      summary["solid_fraction_err"] = result.point["extra_json"]["solid_fraction_err"];
+    }
     summary.erase("extra_json");
   }
   summary.update(result.summary);

@@ -9,6 +9,7 @@
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/Log.hpp"
+#include "workflows/stages/TabulateRheology.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -24,7 +25,12 @@ TabulateStage::TabulateStage() {
                .doc("second axis of the tables; \"\" for tables in solid fraction only"))
       .add(ParamSpec::number("friction")
                .min(0.0)
-               .doc("use the points of this friction coefficient (required when the points have several)"));
+               .doc("use the points of this friction coefficient (required when the points have several)"))
+      .add(ParamSpec::number("fit_inertial_number_max")
+               .defaultValue(0.5)
+               .positive()
+               .doc("the mu(I) and phi(I) fits take the points with inertial number up to this; above it "
+                    "dilute, kinetic-theory flow follows other laws (phi(I) is linear only in dense flow)"));
 }
 
 namespace {
@@ -171,6 +177,31 @@ void TabulateStage::run(StageContext& ctx) const {
   summary["quantities"] = quantities;
   core::writeFileAtomically(ctx.outputDir() / "tables.csv", csv.str());
   ctx.addArtifact("tables.csv", "csv");
+
+  // The dense-flow rheology of the sheared points: mu(I), phi(I) and their fits.
+  const auto rheology = tabulateRheology(points, name, p.at("fit_inertial_number_max").get<double>());
+  if (!rheology.rows.empty()) {
+    for (const auto& row : rheology.rows) ctx.addRecord("rheology", row);
+    core::writeFileAtomically(ctx.outputDir() / "rheology_points.csv", rheology.pointsCsv);
+    ctx.addArtifact("rheology_points.csv", "csv");
+    core::writeFileAtomically(ctx.outputDir() / "rheology_fits.csv", rheology.fitsCsv);
+    ctx.addArtifact("rheology_fits.csv", "csv");
+    // Summary values are scalars (a report shows them as columns). Every row is in the CSVs and
+    // the database; with one restitution its fits are summary values too, or why there is none.
+    summary["rheology_rows"] = rheology.rows.size();
+    if (rheology.summary.size() == 2) {
+      for (const auto& fit : rheology.summary) {
+        const std::string relation = fit.at("relation");
+        for (const auto& [k, v] : fit.items()) {
+          if (k == "fit" || k == "chi2_per_dof" || k == "fitted_points") {
+            summary[relation + "_" + k] = v;
+          } else if (k != "relation" && k != "restitution" && k != "points") {
+            summary[k] = v;
+          }
+        }
+      }
+    }
+  }
   ctx.setSummary(summary);
 }
 

@@ -5,7 +5,8 @@
 // sqrt(theta)) and J d/(rho_p theta^(3/2)) (DESIGN.md "Closures") on the grid of the points'
 // solid fractions [x restitutions]. Every grid node needs exactly one point: a missing or
 // doubled state is an error naming it, because an engine interpolating across a hole would
-// silently invent a closure there.
+// silently invent a closure there. Sheared points also give the dense-flow rheology, mu(I) and
+// phi(I) with their fits, per restitution (TabulateRheology).
 #include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -15,7 +16,8 @@ class TabulateStage final : public StageType {
   TabulateStage();
   [[nodiscard]] std::string name() const override { return "tabulate"; }
   // 2: table CSV at full precision (17 significant digits, was 12)
-  [[nodiscard]] int implVersion() const override { return 2; }
+  // 3: the mu(I) and phi(I) tables and fits (rheology records, TabulateRheology)
+  [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::string summary() const override {
     return "closure tables (p_theta, eta_theta, j_theta against solid fraction [and restitution]) from closure "
            "points";
