@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -174,6 +176,24 @@ void describeDeviations(const std::vector<Point>& points, const std::vector<std:
   findings.headline = h.str();
 }
 
+// One kinetic theory's curve at restitution e, one point per solid fraction 0.02..0.60 where
+// `at` gives one ((x, y) from the model's prediction there); dash `variant` tells the e apart.
+report::Series kineticTheoryCurve(kt::KineticModelName model, double e, int variant,
+                                  const std::function<std::optional<std::pair<double, double>>(double eps)>& at) {
+  report::Series curve;
+  curve.label = std::string(kt::toString(model)) + ", e " + core::humanNumber(e);
+  curve.model = kt::toString(model);
+  curve.style = report::Series::Style::Line;
+  curve.variant = variant;
+  for (double eps = 0.02; eps <= 0.6001; eps += 0.01) {
+    if (const auto xy = at(eps)) {
+      curve.x.push_back(xy->first);
+      curve.y.push_back(xy->second);
+    }
+  }
+  return curve;
+}
+
 // The dense-flow rheology (Chialvo, Sun and Sundaresan 2012): the stress ratio mu = tau / p and
 // the solid fraction against the inertial number I, DEM points per (e, friction) with their fit
 // (extract/statistics/InertialRheologyFit, points with I <= fitMax), and each kinetic theory's
@@ -243,20 +263,14 @@ std::vector<report::Figure> rheologyFigures(const std::vector<Point>& points, co
     int eIndex = 0;
     for (double e : restitutions) {
       for (auto model : kt::kAllKineticModels) {
-        report::Series curve;
-        curve.label = std::string(kt::toString(model)) + ", e " + core::humanNumber(e);
-        curve.model = kt::toString(model);
-        curve.style = report::Series::Style::Line;
-        curve.variant = eIndex;
-        for (double eps = 0.02; eps <= 0.6001; eps += 0.01) {
+        auto curve = kineticTheoryCurve(model, e, eIndex, [&](double eps) -> std::optional<std::pair<double, double>> {
           const Point& ref = points.front();
           const auto pred = predict(model, eps, e, ref.shearRate, ref.diameter, ref.density);
           const double I = 1.0 / std::sqrt(pred.pShear);
           // Kinetic theory's I spans decades; draw it over the DEM points' range only.
-          if (!std::isfinite(I) || I < 0.5 * lowest || I > 2.0 * highest) continue;
-          curve.x.push_back(I);
-          curve.y.push_back(mu ? pred.tauShear / pred.pShear : eps);
-        }
+          if (!std::isfinite(I) || I < 0.5 * lowest || I > 2.0 * highest) return std::nullopt;
+          return std::pair{I, mu ? pred.tauShear / pred.pShear : eps};
+        });
         if (!curve.x.empty()) fig.series.push_back(std::move(curve));
       }
       ++eIndex;
@@ -372,19 +386,12 @@ void CompareStage::run(StageContext& ctx) const {
     int eIndex = 0;
     for (double e : restitutions) {
       for (auto model : kt::kAllKineticModels) {
-        report::Series curve;
-        curve.label = std::string(kt::toString(model)) + ", e " + core::humanNumber(e);
-        curve.model = kt::toString(model);
-        curve.style = report::Series::Style::Line;
-        curve.variant = eIndex;
-        for (double eps = 0.02; eps <= 0.6001; eps += 0.01) {
-          const double v = predicted(predict(model, eps, e, shearRate, ref.diameter, ref.density), q);
-          if (std::isfinite(v) && v > 0.0) {
-            curve.x.push_back(eps);
-            curve.y.push_back(v);
-          }
-        }
-        fig.series.push_back(std::move(curve));
+        fig.series.push_back(
+            kineticTheoryCurve(model, e, eIndex, [&](double eps) -> std::optional<std::pair<double, double>> {
+              const double v = predicted(predict(model, eps, e, shearRate, ref.diameter, ref.density), q);
+              if (!(std::isfinite(v) && v > 0.0)) return std::nullopt;
+              return std::pair{eps, v};
+            }));
       }
       ++eIndex;
     }
