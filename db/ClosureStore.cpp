@@ -191,4 +191,39 @@ core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const 
                                   json::parse(st.columnText(4)).value("friction", 0.0), std::move(table)};
 }
 
+core::LoadedRheology ClosureStore::loadRheology(const std::string& name, const std::string& runKey) {
+  auto newest = db_.prepare(
+      "SELECT r.key FROM rheology h JOIN runs r ON r.id = h.run_id "
+      "WHERE h.name = ?1 AND h.relation = 'mu_of_I' AND (?2 = '' OR r.key = ?2) ORDER BY h.run_id DESC LIMIT 1");
+  newest.bind(1, name).bind(2, runKey);
+  if (!newest.step()) {
+    std::string known;
+    auto all = db_.prepare("SELECT DISTINCT name FROM rheology WHERE relation = 'mu_of_I' ORDER BY 1");
+    while (all.step()) known += (known.empty() ? "" : ", ") + all.columnText(0);
+    throw Error("closure database " + db_.path().string() + ": no mu(I) rheology \"" + name + "\"" +
+                (runKey.empty() ? "" : " from run " + runKey.substr(0, 12)) +
+                " (rheologies: " + (known.empty() ? "none" : known) + ")");
+  }
+  core::LoadedRheology out;
+  out.name = name;
+  out.runKey = newest.columnText(0);
+  auto st = db_.prepare(
+      "SELECT h.restitution, h.diameter, h.density, h.inertial_numbers_json, h.values_json, h.mu_s, h.mu_2, "
+      "h.inertial_number_0 FROM rheology h JOIN runs r ON r.id = h.run_id "
+      "WHERE h.name = ?1 AND h.relation = 'mu_of_I' AND r.key = ?2 ORDER BY h.restitution, h.id");
+  st.bind(1, name).bind(2, out.runKey);
+  while (st.step()) {
+    core::LoadedRheology::Row row;
+    if (!st.columnIsNull(0)) row.restitution = st.columnDouble(0);
+    out.diameter = st.columnDouble(1);
+    out.density = st.columnDouble(2);
+    row.inertialNumbers = json::parse(st.columnText(3)).get<std::vector<double>>();
+    row.stressRatios = json::parse(st.columnText(4)).get<std::vector<double>>();
+    if (!st.columnIsNull(5)) row.fit = core::LoadedRheology::Fit{st.columnDouble(5), st.columnDouble(6), st.columnDouble(7)};
+    out.rows.push_back(std::move(row));
+  }
+  out.sha256 = core::contentSha256(out);
+  return out;
+}
+
 }  // namespace grainbridge::db

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/LoadedClosureTable.hpp"
+#include "core/LoadedRheology.hpp"
 
 namespace grainbridge::db {
 
@@ -54,6 +55,11 @@ class ClosureStore {
   // are when none matches.
   core::LoadedClosureTable loadTable(const std::string& name, const std::string& quantity,
                                      const std::string& runKey = "");
+
+  // The mu(I) rows (relation mu_of_I, every restitution) of the rheology `name`, as a continuum
+  // run receives them: from the run of `runKey` when given, else from the newest run that made
+  // rows of that name. Throws Error listing the rheologies there are when none matches.
+  core::LoadedRheology loadRheology(const std::string& name, const std::string& runKey = "");
 
   // Column names of a table, from the schema itself (so no list here can drift from it).
   std::vector<std::string> columns(const std::string& table);

@@ -46,10 +46,20 @@ PlasticRegime::Result PlasticRegime::evaluate(double voidFraction, double solidF
   r.plastic = true;
   r.pStar = params.coefficient * std::pow(params.criticalVoidFraction - voidFraction, params.exponent);
   r.pressure = solidFraction * r.pStar;  // Eq. 3.26
-  // Schaeffer with MFIX's cap; at I2D = 0 the cap is the value (the limit of min(x, cap)).
-  const double uncapped = strainInvariant > 0.0
-                              ? r.pStar * std::sin(params.internalFrictionAngle) / (2.0 * std::sqrt(strainInvariant))
-                              : params.maxViscosity;
+  // MFIX's cap on either viscosity; at I2D = 0 the cap is the value (the limit of min(x, cap)).
+  if (!(strainInvariant > 0.0)) {
+    r.viscosity = params.maxViscosity;
+    return r;
+  }
+  const double shearRate = 2.0 * std::sqrt(strainInvariant);
+  double uncapped = 0.0;
+  if (params.rheology && r.pressure > 0.0) {
+    // mu(I) P^p_s / gamma_dot with gamma_dot = 2 sqrt(I2D) (header).
+    r.inertialNumber = params.rheology->inertialNumber(shearRate, r.pressure);
+    uncapped = params.rheology->stressRatio(r.inertialNumber) * r.pressure / shearRate;
+  } else if (!params.rheology) {
+    uncapped = r.pStar * std::sin(params.internalFrictionAngle) / shearRate;
+  }
   r.viscosity = std::min(uncapped, params.maxViscosity);
   return r;
 }

@@ -18,9 +18,23 @@
 // MFIX takes P*, not eps_s P*, in the viscosity; so does this. The angle phi is in radians here:
 // a config gives it as a quantity ("30 degree"), and a bare number that cannot be an angle in
 // radians (30) is refused.
+//
+// Or, with a mu(I) rheology measured in DEM (`plastic` mu_i, InertialRheology.hpp), the
+// frictional viscosity that makes the plastic shear stress mu(I) times the plastic pressure:
+//
+//   mu^p = mu(I) P^p_s / (2 sqrt(I2D)),   I = 2 sqrt(I2D) d / sqrt(P^p_s / rho_p),
+//
+// since in simple shear 2 sqrt(I2D) is the shear rate and |tau^p| = 2 mu^p sqrt(I2D). The
+// pressure is the plastic pressure of Eq. 3.26, eps_s P*, not Schaeffer's P*: the DEM's stress
+// ratio is the shear stress over the pressure of the grains per unit of total volume, which is
+// what P^p_s is in the solids momentum equation. The same cap applies (slow shear: I -> 0,
+// mu -> mu_s, mu^p -> infinity).
 #include <cmath>
+#include <optional>
 #include <string>
 #include <string_view>
+
+#include "engines/closures/InertialRheology.hpp"
 
 namespace grainbridge::closures {
 
@@ -31,6 +45,8 @@ struct PlasticRegime {
     double exponent = 10.0;                     // n [-]
     double internalFrictionAngle = M_PI / 6.0;  // phi [rad], in (0, pi/2): 30 degrees (MFiX run of VALIDATION.md)
     double maxViscosity = 100.0;                // mu_max [Pa s]: MFIX's MAX_MU_s, 1000 poise
+    // The mu(I) viscosity instead of Schaeffer's when set (the friction angle is then unused).
+    std::optional<InertialRheology> rheology;
     // Why these parameters cannot be used, naming the parameter; empty when they can.
     [[nodiscard]] std::string problem() const;
   };
@@ -38,13 +54,15 @@ struct PlasticRegime {
     bool plastic = false;    // eps_g < eps_g*
     double pStar = 0.0;      // P* [Pa]
     double pressure = 0.0;   // P^p_sm = eps_sm P* [Pa], Eq. 3.26
-    double viscosity = 0.0;  // mu^p_sm [Pa s], Eq. 3.27 with Schaeffer's mu
+    double viscosity = 0.0;  // mu^p_sm [Pa s], Eq. 3.27 with Schaeffer's or the mu(I) viscosity
+    double inertialNumber = 0.0;  // I of the mu(I) viscosity (0 with Schaeffer's)
   };
 
   [[nodiscard]] static constexpr std::string_view name() { return "schaeffer"; }
   Params params;
   // At void fraction eps_g, this phase's solid fraction eps_sm and the second invariant I2D >= 0
-  // of the deviator of its strain rate [1/s^2]. Throws grainbridge::Error for unusable params
+  // of the deviator of its strain rate [1/s^2] (the mu(I) viscosity is of one solids phase: a
+  // mixture's phases would each need their own grains). Throws grainbridge::Error for unusable params
   // (problem()) or inputs out of range.
   [[nodiscard]] Result evaluate(double voidFraction, double solidFraction, double strainInvariant) const;
 };

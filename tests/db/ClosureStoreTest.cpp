@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -156,6 +158,65 @@ TEST(ClosureStore, AClosureTableLoadsIntoCoreClosureTableNewestFirst) {
                 store.insertRecords(newer, {{"closure_tables", {malformed}}});
               }),
               HasSubstr("2 values for a 3 x 2 grid"));
+}
+
+json rheologyRow(std::optional<double> restitution, double muS) {
+  json row = {{"name", "dense"},
+              {"family", "simple_shear"},
+              {"relation", "mu_of_I"},
+              {"form", "mu_s + (mu_2 - mu_s) / (1 + I_0 / I)"},
+              {"restitution", restitution ? json(*restitution) : json()},
+              {"diameter", 1.5e-3},
+              {"density", 2526.0},
+              {"points", 2},
+              {"inertial_numbers_json", {0.01, 0.1}},
+              {"inertial_number_errors_json", {0.001, 0.01}},
+              {"values_json", {muS, muS + 0.1}},
+              {"uncertainties_json", {0.01, 0.01}}};
+  if (restitution && *restitution > 0.8) {
+    row["mu_s"] = muS;
+    row["mu_2"] = 0.64;
+    row["inertial_number_0"] = 0.28;
+  }
+  return row;
+}
+
+TEST(ClosureStore, ARheologyLoadsItsMuOfIRowsWithTheirGrainsNewestFirst) {
+  TempDir dir;
+  Database db = Database::open(dir / "gb.sqlite");
+  const auto older = newRun(db, "k1");
+  const auto newer = newRun(db, "k2");
+  json phi = rheologyRow(0.9, 0.6);
+  phi["relation"] = "phi_of_I";
+  db.transaction([&](Database& d) {
+    ClosureStore(d).insertRecords(older, {{"rheology", {rheologyRow(0.9, 0.30)}}});
+    ClosureStore(d).insertRecords(newer, {{"rheology", {rheologyRow(0.9, 0.35), rheologyRow(0.7, 0.33), phi}}});
+  });
+  ClosureStore store(db);
+  const auto loaded = store.loadRheology("dense");
+  EXPECT_EQ(loaded.runKey, "k2");
+  EXPECT_EQ(loaded.diameter, 1.5e-3);
+  EXPECT_EQ(loaded.density, 2526.0);
+  ASSERT_EQ(loaded.rows.size(), 2u);  // mu(I) only, in increasing restitution
+  EXPECT_EQ(loaded.rows[0].restitution, 0.7);
+  EXPECT_FALSE(loaded.rows[0].fit.has_value());
+  const auto* e09 = loaded.atRestitution(0.9);
+  ASSERT_NE(e09, nullptr);
+  ASSERT_TRUE(e09->fit.has_value());
+  EXPECT_EQ(e09->fit->staticRatio, 0.35);
+  EXPECT_EQ(e09->stressRatios, (std::vector<double>{0.35, 0.35 + 0.1}));  // as stored
+  EXPECT_EQ(loaded.atRestitution(0.8), nullptr);
+  EXPECT_EQ(loaded.sha256, core::contentSha256(loaded));
+  // The record round-trips through the instance task's JSON, hash and all.
+  const auto back = core::loadedRheologyFromJson(json(loaded));
+  EXPECT_EQ(core::contentSha256(back), loaded.sha256);
+  EXPECT_EQ(back.rows[1].fit->inertialNumberScale, 0.28);
+  // A run key selects that run's rows; the content hash tells them apart.
+  const auto fromOlder = store.loadRheology("dense", "k1");
+  ASSERT_EQ(fromOlder.rows.size(), 1u);
+  EXPECT_NE(fromOlder.sha256, loaded.sha256);
+  EXPECT_THAT(errorOf([&] { store.loadRheology("loose"); }),
+              HasSubstr("no mu(I) rheology \"loose\" (rheologies: dense)"));
 }
 
 constexpr int kPointsPerWriter = 300;

@@ -240,6 +240,91 @@ TEST(MfmStage, ReadsClosureTablesMadeUpstreamOrNamedInTheDatabaseAndCountsTheirC
   EXPECT_NE(bad.output.find("\"missing\""), std::string::npos) << bad.output;
 }
 
+namespace {
+
+// The loose bed on the tiny shear's grains (1 mm, 2500 kg/m3), packed past the plastic onset at
+// the bottom (eps_s 0.60 > 1 - eps_g* = 0.596) and sheared by its walls as it settles, with the
+// plastic viscosity of the tiny shear's mu(I) points.
+json muOfIBed(const std::string& diameter) {
+  json bed = looseBed();
+  auto& p = bed["params"];
+  p["solids"][0]["diameter"] = diameter;
+  p["solids"][0]["density"] = "2500 kg/m3";
+  p["closure"] = "ktgf";
+  p.erase("closure_table");
+  p.erase("out_of_range");
+  p["packed_solids_fraction"] = 0.62;
+  p["regions"][0]["solids_fractions"] = {0.60};
+  p["boundaries"][0]["gas_inflow"] = "1 cm/s";
+  p["plastic"] = "mu_i";
+  p["rheology"] = "t";
+  p["rheology_form"] = "table";  // two points: too few to fit
+  return bed;
+}
+
+}  // namespace
+
+TEST(MfmStage, MuOfIPlasticTakesTheRheologyOfItsGrainsAndRefusesOtherGrainsAtCheck) {
+  TempDir work;
+  // 1. Grains of another diameter than the DEM's: refused at check, before the DEM runs, through
+  //    the grains the loader hands on from the dem stage through extract and tabulate.
+  json stages = shearToTable();
+  stages["bed"] = muOfIBed("1.5 mm");
+  stages["bed"]["from"] = "table";
+  writeText(work.path() / "other.json", json{{"name", "loop"}, {"stages", stages}}.dump(2));
+  const auto other = runGrainbridge(work.path(), "check other.json");
+  EXPECT_EQ(other.exitCode, 2) << other.output;
+  EXPECT_NE(other.output.find("/stages/bed/params/rheology"), std::string::npos) << other.output;
+  EXPECT_NE(other.output.find("other grains"), std::string::npos) << other.output;
+
+  // 2. The DEM's grains: the bed runs with the table's points and says so.
+  stages["bed"] = muOfIBed("1 mm");
+  stages["bed"]["from"] = "table";
+  writeText(work.path() / "loop.json", json{{"name", "loop"}, {"stages", stages}}.dump(2));
+  const auto r = runGrainbridge(work.path(), "run loop.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const json summary =
+      json::parse(readText(onlyInstance(work.path() / "results/loop/bed") / "manifest.json")).at("summary");
+  const fs::path dbPath = work.path() / "results/loop/grainbridge.sqlite";
+  {
+    auto database = grainbridge::db::Database::openReadOnly(dbPath);
+    const auto rheology = grainbridge::db::ClosureStore(database).loadRheology("t");
+    EXPECT_EQ(summary.at("rheology_sha256"), rheology.sha256);
+    ASSERT_EQ(rheology.rows.size(), 1u);
+    const std::string points = std::to_string(rheology.rows.front().inertialNumbers.size()) + " points, I ";
+    EXPECT_TRUE(summary.at("plastic_rheology").get<std::string>().starts_with("table: " + points))
+        << summary.at("plastic_rheology");
+  }
+
+  // The plastic viscosity took part: the same bed with Schaeffer's settles otherwise.
+  json schaeffer = muOfIBed("1 mm");
+  schaeffer["params"]["plastic"] = "schaeffer";
+  schaeffer["params"].erase("rheology");
+  schaeffer["params"].erase("rheology_form");
+  writeText(work.path() / "schaeffer.json", json{{"name", "schaeffer"}, {"stages", {{"bed", schaeffer}}}}.dump(2));
+  ASSERT_EQ(runGrainbridge(work.path(), "run schaeffer.json -q").exitCode, 0);
+  const json schaefferSummary =
+      json::parse(readText(onlyInstance(work.path() / "results/schaeffer/bed") / "manifest.json")).at("summary");
+  std::printf("mean height: mu_i %.9g, schaeffer %.9g\n", summary.at("mean_height").get<double>(),
+              schaefferSummary.at("mean_height").get<double>());
+  EXPECT_NE(summary.at("mean_height"), schaefferSummary.at("mean_height"));
+
+  // 3. A workflow naming the rheology in the database (no `from`): planned from the database's
+  //    grains, so other grains are refused at check there too, and the DEM's pass.
+  for (const auto& [diameter, code] : {std::pair{"1.5 mm", 2}, std::pair{"1 mm", 0}}) {
+    writeText(work.path() / "named.json", json{{"name", "named"},
+                                               {"database", dbPath.string()},
+                                               {"stages", {{"bed", muOfIBed(diameter)}}}}
+                                              .dump(2));
+    const auto check = runGrainbridge(work.path(), "check named.json");
+    EXPECT_EQ(check.exitCode, code) << diameter << ": " << check.output;
+    if (code != 0) {
+      EXPECT_NE(check.output.find("/stages/bed/params/rheology"), std::string::npos) << check.output;
+      EXPECT_NE(check.output.find("diameter 0.001 m"), std::string::npos) << check.output;
+    }
+  }
+}
+
 TEST(MfmStage, TsujiJetSmokeRunsOnTheSolverDefaultsAndPlotsThePressureDrop) {
   // configs/tsuji-jet-tfm-smoke.json: the Chapter 7 central jet (39 m/s into a packed 22 cm bed
   // of 4 mm grains) for 0.1 s on the solver's defaults, the case MFiX 21.3.2 aborts within

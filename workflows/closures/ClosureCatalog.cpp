@@ -100,8 +100,9 @@ ClosureEntry kinetic(gc::KineticModelName model, std::string summary, std::strin
 }
 
 gc::PlasticRegime::Params plasticParams(const json& p) {
+  // Schaeffer's viscosity: the catalog evaluates the closure of the reference, no DEM rheology.
   return {p.at("critical_void_fraction"), p.at("coefficient"), p.at("exponent"), p.at("internal_friction_angle"),
-          p.at("max_viscosity")};
+          p.at("max_viscosity"), std::nullopt};
 }
 
 std::vector<ClosureEntry> makeCatalog() {
@@ -249,8 +250,7 @@ std::vector<ClosureEntry> makeCatalog() {
                    "Schaeffer 1987; MFIX calc_mu_s.f", p, in,
                    [](const json& params, const json& i) {
                      gc::PlasticRegime law;
-                     law.params = {params.at("critical_void_fraction"), params.at("coefficient"), params.at("exponent"),
-                                   params.at("internal_friction_angle"), params.at("max_viscosity")};
+                     law.params = plasticParams(params);
                      const auto r =
                          law.evaluate(i.at("void_fraction"), i.at("solid_fraction"), i.at("strain_invariant"));
                      return std::vector<ClosureOutput>{

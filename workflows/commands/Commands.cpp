@@ -45,11 +45,16 @@ config::WorkflowConfig load(const CommandOptions& opt) { return config::loadWork
 // read-only, and only when it exists: a check changes nothing).
 plan::Plan planOf(const config::WorkflowConfig& cfg, const CommandOptions& opt) {
   const fs::path path = exec::databasePath(cfg, opt.workDir);
-  return plan::makePlan(cfg, [&path](const std::string& name, const std::string& quantity) -> std::string {
+  return plan::makePlan(cfg, [&path](const std::string& name, const std::string& quantity) -> plan::TableFound {
     if (!fs::exists(path)) return {};
     auto database = db::Database::openReadOnly(path);
     try {
-      return db::ClosureStore(database).loadTable(name, quantity).sha256;
+      db::ClosureStore store(database);
+      if (quantity == core::kRheologyQuantity) {
+        const auto rheology = store.loadRheology(name);
+        return {rheology.sha256, stages::Grains{rheology.diameter, rheology.density}};
+      }
+      return {store.loadTable(name, quantity).sha256, std::nullopt};
     } catch (const Error&) {
       return {};
     }

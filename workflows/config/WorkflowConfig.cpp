@@ -191,6 +191,28 @@ std::string atSweepPoint(const std::string& where, const json& point) {
   return point.empty() ? where : where + " (sweep point " + point.dump() + ")";
 }
 
+// The grains of a stage instance's products (PlannedOutput::grains): its own plan's, or else the
+// grains every instance of every stage in its `from` agrees on, found the same way; none when a
+// stage on the way did not pass its own checks or the upstreams differ.
+std::optional<stages::Grains> plannedGrains(const WorkflowConfig& cfg, const StageConfig& sc, const json& point,
+                                            const std::set<std::string>& cleanStages, int depth = 0) {
+  if (sc.type == nullptr || cleanStages.count(sc.name) == 0 || depth > static_cast<int>(cfg.stages.size()))
+    return std::nullopt;
+  if (const auto planned = sc.type->plannedOutput(withSweepPoint(sc.params, point)); planned && planned->grains)
+    return planned->grains;
+  std::optional<stages::Grains> agreed;
+  for (const auto& name : sc.from) {
+    const StageConfig* up = cfg.findStage(name);
+    if (up == nullptr) return std::nullopt;
+    for (const auto& upPoint : sweepPoints(up->sweep)) {
+      const auto g = plannedGrains(cfg, *up, upPoint, cleanStages, depth + 1);
+      if (!g || (agreed && (agreed->diameter != g->diameter || agreed->density != g->density))) return std::nullopt;
+      agreed = g;
+    }
+  }
+  return agreed;
+}
+
 // Rules that span stages: each stage's requests against what its upstream instances will
 // produce (PlannedOutput), for every sweep point on both sides. Only stages whose own params,
 // and whose upstreams' params, passed their checks take part: a planned output is computed
@@ -211,8 +233,9 @@ void checkAgainstUpstreams(const WorkflowConfig& cfg, const std::set<std::string
       for (std::size_t k = 0; k < points.size(); ++k) {
         // A type that promises nothing hands on an empty plan: a stage that needs a product
         // refuses it by name instead of failing after the upstream ran.
-        const auto planned = up->type->plannedOutput(withSweepPoint(up->params, points[k]));
-        upstream.push_back({name, points[k], written[k], planned.value_or(stages::PlannedOutput{})});
+        auto planned = up->type->plannedOutput(withSweepPoint(up->params, points[k])).value_or(stages::PlannedOutput{});
+        if (!planned.grains) planned.grains = plannedGrains(cfg, *up, points[k], cleanStages);
+        upstream.push_back({name, points[k], written[k], std::move(planned)});
       }
     }
     if (!upstreamClean || upstream.empty()) continue;

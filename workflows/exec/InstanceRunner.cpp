@@ -81,6 +81,9 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
     std::vector<core::LoadedClosureTable> tables;
     for (const auto& record : task.closureTables) tables.push_back(core::loadedClosureTableFromJson(record));
     ctx.setClosureTables(std::move(tables));
+    std::vector<core::LoadedRheology> rheologies;
+    for (const auto& record : task.rheologies) rheologies.push_back(core::loadedRheologyFromJson(record));
+    ctx.setRheologies(std::move(rheologies));
     type->run(ctx);
     core::failPoint("stage.after_run");
     if (comm.isMpi() && comm.size() > 1) MPI_Barrier(comm.raw());

@@ -11,7 +11,7 @@ json InstanceTask::toJson() const {
   return {{"workflow", workflow}, {"stage", stage},   {"stage_type", stageType},
           {"key", key},           {"params", params}, {"sweep_point", sweepPoint}, {"sweep_written", sweepWritten}, {"database", database},
           {"upstream", ups},      {"units", units},   {"instance_dir", instanceDir},
-          {"group", group},       {"closure_tables", closureTables}};
+          {"group", group},       {"closure_tables", closureTables}, {"rheologies", rheologies}};
 }
 
 InstanceTask InstanceTask::fromJson(const json& j) {
@@ -30,6 +30,7 @@ InstanceTask InstanceTask::fromJson(const json& j) {
   t.instanceDir = j.at("instance_dir");
   t.group = j.at("group").get<std::vector<int>>();
   t.closureTables = j.value("closure_tables", json::array());
+  t.rheologies = j.value("rheologies", json::array());
   return t;
 }
 

@@ -32,6 +32,9 @@ struct InstanceTask {
   // The closure tables the stage reads, as db::ClosureStore::loadTable gives them, in JSON (rank 0
   // loads them: workers never open the database).
   nlohmann::json closureTables = nlohmann::json::array();
+  // The mu(I) rheologies it reads (ClosureTableRef of quantity mu_of_I), as
+  // db::ClosureStore::loadRheology gives them, in JSON.
+  nlohmann::json rheologies = nlohmann::json::array();
 
   [[nodiscard]] nlohmann::json toJson() const;
   static InstanceTask fromJson(const nlohmann::json& j);

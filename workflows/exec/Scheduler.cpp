@@ -60,7 +60,11 @@ RunSummary runWorkflow(const config::WorkflowConfig& config, const plan::Plan& p
       t.upstream.push_back({up.stage, up.type->name(), up.key, dirs[u]});
     }
     for (const auto& table : inst.tables) {
-      t.closureTables.push_back(db::ClosureStore(database).loadTable(table.name, table.quantity, table.runKey));
+      if (table.quantity == core::kRheologyQuantity) {
+        t.rheologies.push_back(db::ClosureStore(database).loadRheology(table.name, table.runKey));
+      } else {
+        t.closureTables.push_back(db::ClosureStore(database).loadTable(table.name, table.quantity, table.runKey));
+      }
     }
     return t;
   };

@@ -103,7 +103,13 @@ Plan makePlan(const config::WorkflowConfig& config, const TableHashLookup& looku
             if (planned && planned->closureTables == ref.name) in.runKey = plan.instances[i].key;
           }
           if (in.runKey.empty()) {
-            in.sha256 = lookup ? lookup(ref.name, ref.quantity) : std::string();
+            const TableFound found = lookup ? lookup(ref.name, ref.quantity) : TableFound{};
+            in.sha256 = found.sha256;
+            if (!in.sha256.empty() && found.grains) {
+              core::json::Diagnostics d;
+              stage.type->checkTableGrains(inst.params, "/stages/" + stage.name + "/params", ref, *found.grains, d);
+              if (!d.empty()) throw core::json::InputError(config.sourcePath.string(), std::move(d));
+            }
             if (in.sha256.empty()) {
               core::json::Diagnostics d;
               d.add("/stages/" + stage.name + "/params" + ref.pointer,

@@ -8,10 +8,12 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "workflows/config/WorkflowConfig.hpp"
+#include "workflows/stages/PlannedOutput.hpp"
 
 namespace grainbridge::workflows::plan {
 
@@ -46,12 +48,18 @@ struct Plan {
   std::map<std::string, std::vector<std::size_t>> byStage;
 };
 
-// The content hash of the newest closure table `name` of `quantity` in the workflow database,
-// or "" when it has none.
-using TableHashLookup = std::function<std::string(const std::string& name, const std::string& quantity)>;
+// The newest closure table `name` of `quantity` in the workflow database as the plan needs it:
+// its content hash ("" when the database has none) and, where the database records them, the
+// grains it was made from.
+struct TableFound {
+  std::string sha256;
+  std::optional<stages::Grains> grains;
+};
+using TableHashLookup = std::function<TableFound(const std::string& name, const std::string& quantity)>;
 
 // Throws grainbridge::Error naming the stage parameter when an instance reads a closure table
-// that neither a tabulate stage in its `from` makes nor the database (`lookup`) holds.
+// that neither a tabulate stage in its `from` makes nor the database (`lookup`) holds, or one the
+// stage refuses for its grains (StageType::checkTableGrains).
 Plan makePlan(const config::WorkflowConfig& config, const TableHashLookup& lookup = {});
 
 // The canonical text that is hashed into a stage key (exposed for `status --why` and tests).

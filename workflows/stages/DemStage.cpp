@@ -406,6 +406,17 @@ std::optional<PlannedOutput> DemStage::plannedOutput(const json& p) const {
     for (const auto& s : p.at("species")) count += s.at("count").get<std::int64_t>();
     out.particleCount = count;
   }
+  // One kind of mobile grain (frozen bases aside) is what a rheology can be made of.
+  for (const auto& s : p.at("species")) {
+    if (s.at("frozen").get<bool>()) continue;
+    const Grains g{s.at("diameter").get<double>(), s.at("density").get<double>()};
+    if (!out.grains) {
+      out.grains = g;
+    } else if (out.grains->diameter != g.diameter || out.grains->density != g.density) {
+      out.grains.reset();
+      break;
+    }
+  }
   return out;
 }
 

@@ -1,11 +1,15 @@
 #include "workflows/stages/MfmSetup.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
 
+#include "core/Error.hpp"
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
+#include "engines/closures/InertialRheology.hpp"
 #include "engines/closures/SyamlalOBrien.hpp"
 #include "engines/closures/TabulatedClosure.hpp"
 #include "engines/fluid/BedMeasures.hpp"
@@ -35,7 +39,82 @@ std::string tableQuantity(const std::string& q) {
   return q == "pressure" ? "p_theta" : q == "shear_viscosity" ? "eta_theta" : "j_theta";
 }
 
-MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>* closureTables) {
+std::string rheologyGrainsProblem(const json& p, const Grains& grains) {
+  const json& solids = p.at("solids").front();
+  const double diameter = solids.at("diameter"), density = solids.at("density");
+  auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
+  if (same(diameter, grains.diameter) && same(density, grains.density)) return {};
+  return "the rheology \"" + p.value("rheology", std::string()) + "\" was measured on grains of diameter " +
+         core::humanNumber(grains.diameter) + " m and density " + core::humanNumber(grains.density) +
+         " kg/m3, but solids phase \"" + solids.at("name").get<std::string>() + "\" has " +
+         core::humanNumber(diameter) + " m and " + core::humanNumber(density) +
+         " kg/m3: its inertial numbers would be of other grains";
+}
+
+namespace {
+
+// The plastic viscosity (PlasticRegime.hpp): Schaeffer's, or mu(I) from the DEM rheology named
+// in `rheology`, at the solids phase's restitution, as its fit or its points.
+void setPlasticViscosity(const json& p, const std::vector<core::LoadedRheology>* rheologies, MfmSetup& s,
+                         const std::function<void(std::string, std::string)>& problem) {
+  if (p.at("plastic").get<std::string>() != "mu_i") {
+    if (p.contains("rheology")) problem("/rheology", "is read by plastic \"mu_i\" only");
+    return;
+  }
+  const auto& model = s.engine.model;
+  if (model.solids.size() != 1) {
+    problem("/plastic", "mu_i takes the mu(I) of one kind of grain: it runs one solids phase, not " +
+                            std::to_string(model.solids.size()));
+  }
+  if (!p.contains("rheology")) {
+    problem("/rheology", "plastic \"mu_i\" needs the name of the mu(I) rheology (a tabulate stage's table)");
+  }
+  if (rheologies == nullptr || !s.problems.empty()) return;
+  const std::string name = p.at("rheology");
+  const auto loaded = std::find_if(rheologies->begin(), rheologies->end(),
+                                   [&](const core::LoadedRheology& r) { return r.name == name; });
+  if (loaded == rheologies->end()) {
+    problem("/rheology", "the mu(I) rheology \"" + name + "\" was not loaded");
+    return;
+  }
+  if (const auto why = rheologyGrainsProblem(p, {loaded->diameter, loaded->density}); !why.empty()) {
+    problem("/rheology", why);
+    return;
+  }
+  const mfm::SolidsPhase& phase = model.solids.front();
+  const core::LoadedRheology::Row* row = loaded->atRestitution(phase.restitution);
+  if (row == nullptr) {
+    std::string known;
+    for (const auto& r : loaded->rows)
+      known += (known.empty() ? "" : ", ") + (r.restitution ? core::humanNumber(*r.restitution) : std::string("none"));
+    problem("/rheology", "the mu(I) rheology \"" + name + "\" has no row at the solids' restitution " +
+                             core::humanNumber(phase.restitution) + " (it has: " + known + ")");
+    return;
+  }
+  const closures::InertialRheology::Grains grains{loaded->diameter, loaded->density};
+  try {
+    if (p.at("rheology_form").get<std::string>() == "fit") {
+      if (!row->fit) {
+        problem("/rheology_form", "the mu(I) rheology \"" + name + "\" at restitution " +
+                                      core::humanNumber(phase.restitution) +
+                                      " has no fit (its points did not determine one): use rheology_form \"table\"");
+        return;
+      }
+      s.engine.model.plastic.params.rheology = closures::InertialRheology::fitted(
+          grains, {row->fit->staticRatio, row->fit->limitRatio, row->fit->inertialNumberScale});
+    } else {
+      s.engine.model.plastic.params.rheology =
+          closures::InertialRheology::tabulated(grains, row->inertialNumbers, row->stressRatios);
+    }
+  } catch (const Error& e) {
+    problem("/rheology", "the mu(I) rheology \"" + name + "\": " + e.what());
+  }
+}
+
+}  // namespace
+
+MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>* closureTables,
+                      const std::vector<core::LoadedRheology>* rheologies) {
   MfmSetup s;
   auto problem = [&s](std::string where, std::string what) {
     s.problems.emplace_back(std::move(where), std::move(what));
@@ -140,6 +219,7 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   model.plastic.params.criticalVoidFraction = p.at("critical_void_fraction").get<double>();
   model.plastic.params.internalFrictionAngle = p.at("friction_angle").get<double>();
   if (const auto why = model.plastic.params.problem(); !why.empty()) problem("/friction_angle", why);
+  setPlasticViscosity(p, rheologies, s, problem);
   const double packed = p.contains("packed_solids_fraction") ? p.at("packed_solids_fraction").get<double>()
                                                              : 1.0 - model.plastic.params.criticalVoidFraction;
   if (johnsonJackson) model.wall = closures::JohnsonJackson::Params{p.at("specularity").get<double>(), packed, 1.0, {}};

@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "core/LoadedClosureTable.hpp"
+#include "core/LoadedRheology.hpp"
 #include "engines/mfm/InitialRegions.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/stages/FluidSchema.hpp"
+#include "workflows/stages/PlannedOutput.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -35,10 +37,16 @@ struct MfmSetup {
 };
 
 // Assumes individually valid parameters (the schema's checks passed). `closureTables` are the
-// tables a `table` closure reads (StageContext::closureTables); without them (a config check)
-// the closure is the kinetic theory and only the parameters are checked.
+// tables a `table` closure reads (StageContext::closureTables), `rheologies` the mu(I) rheology
+// `plastic` mu_i reads (StageContext::rheologies); without them (a config check) the closure is
+// the kinetic theory, the plastic viscosity Schaeffer's, and only the parameters are checked.
 MfmSetup makeMfmSetup(const nlohmann::json& params,
-                      const std::vector<core::LoadedClosureTable>* closureTables = nullptr);
+                      const std::vector<core::LoadedClosureTable>* closureTables = nullptr,
+                      const std::vector<core::LoadedRheology>* rheologies = nullptr);
+
+// Why `plastic` mu_i cannot take a rheology measured on `grains` (another diameter or density
+// than the solids phase's: I would be formed with the wrong grains), or "" when it can.
+[[nodiscard]] std::string rheologyGrainsProblem(const nlohmann::json& params, const Grains& grains);
 
 // The quantity of the table each of table_quantities' names takes: p_theta, eta_theta, j_theta.
 [[nodiscard]] std::string tableQuantity(const std::string& closureQuantity);

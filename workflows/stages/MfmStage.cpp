@@ -180,6 +180,20 @@ MfmStage::MfmStage() {
                     "wall dissipation only (granular_energy pde)"))
       .add(catalog::closureParameter("schaeffer", "critical_void_fraction"))
       .add(catalog::closureParameter("schaeffer", "internal_friction_angle").renamed("friction_angle"))
+      .add(ParamSpec::string("plastic")
+               .defaultValue("schaeffer")
+               .options({"schaeffer", "mu_i"})
+               .doc("frictional viscosity below critical_void_fraction: Schaeffer's P* sin(friction_angle) / "
+                    "(2 sqrt(I2D)), or mu(I) P_s / (2 sqrt(I2D)) with mu(I) from a DEM rheology (`rheology`; "
+                    "one solids phase)"))
+      .add(ParamSpec::string("rheology")
+               .doc("plastic mu_i: the mu(I) rheology, a tabulate stage's `table` (in `from` or in the database), "
+                    "at the solids' restitution and of their diameter and density"))
+      .add(ParamSpec::string("rheology_form")
+               .defaultValue("fit")
+               .options({"fit", "table"})
+               .doc("plastic mu_i: the rheology's fit mu_s + (mu_2 - mu_s) / (1 + I_0 / I), or its points "
+                    "(linear in I, held at the ends)"))
       .add(ParamSpec::number("packed_solids_fraction")
                .min(0.0, false)
                .max(1.0, false)
@@ -249,30 +263,49 @@ void MfmStage::checkParams(const json& p, const std::string& ptr, core::json::Di
 
 std::vector<ClosureTableRef> MfmStage::closureTables(const json& p) const {
   std::vector<ClosureTableRef> refs;
-  if (p.at("closure").get<std::string>() != "table" || !p.contains("closure_table")) return refs;
-  for (const auto& q : p.at("table_quantities")) {
-    refs.push_back({p.at("closure_table").get<std::string>(), tableQuantity(q.get<std::string>()), "/closure_table"});
+  if (p.at("closure").get<std::string>() == "table" && p.contains("closure_table")) {
+    for (const auto& q : p.at("table_quantities")) {
+      refs.push_back({p.at("closure_table").get<std::string>(), tableQuantity(q.get<std::string>()), "/closure_table"});
+    }
   }
+  if (p.at("plastic").get<std::string>() == "mu_i" && p.contains("rheology"))
+    refs.push_back({p.at("rheology").get<std::string>(), core::kRheologyQuantity, "/rheology"});
   return refs;
+}
+
+void MfmStage::checkTableGrains(const json& p, const std::string& ptr, const ClosureTableRef& ref,
+                                const Grains& grains, core::json::Diagnostics& d) const {
+  if (ref.quantity != core::kRheologyQuantity) return;
+  if (const auto why = rheologyGrainsProblem(p, grains); !why.empty()) d.add(ptr + ref.pointer, why);
 }
 
 void MfmStage::checkAgainstUpstream(const json& p, const std::string& ptr, const std::vector<UpstreamPlan>& upstream,
                                     core::json::Diagnostics& d) const {
   const bool table = p.at("closure").get<std::string>() == "table";
+  const bool muOfI = p.at("plastic").get<std::string>() == "mu_i";
   for (const auto& up : upstream) {
     if (!up.output.closureTables) {
       d.add(ptr, "`from` " + up.stage + ": an mfm stage takes only tabulate stages (whose tables it reads)");
-    } else if (!table || p.value("closure_table", "") != *up.output.closureTables) {
-      d.add(ptr + "/closure_table", "`from` " + up.stage + " makes the tables \"" + *up.output.closureTables +
+      continue;
+    }
+    const std::string& made = *up.output.closureTables;
+    const bool readsTables = table && p.value("closure_table", "") == made;
+    const bool readsRheology = muOfI && p.value("rheology", "") == made;
+    if (!readsTables && !readsRheology) {
+      d.add(ptr + "/closure_table", "`from` " + up.stage + " makes the tables \"" + made +
                                         "\", which this stage does not read (closure \"table\" with that "
-                                        "closure_table)");
+                                        "closure_table, or plastic \"mu_i\" with that rheology)");
+    }
+    // The DEM's grains, handed on through extract and tabulate by the config loader.
+    if (readsRheology && up.output.grains) {
+      checkTableGrains(p, ptr, {made, core::kRheologyQuantity, "/rheology"}, *up.output.grains, d);
     }
   }
 }
 
 void MfmStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
-  const MfmSetup setup = makeMfmSetup(p, &ctx.closureTables());
+  const MfmSetup setup = makeMfmSetup(p, &ctx.closureTables(), &ctx.rheologies());
   if (!setup.problems.empty()) {
     throw Error("/stages/" + ctx.stage() + "/params" + setup.problems.front().first + ": " +
                 setup.problems.front().second);
@@ -367,6 +400,11 @@ void MfmStage::run(StageContext& ctx) const {
     summary["table_coverage_solids"] =
         stats.tableSolidsSteps > 0.0 ? stats.coveredSolidsSteps / stats.tableSolidsSteps : 0.0;
     for (const auto& loaded : ctx.closureTables()) summary["table_sha256_" + loaded.quantity()] = loaded.sha256;
+  }
+  // Which mu(I) the plastic regime took (plastic mu_i).
+  if (const auto& rheology = setup.engine.model.plastic.params.rheology) {
+    summary["plastic_rheology"] = p.at("rheology_form").get<std::string>() + ": " + rheology->describe();
+    for (const auto& loaded : ctx.rheologies()) summary["rheology_sha256"] = loaded.sha256;
   }
   // The relative change of the solids inventory over the run, per phase and of all solids.
   double totalNow = 0.0, totalInitial = 0.0;

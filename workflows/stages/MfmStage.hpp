@@ -45,6 +45,9 @@ class MfmStage final : public StageType {
                             core::json::Diagnostics& diagnostics) const override;
   // closure "table": closure_table's p_theta, eta_theta and j_theta, as table_quantities names.
   [[nodiscard]] std::vector<ClosureTableRef> closureTables(const nlohmann::json& resolved) const override;
+  // plastic mu_i: a rheology of other grains than the solids phase's is refused at /rheology.
+  void checkTableGrains(const nlohmann::json& resolved, const std::string& pointer, const ClosureTableRef& ref,
+                        const Grains& grains, core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
   // Field frames with their materials, the mean fields (with an averaging window), and the
   // summary's pressure drops (one per tap, the first also as pressure_drop), heights and solids

@@ -13,6 +13,13 @@
 
 namespace grainbridge::workflows::stages {
 
+// The grains a product is of, where one kind of mobile grain made it: what makes an inertial
+// number, so that a continuum stage can refuse a rheology measured on other grains.
+struct Grains {
+  double diameter = 0.0;  // m
+  double density = 0.0;   // kg/m^3
+};
+
 struct PlannedOutput {
   bool particleFrames = false;                 // writes frames/particles_*.h5 (kind particle_frame)
   // Writes field frames (frames/fields_*.h5, kind field_frame) stamped with their materials:
@@ -30,6 +37,10 @@ struct PlannedOutput {
   std::vector<std::string> summaryKeys;
   std::vector<std::string> seriesColumns;      // columns of series.csv that downstream stages read
   std::optional<std::string> closureTables;    // the name of the closure tables it makes (tabulate)
+  // The one kind of mobile grain of a particle run. Stages that do not say (extract, tabulate)
+  // are given the grains all their upstream instances agree on by the config loader, so the
+  // grains reach the stages downstream of the DEM through every stage in between.
+  std::optional<Grains> grains;
 };
 
 // One upstream instance as the config loader hands it to a downstream stage's check.

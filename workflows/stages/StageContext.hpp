@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/LoadedClosureTable.hpp"
+#include "core/LoadedRheology.hpp"
 #include "core/parallel/Communicator.hpp"
 #include "core/units/UnitSystem.hpp"
 #include "workflows/contract/UpstreamInstance.hpp"
@@ -76,6 +77,9 @@ class StageContext {
   // through db::ClosureStore::loadTable, once per run.
   void setClosureTables(std::vector<core::LoadedClosureTable> tables) { closureTables_ = std::move(tables); }
   [[nodiscard]] const std::vector<core::LoadedClosureTable>& closureTables() const { return closureTables_; }
+  // The mu(I) rheologies it declared (closureTables' refs of quantity mu_of_I), loaded the same way.
+  void setRheologies(std::vector<core::LoadedRheology> rheologies) { rheologies_ = std::move(rheologies); }
+  [[nodiscard]] const std::vector<core::LoadedRheology>& rheologies() const { return rheologies_; }
   // The workflow database's path, for a report to name (a stage never opens it).
   void setDatabasePath(std::string path) { databasePath_ = std::move(path); }
   [[nodiscard]] const std::string& databasePath() const { return databasePath_; }
@@ -108,6 +112,7 @@ class StageContext {
   report::Findings findings_;
   std::string databasePath_;
   std::vector<core::LoadedClosureTable> closureTables_;
+  std::vector<core::LoadedRheology> rheologies_;
 };
 
 }  // namespace grainbridge::workflows::stages

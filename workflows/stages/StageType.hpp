@@ -24,7 +24,7 @@ using contract::ResultColumn;
 // (below the stage's /params, for messages).
 struct ClosureTableRef {
   std::string name;
-  std::string quantity;  // p_theta, eta_theta, j_theta
+  std::string quantity;  // p_theta, eta_theta, j_theta; mu_of_I for the rheology rows of that name
   std::string pointer;
 };
 
@@ -63,6 +63,12 @@ class StageType {
   [[nodiscard]] virtual std::vector<ClosureTableRef> closureTables(const nlohmann::json& /*resolved*/) const {
     return {};
   }
+  // Checks a closure input this instance reads (closureTables) against the grains it was made
+  // from, as the database records them or the plan of the tabulate stage in `from` that makes it
+  // says: called at config load, so a rheology of other grains is refused before any work.
+  virtual void checkTableGrains(const nlohmann::json& /*resolved*/, const std::string& /*pointer*/,
+                                const ClosureTableRef& /*ref*/, const Grains& /*grains*/,
+                                core::json::Diagnostics& /*diagnostics*/) const {}
   // The summary values a report shows as columns and plots, in order; every summary value is in
   // the stage's CSV regardless. Empty: the report shows the summary values that vary (no plots,
   // as their units are not declared).

@@ -12,6 +12,7 @@ grainbridge_add_test(test_closures
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/EffectiveRestitutionTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/SolidsSolidsDragTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/PlasticRegimeTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/InertialRheologyTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/JohnsonJacksonTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/GranularEnergyGasTermsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/ClosureModelTest.cpp
