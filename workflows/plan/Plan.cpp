@@ -62,7 +62,7 @@ std::vector<std::vector<std::size_t>> upstreamCombinations(const config::StageCo
 
 }  // namespace
 
-Plan makePlan(const config::WorkflowConfig& config, const TableHashLookup& lookup) {
+Plan makePlan(const config::WorkflowConfig& config, const TableLookup& lookup) {
   Plan plan;
   plan.workflow = config.name;
   for (const auto& stage : config.stages) {

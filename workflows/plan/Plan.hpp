@@ -55,12 +55,12 @@ struct TableFound {
   std::string sha256;
   std::optional<stages::Grains> grains;
 };
-using TableHashLookup = std::function<TableFound(const std::string& name, const std::string& quantity)>;
+using TableLookup = std::function<TableFound(const std::string& name, const std::string& quantity)>;
 
 // Throws grainbridge::Error naming the stage parameter when an instance reads a closure table
 // that neither a tabulate stage in its `from` makes nor the database (`lookup`) holds, or one the
 // stage refuses for its grains (StageType::checkTableGrains).
-Plan makePlan(const config::WorkflowConfig& config, const TableHashLookup& lookup = {});
+Plan makePlan(const config::WorkflowConfig& config, const TableLookup& lookup = {});
 
 // The canonical text that is hashed into a stage key (exposed for `status --why` and tests).
 // `tables` ({"name/quantity": sha256 or "upstream"}) enters only when not empty, so stages that
