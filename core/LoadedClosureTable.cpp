@@ -30,6 +30,7 @@ void to_json(json& j, const LoadedClosureTable& t) {
   j["run_key"] = t.runKey;
   j["sha256"] = t.sha256;
   j["filters"] = {{"friction", t.friction}};
+  j["uncertainties"] = t.uncertainties;
 }
 
 LoadedClosureTable loadedClosureTableFromJson(const json& j) {
@@ -42,7 +43,8 @@ LoadedClosureTable loadedClosureTableFromJson(const json& j) {
                                            j.at("solid_fractions").get<std::vector<double>>(),
                                            j.at("second_variable").get<std::string>(),
                                            j.at("seconds").get<std::vector<double>>(),
-                                           j.at("values").get<std::vector<double>>())};
+                                           j.at("values").get<std::vector<double>>()),
+                              j.value("uncertainties", std::vector<double>{})};
   } catch (const json::exception& e) {
     throw Error(std::string("closure table record: ") + e.what());
   }

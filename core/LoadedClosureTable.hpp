@@ -6,6 +6,7 @@
 // once per run, so the engine never rebuilds a table from loose fields.
 #include <nlohmann/json_fwd.hpp>
 #include <string>
+#include <vector>
 
 #include "core/ClosureTable.hpp"
 
@@ -18,6 +19,10 @@ struct LoadedClosureTable {
   // The grains' friction the DEM runs behind the table had (tabulate's filter); 0 for frictionless.
   double friction = 0.0;
   ClosureTable table;
+  // The standard error of each node's value (the closure point's block-averaging error), in the
+  // layout of table.values(); empty when the database row has none. Not in sha256: a nominal
+  // run does not depend on it.
+  std::vector<double> uncertainties;
 
   [[nodiscard]] const std::string& quantity() const { return table.quantity(); }
 };

@@ -171,7 +171,8 @@ json ClosureStore::query(const ClosureQuery& q) {
 core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const std::string& quantity,
                                                 const std::string& runKey) {
   auto st = db_.prepare(
-      "SELECT t.solid_fractions_json, t.second_variable, t.seconds_json, t.values_json, t.filters_json, r.key "
+      "SELECT t.solid_fractions_json, t.second_variable, t.seconds_json, t.values_json, t.filters_json, r.key, "
+      "t.uncertainties_json "
       "FROM closure_tables t JOIN runs r ON r.id = t.run_id "
       "WHERE t.name = ?1 AND t.quantity = ?2 AND (?3 = '' OR r.key = ?3) ORDER BY t.run_id DESC, t.id DESC LIMIT 1");
   st.bind(1, name).bind(2, quantity).bind(3, runKey);
@@ -188,7 +189,8 @@ core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const 
                            json::parse(st.columnText(3)).get<std::vector<double>>());
   std::string sha256 = core::contentSha256(table);
   return core::LoadedClosureTable{name, st.columnText(5), std::move(sha256),
-                                  json::parse(st.columnText(4)).value("friction", 0.0), std::move(table)};
+                                  json::parse(st.columnText(4)).value("friction", 0.0), std::move(table),
+                                  json::parse(st.columnText(6)).get<std::vector<double>>()};
 }
 
 core::LoadedRheology ClosureStore::loadRheology(const std::string& name, const std::string& runKey) {

@@ -117,11 +117,13 @@ TEST(LoadedClosureTable, RoundTripsThroughJsonAndRefusesAMalformedRecord) {
   const grainbridge::core::LoadedClosureTable loaded{
       "shear", "key1", "", 0.3,
       grainbridge::core::ClosureTable("p_theta", {0.1, 0.2, 0.3}, "restitution", {0.7, 0.9},
-                                      {1.0, 2.0, 3.0, 1.5, 2.5, 3.5})};
+                                      {1.0, 2.0, 3.0, 1.5, 2.5, 3.5}),
+      {0.1, 0.2, 0.3, 0.15, 0.25, 0.35}};
   const nlohmann::json j = loaded;
   const auto back = grainbridge::core::loadedClosureTableFromJson(j);
   EXPECT_EQ(back.name, "shear");
   EXPECT_EQ(back.runKey, "key1");
+  EXPECT_EQ(back.uncertainties, loaded.uncertainties);
   EXPECT_DOUBLE_EQ(back.friction, 0.3);
   EXPECT_EQ(back.table.values(), loaded.table.values());
   EXPECT_EQ(back.table.seconds(), loaded.table.seconds());

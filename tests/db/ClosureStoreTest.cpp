@@ -143,6 +143,9 @@ TEST(ClosureStore, AClosureTableLoadsIntoCoreClosureTableNewestFirst) {
   EXPECT_EQ(loaded.name, "shear");
   EXPECT_EQ(loaded.runKey, "k2");
   EXPECT_EQ(loaded.sha256, core::contentSha256(loaded.table));
+  // The nodes' standard errors come along (issue 31), and through the instance task's JSON.
+  EXPECT_EQ(loaded.uncertainties, std::vector<double>(6, 0.1));
+  EXPECT_EQ(core::loadedClosureTableFromJson(json(loaded)).uncertainties, loaded.uncertainties);
   // A run key selects that run's table (one made upstream in the same workflow), whatever is newer.
   const auto fromOlder = store.loadTable("shear", "p_theta", "k1");
   EXPECT_EQ(fromOlder.runKey, "k1");
