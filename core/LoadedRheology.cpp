@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.hpp"
+#include "core/SameValue.hpp"
 #include "core/Sha256.hpp"
 
 namespace grainbridge::core {
@@ -33,7 +34,7 @@ json contentJson(const LoadedRheology& r) {
 
 const LoadedRheology::Row* LoadedRheology::atRestitution(double e) const {
   for (const auto& row : rows) {
-    if (row.restitution && std::abs(*row.restitution - e) <= 1e-9 * std::max(1.0, std::abs(e))) return &row;
+    if (row.restitution && sameValue(*row.restitution, e)) return &row;
   }
   return nullptr;
 }

@@ -29,7 +29,7 @@ struct LoadedRheology {
   double diameter = 0.0, density = 0.0;  // the grains [m], [kg/m^3]
   std::vector<Row> rows;
 
-  // The row of restitution e (to 1e-9), or nullptr.
+  // The row of restitution e (core::sameValue), or nullptr.
   [[nodiscard]] const Row* atRestitution(double e) const;
 };
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/Error.hpp"
+#include "core/SameValue.hpp"
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/closures/InertialRheology.hpp"
@@ -42,8 +43,7 @@ std::string tableQuantity(const std::string& q) {
 std::string rheologyGrainsProblem(const json& p, const Grains& grains) {
   const json& solids = p.at("solids").front();
   const double diameter = solids.at("diameter"), density = solids.at("density");
-  auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
-  if (same(diameter, grains.diameter) && same(density, grains.density)) return {};
+  if (core::sameValue(diameter, grains.diameter) && core::sameValue(density, grains.density)) return {};
   return "the rheology \"" + p.value("rheology", std::string()) + "\" was measured on grains of diameter " +
          core::humanNumber(grains.diameter) + " m and density " + core::humanNumber(grains.density) +
          " kg/m3, but solids phase \"" + solids.at("name").get<std::string>() + "\" has " +

@@ -10,6 +10,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/text/NumberText.hpp"
+#include "core/SameValue.hpp"
 #include "extract/statistics/InertialRheologyFit.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -19,7 +20,6 @@ namespace st = extract::statistics;
 
 namespace {
 
-bool sameValue(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
 
 // The restitution a point belongs to; points without one (a particle gas) form one group.
 std::optional<double> restitutionOf(const json& point) {
@@ -73,7 +73,7 @@ TabulatedRheology tabulateRheology(const std::vector<json>& points, const std::s
   // A rheology is of one kind of grain: I is made with the grains' diameter and density.
   const double diameter = sheared.front()->at("diameter"), density = sheared.front()->at("density");
   for (const auto* pt : sheared) {
-    if (!sameValue(pt->at("diameter"), diameter) || !sameValue(pt->at("density"), density)) {
+    if (!core::sameValue(pt->at("diameter"), diameter) || !core::sameValue(pt->at("density"), density)) {
       throw Error("tabulate: the closure points are of different grains (diameter " + core::humanNumber(diameter) +
                   " and " + core::humanNumber(pt->at("diameter").get<double>()) + " m, density " +
                   core::humanNumber(density) + " and " + core::humanNumber(pt->at("density").get<double>()) +
@@ -86,7 +86,7 @@ TabulatedRheology tabulateRheology(const std::vector<json>& points, const std::s
   for (const auto* pt : sheared) {
     const auto e = restitutionOf(*pt);
     auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
-      return g.first.has_value() == e.has_value() && (!e || sameValue(*g.first, *e));
+      return g.first.has_value() == e.has_value() && (!e || core::sameValue(*g.first, *e));
     });
     if (it == groups.end()) {
       groups.push_back({e, {}});
