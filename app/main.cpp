@@ -79,10 +79,15 @@ int main(int argc, char** argv) {
   auto* dbIntegrity = dbCmd->add_subcommand("integrity", "run SQLite's integrity check");
   addDbSource(dbIntegrity);
   auto* dbQuery = dbCmd->add_subcommand(
-      "query", "closure points (or force / structure statistics) filtered by family, state ranges and run");
+      "query", "closure points (or force / structure statistics, rheology rows, closure table nodes with their "
+               "standard errors) filtered by family, state ranges and run");
   addDbSource(dbQuery);
-  dbQuery->add_option("--table", opt.table, "closure_points | force_statistics | structure_statistics | rheology")
-      ->check(CLI::IsMember({"closure_points", "force_statistics", "structure_statistics", "rheology"}));
+  dbQuery
+      ->add_option("--table", opt.table,
+                   "closure_points | force_statistics | structure_statistics | rheology | closure_tables (one row "
+                   "per node: value and uncertainty)")
+      ->check(CLI::IsMember({"closure_points", "force_statistics", "structure_statistics", "rheology",
+                             "closure_tables"}));
   dbQuery->add_option("--family", opt.family, "only this family (simple_shear, fluidized_cell, bnp, ...)");
   dbQuery->add_option("--where", opt.where, "COLUMN=LO:HI, COLUMN=VALUE, COLUMN=LO: or COLUMN=:HI (repeatable)");
   dbQuery->add_option("--run", opt.runId, "only rows of this run");

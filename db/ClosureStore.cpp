@@ -168,6 +168,58 @@ json ClosureStore::query(const ClosureQuery& q) {
   return out;
 }
 
+const std::vector<std::string>& ClosureStore::tableNodeColumns() {
+  static const std::vector<std::string> columns = {
+      "table_id", "run_id", "name",        "quantity", "second_variable", "solid_fraction", "second",
+      "value",    "uncertainty", "workflow", "stage",    "run_key"};
+  return columns;
+}
+
+json ClosureStore::tableNodes(const ClosureQuery& query) {
+  auto st = db_.prepare(
+      "SELECT t.id, t.run_id, t.name, t.quantity, t.second_variable, t.solid_fractions_json, t.seconds_json, "
+      "t.values_json, t.uncertainties_json, r.workflow, r.stage, r.key FROM closure_tables t "
+      "JOIN runs r ON r.id = t.run_id WHERE (?1 = '' OR r.workflow = ?1) AND (?2 = 0 OR t.run_id = ?2) "
+      "ORDER BY t.id");
+  st.bind(1, query.workflow).bind(2, query.runId.value_or(0));
+  const auto& known = tableNodeColumns();
+  for (const auto& range : query.ranges) {
+    if (std::find(known.begin(), known.end(), range.column) == known.end()) {
+      throw Error("closure database: no column \"" + range.column + "\" in closure table nodes (columns: " +
+                  joined(known) + ")");
+    }
+  }
+  json out = json::array();
+  while (st.step()) {
+    const auto fractions = json::parse(st.columnText(5)).get<std::vector<double>>();
+    const auto seconds = json::parse(st.columnText(6)).get<std::vector<double>>();
+    const auto values = json::parse(st.columnText(7)).get<std::vector<double>>();
+    const auto errors = json::parse(st.columnText(8)).get<std::vector<double>>();
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      json row = {{"table_id", st.columnInt64(0)},
+                  {"run_id", st.columnInt64(1)},
+                  {"name", st.columnText(2)},
+                  {"quantity", st.columnText(3)},
+                  {"second_variable", st.columnText(4)},
+                  {"solid_fraction", fractions.at(k % fractions.size())},
+                  {"second", seconds.empty() ? json() : json(seconds.at(k / fractions.size()))},
+                  {"value", values[k]},
+                  {"uncertainty", k < errors.size() ? json(errors[k]) : json()},
+                  {"workflow", st.columnText(9)},
+                  {"stage", st.columnText(10)},
+                  {"run_key", st.columnText(11)}};
+      const bool inside = std::all_of(query.ranges.begin(), query.ranges.end(), [&](const ColumnRange& r) {
+        const json& v = row.at(r.column);
+        if (!v.is_number()) return false;
+        const double x = v.get<double>();
+        return (!r.lo || x >= *r.lo) && (!r.hi || x <= *r.hi);
+      });
+      if (inside) out.push_back(std::move(row));
+    }
+  }
+  return out;
+}
+
 core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const std::string& quantity,
                                                 const std::string& runKey) {
   auto st = db_.prepare(

@@ -47,6 +47,12 @@ class ClosureStore {
   // Matching rows as objects (column -> value) plus workflow, stage and run key, by id.
   // Throws Error naming an unknown column in a range.
   nlohmann::json query(const ClosureQuery& query);
+  // The closure tables node by node, one row per node: table_id, run_id, name, quantity,
+  // second_variable, solid_fraction, second (null for a 1-D table), value, uncertainty (its
+  // standard error; null where the table has none), workflow, stage, run_key. `query`'s workflow,
+  // run and ranges (over the numeric columns) filter them; its family does not apply.
+  nlohmann::json tableNodes(const ClosureQuery& query);
+  static const std::vector<std::string>& tableNodeColumns();
 
   // Table `name` of `quantity` as a continuum run receives it (core::LoadedClosureTable: the
   // table, the run that made it, its content sha256, which is what enters a consuming stage's

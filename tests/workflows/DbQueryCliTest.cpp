@@ -98,3 +98,44 @@ TEST(DbQueryCli, ExportWritesEveryTableAsJsonOrCsv) {
   EXPECT_THAT(csv, HasSubstr("id,run_id,family,species,solid_fraction"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
 }
+
+// Issue 31: a closure table's nodes with their standard errors, one row per node, filtered by
+// state range like the points; a table without errors shows none.
+TEST(DbQueryCli, ClosureTablesShowEachNodeWithItsStandardError) {
+  TempDir dir;
+  const auto path = closureDatabase(dir);
+  {
+    auto database = db::Database::open(path);
+    database.transaction([&](db::Database& d) {
+      db::ProvenanceStore provenance(d);
+      const auto invocation = provenance.insertInvocation(db::test::sampleInvocation());
+      const auto run = provenance.insertRun(db::test::sampleRun(invocation, "key-table"));
+      const json withErrors = {{"name", "shear"},
+                               {"quantity", "p_theta"},
+                               {"second_variable", "restitution"},
+                               {"solid_fractions", {0.1, 0.2}},
+                               {"seconds", {0.7, 0.9}},
+                               {"values", {1.0, 2.0, 1.5, 2.5}},
+                               {"uncertainties", {0.1, 0.2, 0.15, 0.25}}};
+      json without = withErrors;
+      without["quantity"] = "j_theta";
+      without["uncertainties"] = json::array();
+      db::ClosureStore(d).insertRecords(run, {{"closure_tables", {withErrors, without}}});
+    });
+  }
+  const auto r = runGrainbridge(dir.path(), "db query --db '" + path.string() +
+                                                "' --table closure_tables --where solid_fraction=0.2 --columns "
+                                                "name,quantity,solid_fraction,second,value,uncertainty,run_key "
+                                                "--format csv");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output,
+            "name,quantity,solid_fraction,second,value,uncertainty,run_key\n"
+            "shear,p_theta,0.2,0.7,2,0.2,key-table\n"
+            "shear,p_theta,0.2,0.9,2.5,0.25,key-table\n"
+            "shear,j_theta,0.2,0.7,2,,key-table\n"
+            "shear,j_theta,0.2,0.9,2.5,,key-table\n");
+  const auto bad = runGrainbridge(dir.path(), "db query --db '" + path.string() +
+                                                  "' --table closure_tables --where pressure=1:2");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_THAT(bad.output, HasSubstr("no column \"pressure\" in closure table nodes"));
+}

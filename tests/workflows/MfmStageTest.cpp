@@ -8,16 +8,19 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
 
 #include "core/io/FieldFrameReader.hpp"
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
+#include "db/ProvenanceStore.hpp"
+#include "tests/db/TestSupport.hpp"
 #include "tests/support/Cli.hpp"
-#include "tests/support/WorkflowResults.hpp"
 #include "tests/support/CsvLine.hpp"
 #include "tests/support/TinyShear.hpp"
+#include "tests/support/WorkflowResults.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge::testing;
@@ -323,6 +326,159 @@ TEST(MfmStage, MuOfIPlasticTakesTheRheologyOfItsGrainsAndRefusesOtherGrainsAtChe
       EXPECT_NE(check.output.find("diameter 0.001 m"), std::string::npos) << check.output;
     }
   }
+}
+
+namespace {
+
+// Copies of table "t"'s three quantities into the database as table `name`, with each node's
+// standard error set to `error` (empty: none recorded).
+void copyTable(const fs::path& dbPath, const std::string& name, const std::optional<double>& error) {
+  auto database = grainbridge::db::Database::open(dbPath);
+  database.transaction([&](grainbridge::db::Database& d) {
+    grainbridge::db::ProvenanceStore provenance(d);
+    const auto invocation = provenance.insertInvocation(grainbridge::db::test::sampleInvocation("copies"));
+    const auto run = provenance.insertRun(grainbridge::db::test::sampleRun(invocation, "copy-" + name, "copies"));
+    grainbridge::db::ClosureStore store(d);
+    json rows = json::array();
+    for (const char* q : {"p_theta", "eta_theta", "j_theta"}) {
+      const auto t = store.loadTable("t", q);
+      json errors = json::array();
+      if (error) errors = std::vector<double>(t.table.values().size(), *error);
+      rows.push_back({{"name", name},
+                      {"quantity", q},
+                      {"second_variable", ""},
+                      {"solid_fractions", t.table.solidFractions()},
+                      {"seconds", json::array()},
+                      {"values", t.table.values()},
+                      {"uncertainties", errors},
+                      {"filters", {{"friction", t.friction}}}});
+    }
+    store.insertRecords(run, {{"closure_tables", rows}});
+  });
+}
+
+json sampledBed(const std::string& table, int samples, int perQuantity, int seed) {
+  json bed = looseBed();
+  bed["params"]["closure_table"] = table;
+  bed["params"]["closure_samples"] = samples;
+  bed["params"]["closure_samples_per_quantity"] = perQuantity;
+  bed["params"]["sample_seed"] = seed;
+  return bed;
+}
+
+// Every instance folder of `stage` by its summary's closure_sample (0: the nominal run).
+std::map<int, fs::path> samplesOf(const fs::path& stageDir) {
+  std::map<int, fs::path> out;
+  for (const auto& entry : fs::directory_iterator(stageDir)) {
+    if (!fs::exists(entry.path() / "manifest.json")) continue;
+    const json summary = json::parse(readText(entry.path() / "manifest.json")).at("summary");
+    out[summary.value("closure_sample", 0)] = entry.path();
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(MfmStage, ClosureSamplesDrawTheTablesWithinTheirErrorsReproduciblyAndNeedTablesWithErrors) {
+  TempDir work;
+  // 1. The tables, made upstream with the closure points' errors; the bed with two joint samples
+  //    and one sample per quantity: six keyed instances, the samples labelled and moved.
+  json stages = shearToTable();
+  stages["bed"] = sampledBed("t", 2, 1, 7);
+  stages["bed"]["from"] = "table";
+  stages["beds"] = {{"type", "bed_compare"}, {"from", "bed"}};
+  writeText(work.path() / "loop.json", json{{"name", "loop"}, {"stages", stages}}.dump(2));
+  const auto r = runGrainbridge(work.path(), "run loop.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto beds = samplesOf(work.path() / "results/loop/bed");
+  ASSERT_EQ(beds.size(), 6u);
+  const auto series = [](const fs::path& dir) { return readText(dir / "series.csv"); };
+  std::map<std::string, int> perturbed;
+  for (const auto& [k, dir] : beds) {
+    const json manifest = json::parse(readText(dir / "manifest.json"));
+    if (k == 0) {
+      EXPECT_FALSE(manifest.at("summary").contains("closure_perturbed"));
+      continue;
+    }
+    EXPECT_EQ(manifest.at("sweep_point").at("closure_sample"), k);
+    perturbed[manifest.at("summary").at("closure_perturbed")]++;
+    EXPECT_NE(series(dir), series(beds.at(0))) << "sample " << k << " ran on the nominal tables";
+  }
+  EXPECT_EQ(perturbed, (std::map<std::string, int>{{"all", 2}, {"p_theta", 1}, {"eta_theta", 1}, {"j_theta", 1}}));
+  // bed_compare joins the samples to their nominal run: one row, with the spread of its two joint
+  // samples' heights, and findings that lead with it.
+  const fs::path compareDir = onlyInstance(work.path() / "results/loop/beds");
+  std::istringstream csv(readText(compareDir / "beds.csv"));
+  std::string headerLine, row, extra;
+  std::getline(csv, headerLine);
+  std::getline(csv, row);
+  EXPECT_FALSE(std::getline(csv, extra) && !extra.empty()) << "a sample was compared as a run: " << extra;
+  const auto header = splitCsvLine(headerLine);
+  const auto fields = splitCsvLine(row);
+  const auto at = [&](const std::string& name) {
+    return fields.at(static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin()));
+  };
+  EXPECT_EQ(at("closure_samples"), "5");
+  std::vector<double> heights;
+  for (int k = 1; k <= 2; ++k) {
+    heights.push_back(json::parse(readText(beds.at(k) / "manifest.json")).at("summary").at("mean_height"));
+  }
+  EXPECT_DOUBLE_EQ(std::stod(at("mean_height_closure")), std::abs(heights[0] - heights[1]) / std::sqrt(2.0));
+  const json findings = json::parse(readText(compareDir / "manifest.json")).at("findings");
+  const std::string headline = findings.at("headline");
+  EXPECT_TRUE(headline.starts_with("bed: bed height ")) << headline;
+  EXPECT_NE(headline.find("(bed fluctuations) ± "), std::string::npos) << headline;
+  EXPECT_NE(headline.find("(DEM closures, 2 joint samples)"), std::string::npos) << headline;
+
+  // 2. A sample is reproducible from its seed: the same bed in another workflow, reading the same
+  //    tables from the database, repeats sample 1 bit for bit; another seed draws otherwise.
+  const fs::path dbPath = work.path() / "results/loop/grainbridge.sqlite";
+  const auto named = [&](const std::string& workflow, const json& bed) {
+    writeText(work.path() / (workflow + ".json"),
+              json{{"name", workflow}, {"database", dbPath.string()}, {"stages", {{"bed", bed}}}}.dump(2));
+    const auto run = runGrainbridge(work.path(), "run " + workflow + ".json -q");
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    return samplesOf(work.path() / "results" / workflow / "bed");
+  };
+  const auto again = named("again", sampledBed("t", 1, 0, 7));
+  ASSERT_EQ(again.size(), 2u);
+  EXPECT_EQ(series(again.at(1)), series(beds.at(1)));
+  EXPECT_EQ(series(again.at(0)), series(beds.at(0)));
+  const auto other = named("other", sampledBed("t", 1, 0, 8));
+  EXPECT_NE(series(other.at(1)), series(beds.at(1)));
+
+  // 3. With every table error zero, each sample equals the nominal run bit for bit.
+  copyTable(dbPath, "z", 0.0);
+  const auto zero = named("zero", sampledBed("z", 2, 1, 7));
+  ASSERT_EQ(zero.size(), 6u);
+  for (const auto& [k, dir] : zero) {
+    EXPECT_EQ(series(dir), series(zero.at(0))) << "sample " << k;
+    const json a = json::parse(readText(dir / "manifest.json")).at("summary");
+    const json b = json::parse(readText(zero.at(0) / "manifest.json")).at("summary");
+    EXPECT_EQ(a.at("mean_height"), b.at("mean_height")) << "sample " << k;
+  }
+
+  // 4. Refused at check, naming the parameter: samples of a table without errors, and samples
+  //    without closure "table".
+  copyTable(dbPath, "n", std::nullopt);
+  for (const auto& [bed, pointer] :
+       {std::pair{sampledBed("n", 2, 0, 1), "/stages/bed/params/closure_samples"},
+        std::pair{sampledBed("n", 0, 3, 1), "/stages/bed/params/closure_samples_per_quantity"}}) {
+    writeText(work.path() / "bad.json",
+              json{{"name", "bad"}, {"database", dbPath.string()}, {"stages", {{"bed", bed}}}}.dump(2));
+    const auto check = runGrainbridge(work.path(), "check bad.json");
+    EXPECT_EQ(check.exitCode, 2) << check.output;
+    EXPECT_NE(check.output.find(pointer), std::string::npos) << check.output;
+    EXPECT_NE(check.output.find("no standard errors"), std::string::npos) << check.output;
+  }
+  json kt = sampledBed("t", 2, 0, 1);
+  kt["params"]["closure"] = "ktgf";
+  writeText(work.path() / "kt.json",
+            json{{"name", "kt"}, {"database", dbPath.string()}, {"stages", {{"bed", kt}}}}.dump(2));
+  const auto check = runGrainbridge(work.path(), "check kt.json");
+  EXPECT_EQ(check.exitCode, 2) << check.output;
+  EXPECT_NE(check.output.find("/stages/bed/params/closure_samples"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("closure \"table\""), std::string::npos) << check.output;
 }
 
 TEST(MfmStage, TsujiJetSmokeRunsOnTheSolverDefaultsAndPlotsThePressureDrop) {

@@ -3,7 +3,11 @@
 // upstream change, gives a new key downstream.
 #include <gtest/gtest.h>
 
+#include <set>
+
+#include "core/Error.hpp"
 #include "core/json/StrictParse.hpp"
+#include "tests/support/Cli.hpp"
 #include "workflows/plan/Plan.hpp"
 
 using namespace grainbridge::workflows;
@@ -94,4 +98,93 @@ TEST(Plan, SweepIntoNestedParametersByPath) {
   EXPECT_EQ(only(p, "bed", 1).params["walls"][0]["mu"].get<double>(), 0.5);
   EXPECT_NE(only(p, "bed", 0).key, only(p, "bed", 1).key);
   EXPECT_EQ(only(p, "bed", 1).label(), "bed[walls/0/mu=0.5]");
+}
+
+namespace {
+
+// The grain-fluidization smoke bed on a closure table "t" the database holds (`hasErrors`: with
+// each node's standard error), asking for closure samples.
+plan::Plan sampledBedPlan(int samples, int perQuantity, int seed, bool hasErrors,
+                          const std::string& closure = "table") {
+  json wf = json::parse(
+      grainbridge::testing::readText(grainbridge::testing::sourceDir() / "configs/grain-fluidization-smoke.json"));
+  json bed = wf["stages"]["bed"];
+  bed.erase("sweep");
+  auto& p = bed["params"];
+  p.erase("kinetic_model");
+  p.erase("granular_energy");
+  p["boundaries"][0]["gas_inflow"] = "0.5 m/s";
+  p["closure"] = closure;
+  p["closure_table"] = "t";
+  p["out_of_range"] = "kinetic_theory";
+  p["table_quantities"] = {"pressure", "dissipation"};
+  if (samples >= 0) p["closure_samples"] = samples;
+  if (perQuantity >= 0) p["closure_samples_per_quantity"] = perQuantity;
+  if (seed >= 0) p["sample_seed"] = seed;
+  const json doc = {{"name", "w"}, {"stages", {{"bed", bed}}}};
+  const auto config = config::parseWorkflow(doc, "t.json", stages::StageRegistry::builtin());
+  return plan::makePlan(config, [hasErrors](const std::string&, const std::string& quantity) {
+    return plan::TableFound{"sha-of-" + quantity, std::nullopt, hasErrors};
+  });
+}
+
+}  // namespace
+
+// Issue 31: closure samples are replicas of the instance with their own keys; the nominal run
+// keeps the key it has without samples, and the seed enters only the samples' keys.
+TEST(Plan, ClosureSamplesAreKeyedReplicasAndTheNominalRunKeepsItsKey) {
+  const auto without = sampledBedPlan(-1, -1, -1, true);
+  ASSERT_EQ(without.instances.size(), 1u);
+  const auto sampled = sampledBedPlan(3, 2, 5, true);
+  // 1 nominal + 3 joint + 2 for each of the two table quantities.
+  ASSERT_EQ(sampled.instances.size(), 8u);
+  EXPECT_EQ(sampled.instances[0].key, without.instances[0].key);
+  EXPECT_EQ(sampled.instances[0].label(), "bed");
+  std::set<std::string> keys;
+  std::map<std::string, int> perturbed;
+  for (std::size_t i = 0; i < sampled.instances.size(); ++i) {
+    const auto& inst = sampled.instances[i];
+    keys.insert(inst.key);
+    if (i == 0) continue;
+    EXPECT_EQ(inst.sweepPoint.at("closure_sample"), static_cast<int>(i));
+    const json& draw = inst.params.at("closure_draw");
+    EXPECT_EQ(draw.at("sample"), static_cast<int>(i));
+    EXPECT_EQ(draw.at("seed"), 5);
+    perturbed[draw.at("perturbed").get<std::string>()]++;
+    if (draw.at("perturbed") == "all") {
+      EXPECT_EQ(draw.at("quantities"), json::array({"p_theta", "j_theta"}));
+      EXPECT_FALSE(inst.sweepPoint.contains("closure_perturbed"));
+    } else {
+      EXPECT_EQ(draw.at("quantities"), json::array({draw.at("perturbed")}));
+      EXPECT_EQ(inst.sweepPoint.at("closure_perturbed"), draw.at("perturbed"));
+    }
+  }
+  EXPECT_EQ(keys.size(), 8u);
+  EXPECT_EQ(perturbed, (std::map<std::string, int>{{"all", 3}, {"p_theta", 2}, {"j_theta", 2}}));
+  EXPECT_EQ(sampled.instances[1].label(), "bed[closure_sample=1]");
+  // Another seed: the same nominal key, other sample keys.
+  const auto reseeded = sampledBedPlan(3, 2, 6, true);
+  EXPECT_EQ(reseeded.instances[0].key, without.instances[0].key);
+  EXPECT_NE(reseeded.instances[1].key, sampled.instances[1].key);
+}
+
+TEST(Plan, ClosureSamplesNeedATableClosureWithErrorsAndSayWhereAtCheck) {
+  const auto messageOf = [](const std::function<void()>& plan) -> std::string {
+    try {
+      plan();
+    } catch (const grainbridge::Error& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  const std::string noErrors = messageOf([] { sampledBedPlan(2, 0, 1, false); });
+  EXPECT_NE(noErrors.find("/stages/bed/params/closure_samples"), std::string::npos) << noErrors;
+  EXPECT_NE(noErrors.find("no standard errors"), std::string::npos) << noErrors;
+  const std::string perQuantity = messageOf([] { sampledBedPlan(0, 2, 1, false); });
+  EXPECT_NE(perQuantity.find("/stages/bed/params/closure_samples_per_quantity"), std::string::npos) << perQuantity;
+  // A table without errors is fine for a run that draws nothing.
+  EXPECT_EQ(messageOf([] { sampledBedPlan(0, 0, 1, false); }), "accepted");
+  const std::string kinetic = messageOf([] { sampledBedPlan(2, 0, 1, true, "ktgf"); });
+  EXPECT_NE(kinetic.find("/stages/bed/params/closure_samples"), std::string::npos) << kinetic;
+  EXPECT_NE(kinetic.find("closure \"table\""), std::string::npos) << kinetic;
 }

@@ -54,7 +54,8 @@ plan::Plan planOf(const config::WorkflowConfig& cfg, const CommandOptions& opt) 
         const auto rheology = store.loadRheology(name);
         return {rheology.sha256, stages::Grains{rheology.diameter, rheology.density}};
       }
-      return {store.loadTable(name, quantity).sha256, std::nullopt};
+      const auto table = store.loadTable(name, quantity);
+      return {table.sha256, std::nullopt, !table.uncertainties.empty()};
     } catch (const Error&) {
       return {};
     }

@@ -147,6 +147,13 @@ int commandDbQuery(const CommandOptions& opt) {
   json rows;
   std::vector<std::string> known;
   try {
+    if (opt.table == "closure_tables") {
+      // The tables node by node, each value with its standard error.
+      rows = store.tableNodes(queryOf(opt));
+      known = db::ClosureStore::tableNodeColumns();
+      std::fputs(formatRows(rows, shownColumns(rows, opt.columns, known), opt.format).c_str(), stdout);
+      return 0;
+    }
     rows = store.query(queryOf(opt));
     known = store.columns(opt.table);
   } catch (const UsageError&) {

@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "core/Error.hpp"
-#include "core/json/Diagnostics.hpp"
 #include "core/Sha256.hpp"
+#include "core/json/Diagnostics.hpp"
 #include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::plan {
@@ -81,50 +81,64 @@ Plan makePlan(const config::WorkflowConfig& config, const TableLookup& lookup) {
       const auto points = config::sweepPoints(stage.sweep);
       const auto written = config::sweepPointsAsWritten(stage.sweep);
       for (std::size_t p = 0; p < points.size(); ++p) {
-        const json& point = points[p];
-        StageInstance inst;
-        inst.index = plan.instances.size();
-        inst.stage = stage.name;
-        inst.type = stage.type;
-        inst.params = config::withSweepPoint(stage.params, point);
-        inst.sweepPoint = point;
-        inst.sweepWritten = written[p];
-        inst.upstream = inputs;
-        inst.ranks = stage.ranksPerInstance;
-        std::vector<std::string> upKeys;
-        for (auto i : inputs) upKeys.push_back(plan.instances[i].key);
-        // A gathering stage does not care in which order its inputs were listed.
-        if (stage.type->inputMode() == stages::InputMode::Gather) std::sort(upKeys.begin(), upKeys.end());
-        json tables = json::object();
-        for (const auto& ref : stage.type->closureTables(inst.params)) {
-          StageInstance::TableInput in{ref.name, ref.quantity, "", ""};
-          for (auto i : inputs) {
-            const auto planned = plan.instances[i].type->plannedOutput(plan.instances[i].params);
-            if (planned && planned->closureTables == ref.name) in.runKey = plan.instances[i].key;
-          }
-          if (in.runKey.empty()) {
-            const TableFound found = lookup ? lookup(ref.name, ref.quantity) : TableFound{};
-            in.sha256 = found.sha256;
-            if (!in.sha256.empty() && found.grains) {
-              core::json::Diagnostics d;
-              stage.type->checkTableGrains(inst.params, "/stages/" + stage.name + "/params", ref, *found.grains, d);
-              if (!d.empty()) throw core::json::InputError(config.sourcePath.string(), std::move(d));
+        const json swept = config::withSweepPoint(stage.params, points[p]);
+        for (const auto& replica : stage.type->replicas(swept)) {
+          StageInstance inst;
+          inst.index = plan.instances.size();
+          inst.stage = stage.name;
+          inst.type = stage.type;
+          inst.params = swept;
+          inst.params.merge_patch(replica.overlay);
+          inst.sweepPoint = points[p];
+          inst.sweepPoint.merge_patch(replica.label);
+          inst.sweepWritten = written[p];
+          if (!inst.sweepWritten.empty()) inst.sweepWritten.merge_patch(replica.label);
+          inst.upstream = inputs;
+          inst.ranks = stage.ranksPerInstance;
+          std::vector<std::string> upKeys;
+          for (auto i : inputs) upKeys.push_back(plan.instances[i].key);
+          // A gathering stage does not care in which order its inputs were listed.
+          if (stage.type->inputMode() == stages::InputMode::Gather) std::sort(upKeys.begin(), upKeys.end());
+          json tables = json::object();
+          for (const auto& ref : stage.type->closureTables(inst.params)) {
+            StageInstance::TableInput in{ref.name, ref.quantity, "", ""};
+            for (auto i : inputs) {
+              const auto planned = plan.instances[i].type->plannedOutput(plan.instances[i].params);
+              if (planned && planned->closureTables == ref.name) in.runKey = plan.instances[i].key;
             }
-            if (in.sha256.empty()) {
-              core::json::Diagnostics d;
-              d.add("/stages/" + stage.name + "/params" + ref.pointer,
-                    "closure table \"" + ref.name + "\" (" + ref.quantity +
-                        ") is neither in the workflow database (" + config.database.string() +
-                        ") nor made by a tabulate stage this stage takes `from`");
-              throw core::json::InputError(config.sourcePath.string(), std::move(d));
+            if (in.runKey.empty()) {
+              const TableFound found = lookup ? lookup(ref.name, ref.quantity) : TableFound{};
+              in.sha256 = found.sha256;
+              if (!in.sha256.empty() && found.grains) {
+                core::json::Diagnostics d;
+                stage.type->checkTableGrains(inst.params, "/stages/" + stage.name + "/params", ref, *found.grains, d);
+                if (!d.empty()) throw core::json::InputError(config.sourcePath.string(), std::move(d));
+              }
+              if (const std::string needs = stage.type->tableErrorsNeededBy(inst.params);
+                  !in.sha256.empty() && !found.hasErrors && !needs.empty()) {
+                core::json::Diagnostics d;
+                d.add("/stages/" + stage.name + "/params" + needs,
+                      "closure table \"" + ref.name + "\" (" + ref.quantity +
+                          ") in the workflow database has no standard errors to draw samples within (tabulate it "
+                          "again from closure points with errors)");
+                throw core::json::InputError(config.sourcePath.string(), std::move(d));
+              }
+              if (in.sha256.empty()) {
+                core::json::Diagnostics d;
+                d.add("/stages/" + stage.name + "/params" + ref.pointer,
+                      "closure table \"" + ref.name + "\" (" + ref.quantity +
+                          ") is neither in the workflow database (" + config.database.string() +
+                          ") nor made by a tabulate stage this stage takes `from`");
+                throw core::json::InputError(config.sourcePath.string(), std::move(d));
+              }
             }
+            tables[ref.name + "/" + ref.quantity] = in.runKey.empty() ? in.sha256 : "upstream";
+            inst.tables.push_back(std::move(in));
           }
-          tables[ref.name + "/" + ref.quantity] = in.runKey.empty() ? in.sha256 : "upstream";
-          inst.tables.push_back(std::move(in));
+          inst.key = stageKey(keyMaterial(*stage.type, inst.params, upKeys, tables));
+          plan.byStage[stage.name].push_back(inst.index);
+          plan.instances.push_back(std::move(inst));
         }
-        inst.key = stageKey(keyMaterial(*stage.type, inst.params, upKeys, tables));
-        plan.byStage[stage.name].push_back(inst.index);
-        plan.instances.push_back(std::move(inst));
       }
     }
     if (plan.byStage.find(stage.name) == plan.byStage.end()) plan.byStage[stage.name] = {};

@@ -1,6 +1,6 @@
 #pragma once
-// Expands a workflow's stages into stage instances (one per sweep point and, for per-instance
-// stages, per upstream instance) and gives each its stage key (DESIGN.md, workflow semantics):
+// Expands a workflow's stages into stage instances (one per sweep point and replica, and, for
+// per-instance stages, per upstream instance) and gives each its stage key (DESIGN.md, workflow semantics):
 //   key = sha256(type, impl_version, canonical resolved params, upstream keys)
 // Canonical params are SI values with defaults filled in, keys sorted, floats in shortest
 // round-trip text, parameters declared not to affect results left out. Paths, hosts, git SHA
@@ -54,6 +54,7 @@ struct Plan {
 struct TableFound {
   std::string sha256;
   std::optional<stages::Grains> grains;
+  bool hasErrors = false;  // the database holds each node's standard error
 };
 using TableLookup = std::function<TableFound(const std::string& name, const std::string& quantity)>;
 

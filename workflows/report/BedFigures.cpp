@@ -32,6 +32,17 @@ Figure averagedHeightFigure(const std::vector<BedRun>& runs) {
       const double err = run.value("mean_height_fields_err");
       fields.yError.push_back(std::isfinite(err) ? err : 0.0);
     }
+    // Beside it, the spread its closure samples give (the DEM closures' statistical error).
+    if (const auto it = run.closureSpreads.find("mean_height"); it != run.closureSpreads.end()) {
+      auto& spread = byClosure[run.closure + " (DEM closure spread)"];
+      spread.label = "runs, " + run.closure + ", spread over the closure samples";
+      spread.model = run.closure;
+      spread.style = Series::Style::PointsWithErrors;
+      spread.variant = 2;
+      spread.x.push_back(static_cast<double>(b + 1) + 0.2);
+      spread.y.push_back(run.meanHeight);
+      spread.yError.push_back(it->second.spread);
+    }
     for (const auto& r : run.references) {
       const bool first = !byReference.contains(r.label);
       auto& ref = byReference[r.label];

@@ -22,6 +22,26 @@ std::string withError(double v, double err, int significant = 4) {
 
 std::string number(double v) { return std::isfinite(v) ? core::roundTripText(v) : std::string(); }
 
+const std::vector<std::string> kClosureOutputs = {"mean_height", "pressure_drop", "segregation_percentage"};
+const std::vector<std::string> kClosureQuantities = {"p_theta", "eta_theta", "j_theta"};
+
+// "± 0.0012 (DEM closures, 8 joint samples), mostly from p_theta (72 %)" for an output of a run
+// with closure samples; "" without.
+std::string closurePart(const BedRun& run, const std::string& output, int significant) {
+  const auto it = run.closureSpreads.find(output);
+  if (it == run.closureSpreads.end()) return "";
+  const ClosureSpread& c = it->second;
+  std::string text = " ± " + core::humanNumber(c.spread, significant) + " (DEM closures, ";
+  text += c.fromJoint ? std::to_string(c.jointSamples) + " joint samples)"
+                      : "root sum of squares of one-at-a-time samples)";
+  if (const std::string top = c.dominant(); !top.empty()) {
+    for (const auto& q : c.quantities) {
+      if (q.quantity == top) text += ", mostly from " + top + " (" + core::humanNumber(100.0 * q.share, 2) + " %)";
+    }
+  }
+  return text;
+}
+
 }  // namespace
 
 std::string bedsCsv(const std::vector<BedRun>& runs, const std::vector<std::string>& referenceLabels) {
@@ -29,8 +49,13 @@ std::string bedsCsv(const std::vector<BedRun>& runs, const std::vector<std::stri
   csv << "run,closure,mean_height,mean_height_err,pressure_drop,pressure_drop_err,dp_frequency,dp_amplitude,"
          "table_coverage_cell_steps,table_coverage_solids,solver_steps,retries,segregation_percentage,"
          "segregation_percentage_err,mean_height_fields,mean_height_fields_err,bed_weight,coordination,"
-         "coordination_err,multi_contact_ratio,multi_contact_ratio_err,reference,reference_kind,"
-         "reference_height,deviation\n";
+         "coordination_err,multi_contact_ratio,multi_contact_ratio_err,closure_samples";
+  // The spread from the DEM closures of each output and each table quantity's share of it.
+  for (const auto& output : kClosureOutputs) {
+    csv << ',' << output << "_closure";
+    for (const auto& q : kClosureQuantities) csv << ',' << output << "_share_" << q;
+  }
+  csv << ",reference,reference_kind,reference_height,deviation\n";
   for (const auto& run : runs) {
     std::string fields = csvField(run.label) + ',' + run.closure + ',' + number(run.meanHeight) + ',' +
                          number(run.meanHeightError);
@@ -40,6 +65,18 @@ std::string bedsCsv(const std::vector<BedRun>& runs, const std::vector<std::stri
                           "mean_height_fields_err", "bed_weight", "coordination", "coordination_err",
                           "multi_contact_ratio", "multi_contact_ratio_err"}) {
       fields += ',' + number(run.value(k));
+    }
+    fields += ',' + (run.closureSamples > 0 ? std::to_string(run.closureSamples) : std::string());
+    for (const auto& output : kClosureOutputs) {
+      const auto it = run.closureSpreads.find(output);
+      fields += ',' + (it == run.closureSpreads.end() ? std::string() : number(it->second.spread));
+      for (const auto& q : kClosureQuantities) {
+        double share = NAN;
+        if (it != run.closureSpreads.end()) {
+          for (const auto& s : it->second.quantities) share = s.quantity == q ? s.share : share;
+        }
+        fields += ',' + number(share);
+      }
     }
     bool matchedAny = false;
     for (const auto& label : referenceLabels) {
@@ -81,7 +118,26 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
   const bool anyBinary = std::any_of(runs.begin(), runs.end(),
                                      [](const BedRun& r) { return std::isfinite(r.value("segregation_percentage")); });
   if (anyBinary) findings.columns.emplace_back("segregation percentage s_p");
+  const bool anySamples = std::any_of(runs.begin(), runs.end(), [](const BedRun& r) { return r.closureSamples > 0; });
+  if (anySamples) findings.columns.emplace_back("height spread from the DEM closures [m]");
   std::ostringstream headline;
+  // The headline leads with what the DEM closures' own error does to each sampled run's answer.
+  for (const auto& run : runs) {
+    if (run.closureSamples == 0) continue;
+    headline << run.label << ": bed height " << core::humanNumber(run.meanHeight, 4) << " m ± "
+             << core::humanNumber(run.meanHeightError, 2) << " (bed fluctuations)"
+             << closurePart(run, "mean_height", 2);
+    if (std::isfinite(run.value("pressure_drop"))) {
+      headline << "; pressure drop " << core::humanNumber(run.value("pressure_drop"), 4) << " Pa ± "
+               << core::humanNumber(run.value("pressure_drop_err"), 2) << closurePart(run, "pressure_drop", 2);
+    }
+    if (std::isfinite(run.value("segregation_percentage"))) {
+      headline << "; segregation percentage " << core::humanNumber(run.value("segregation_percentage"), 3) << " ± "
+               << core::humanNumber(run.value("segregation_percentage_err"), 2)
+               << closurePart(run, "segregation_percentage", 2);
+    }
+    headline << " (" << run.closureSamples << " closure samples). ";
+  }
   for (const auto& run : runs) {
     const double h = run.meanHeight, hErr = run.meanHeightError;
     const double frequency = run.value("dp_frequency");
@@ -120,6 +176,10 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
     if (anyTable) row.push_back(run.closure == "table" ? coverage : "–");
     const double sp = run.value("segregation_percentage");
     if (anyBinary) row.push_back(withError(sp, run.value("segregation_percentage_err"), 3));
+    if (anySamples) {
+      const auto it = run.closureSpreads.find("mean_height");
+      row.push_back(it == run.closureSpreads.end() ? "–" : closurePart(run, "mean_height", 2).substr(3));
+    }
     findings.rows.push_back(std::move(row));
     headline << run.label << ": mean particle height " << withError(h, hErr) << " m";
     if (std::isfinite(deposited)) {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "workflows/report/ClosureSpread.hpp"
+
 namespace grainbridge::workflows::report {
 
 // A published or measured mean height matched to a run.
@@ -33,6 +35,10 @@ struct BedRun {
   // retries, segregation_percentage(_err), bed_weight, and a particle run's mean_height_fields(_err),
   // coordination(_err) and multi_contact_ratio(_err); NaN where the run did not record one.
   std::map<std::string, double> values;
+  // The spread over the run's closure samples of mean_height, pressure_drop and, for a binary bed,
+  // segregation_percentage (issue 31); empty for a run without closure samples.
+  std::map<std::string, ClosureSpread> closureSpreads;
+  int closureSamples = 0;
   [[nodiscard]] double value(const std::string& column) const;
 };
 

@@ -58,6 +58,9 @@ std::string plotClause(const Series& s, std::size_t block) {
     case Series::Style::Line:
       return data + " using 1:2 with lines lw 2 dt " + std::to_string(variant % 5 + 1) + " " + colour + " title " +
              gnuplotString(s.label);
+    case Series::Style::Band:
+      return data + " using 1:($2-$3):($2+$3) with filledcurves fs transparent solid 0.2 noborder " + colour +
+             " title " + gnuplotString(s.label);
   }
   return {};
 }
@@ -67,7 +70,7 @@ void checkFigure(const Figure& f, const std::string& name) {
     throw Error("figure " + name + ": every axis needs a unit (\"–\" when dimensionless)");
   }
   for (const auto& s : f.series) {
-    const bool errors = s.style == Series::Style::PointsWithErrors;
+    const bool errors = s.style == Series::Style::PointsWithErrors || s.style == Series::Style::Band;
     if (s.y.size() != s.x.size() || (errors && s.yError.size() != s.x.size())) {
       throw Error("figure " + name + ": series '" + s.label + "' has columns of different lengths");
     }
@@ -143,7 +146,8 @@ DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::str
     script << "$s" << b << " << EOD\n";
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       script << core::roundTripText(s.x[i]) << ' ' << core::roundTripText(s.y[i]);
-      if (s.style == Series::Style::PointsWithErrors) script << ' ' << core::roundTripText(s.yError[i]);
+      if (s.style == Series::Style::PointsWithErrors || s.style == Series::Style::Band)
+        script << ' ' << core::roundTripText(s.yError[i]);
       script << '\n';
     }
     script << "EOD\n";

@@ -27,9 +27,10 @@ struct Axis {
 struct Series {
   std::string label;  // the legend entry, printed as written
   std::string model;  // the colour key: "DEM", "lun1984", "experiment", ...
-  enum class Style { Points, PointsWithErrors, Line } style = Style::Points;
+  // Band: a translucent area from y - yError to y + yError (an interpolated uncertainty).
+  enum class Style { Points, PointsWithErrors, Line, Band } style = Style::Points;
   int variant = 0;                   // dash type (lines) or point shape (points) within the model's colour
-  std::vector<double> x, y, yError;  // yError only for PointsWithErrors
+  std::vector<double> x, y, yError;  // yError only for PointsWithErrors and Band
 };
 
 struct Figure {

@@ -215,8 +215,16 @@ void BedCompareStage::run(StageContext& ctx) const {
   }
   const std::string tap = p.at("tap");
 
+  // Closure samples of a run (issue 31) join their nominal run, the one of the same stage and sweep
+  // point without a closure_sample: they give its spread from the DEM closures and are not runs of
+  // their own in the comparison.
+  std::vector<const UpstreamInstance*> samples;
   std::vector<Bed> beds;
   for (const auto& up : ctx.inputs()) {
+    if (up.summaryValue("closure_sample")) {
+      samples.push_back(&up);
+      continue;
+    }
     Bed bed;
     bed.instance = &up;
     bed.written = up.sweepWritten();
@@ -248,9 +256,25 @@ void BedCompareStage::run(StageContext& ctx) const {
     }
   }
 
+  std::vector<std::vector<const UpstreamInstance*>> samplesOf(beds.size());
+  for (const auto* sample : samples) {
+    json point = sample->sweepWritten();
+    point.erase("closure_sample");
+    point.erase("closure_perturbed");
+    const auto nominal = std::find_if(beds.begin(), beds.end(), [&](const Bed& b) {
+      return b.instance->stage() == sample->stage() && b.written == point;
+    });
+    if (nominal == beds.end()) {
+      throw Error("bed_compare: closure sample " + sample->stage() + " (" + sample->shortKey() +
+                  ") has no nominal run among the upstream runs");
+    }
+    samplesOf[static_cast<std::size_t>(nominal - beds.begin())].push_back(sample);
+  }
+
   // The report reads each run's products alone (report/BedRun): its summary, series and tables.
   std::vector<report::BedRun> runs;
-  for (const auto& bed : beds) {
+  for (std::size_t b = 0; b < beds.size(); ++b) {
+    const Bed& bed = beds[b];
     report::BedRun run;
     run.label = bed.label;
     run.closure = bed.closure;
@@ -284,6 +308,21 @@ void BedCompareStage::run(StageContext& ctx) const {
              {"multi_contact_ratio_err", "multi_contact_ratio_err"}}) {
       run.values[column] = bed.value(key);
     }
+    if (!samplesOf[b].empty()) {
+      run.closureSamples = static_cast<int>(samplesOf[b].size());
+      for (const std::string output : {"mean_height", "pressure_drop", "segregation_percentage"}) {
+        const std::string key = output == "pressure_drop" ? bed.dp : output;
+        if (!std::isfinite(bed.value(key))) continue;
+        std::vector<report::ClosureSampleValue> values;
+        for (const auto* sample : samplesOf[b]) {
+          const auto v = sample->summaryValue(key);
+          if (!v)
+            throw Error("bed_compare: closure sample " + sample->shortKey() + " of " + bed.label + " has no " + key);
+          values.push_back({sample->summaryText("closure_perturbed", "all"), v->value});
+        }
+        run.closureSpreads[output] = report::closureSpread(values);
+      }
+    }
     runs.push_back(std::move(run));
   }
   std::vector<std::string> referenceLabels;
@@ -311,8 +350,10 @@ void BedCompareStage::run(StageContext& ctx) const {
                                   std::max(0.6, highest), ctx.outputDir(), "solid_fraction_maps"),
             "Time-averaged solid fraction (all solids phases), one panel per run");
 
-  addFigure(report::drawFigure(report::averagedHeightFigure(runs), ctx.outputDir(), "mean_height_averaged"),
-            "Time-averaged mean particle height per run (block-averaging errors) beside the reference values");
+  addFigure(
+      report::drawFigure(report::averagedHeightFigure(runs), ctx.outputDir(), "mean_height_averaged"),
+      std::string("Time-averaged mean particle height per run (block-averaging errors) beside the reference values") +
+          (samples.empty() ? "" : "; offset to its right, each sampled run's spread over its closure samples"));
   const auto overTime = report::timeFigures(runs, tap);
   addFigure(report::drawFigure(overTime.height, ctx.outputDir(), "mean_height"), "Mean particle height against time");
   addFigure(report::drawFigure(overTime.pressureDrop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");

@@ -19,7 +19,10 @@ class BedCompareStage final : public StageType {
   // 2: beds.csv and the table gain the segregation percentage of binary beds.
   // 3: figures as wide as their title and legend need (report/Plot): a sweep's long run labels
   //    ran off the right edge.
-  [[nodiscard]] int implVersion() const override { return 4; }
+  // 5: closure samples (issue 31) join their nominal run: beds.csv gains closure_samples and each
+  //    output's spread from the DEM closures with each table quantity's share; the findings lead
+  //    with it and the heights figure draws it beside the block-averaging error.
+  [[nodiscard]] int implVersion() const override { return 5; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "bed runs (mfm, tfdem) side by side: heights and pressure drops against references, solid-fraction maps";

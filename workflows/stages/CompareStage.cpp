@@ -380,6 +380,27 @@ void CompareStage::run(StageContext& ctx) const {
     int variant = 0;
     for (auto& [k, s] : dem) {
       s.variant = variant++;
+      // The table tabulate makes of these points, with its errors (issue 31): a band joining each
+      // node's value ± one standard error. On the log axis a band reaching zero stops at a tenth
+      // of the value.
+      if (s.x.size() >= 2) {
+        std::vector<std::size_t> order(s.x.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.x[a] < s.x[b]; });
+        report::Series band;
+        band.label = s.label + ", table ± 1 standard error";
+        band.model = "DEM";
+        band.style = report::Series::Style::Band;
+        band.variant = s.variant;
+        for (const std::size_t i : order) {
+          const double hi = s.y[i] + s.yError[i];
+          const double lo = std::max(s.y[i] - s.yError[i], 0.1 * s.y[i]);
+          band.x.push_back(s.x[i]);
+          band.y.push_back(0.5 * (hi + lo));
+          band.yError.push_back(0.5 * (hi - lo));
+        }
+        fig.series.push_back(std::move(band));
+      }
       fig.series.push_back(std::move(s));
     }
     const double shearRate = ref.shearRate;

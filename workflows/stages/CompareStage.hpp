@@ -23,7 +23,8 @@ class CompareStage final : public StageType {
   // 4: lun1984_mfix (MFiX's 1.2 x shear viscosity) among the models DEM is compared with
   // 5: figures as wide as their title and legend need (report/Plot)
   // 6: mu(I) and phi(I) figures with their fits beside kinetic theory's steady shear
-  [[nodiscard]] int implVersion() const override { return 6; }
+  // 7: each DEM series' table drawn as a band of ± one standard error (issue 31)
+  [[nodiscard]] int implVersion() const override { return 7; }
   // The headline and its table are the findings; the report's row shows how many points.
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"points", "–"}}; }
   [[nodiscard]] std::string summary() const override {

@@ -18,10 +18,11 @@
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/report/BedTables.hpp"
 #include "workflows/report/NumericCsv.hpp"
-#include "workflows/stages/MfmSeriesColumns.hpp"
+#include "workflows/stages/ClosureSamples.hpp"
 #include "workflows/stages/FluidSchema.hpp"
-#include "workflows/stages/SummaryAverage.hpp"
+#include "workflows/stages/MfmSeriesColumns.hpp"
 #include "workflows/stages/MfmSetup.hpp"
+#include "workflows/stages/SummaryAverage.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -150,7 +151,9 @@ MfmStage::MfmStage() {
       .add(ParamSpec::string("out_of_range")
                .options({"error", "clamp", "kinetic_theory"})
                .doc("closure \"table\", required: a state outside a table stops the run, takes the table's edge "
-                    "value, or kinetic_model's (counted in the summary's table coverage)"))
+                    "value, or kinetic_model's (counted in the summary's table coverage)"));
+  addClosureSampleParams(schema_);
+  schema_
       .add(ParamSpec::string("granular_energy")
                .defaultValue("pde")
                .options({"pde", "algebraic"})
@@ -259,6 +262,35 @@ MfmStage::MfmStage() {
 
 void MfmStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
   for (const auto& [where, what] : makeMfmSetup(p).problems) d.add(ptr + where, what);
+  if (asksForClosureSamples(p) && p.at("closure").get<std::string>() != "table") {
+    d.add(ptr + tableErrorsNeededBy(p),
+          "closure samples draw DEM closure tables within their errors: they need "
+          "closure \"table\" (closure is \"" +
+              p.at("closure").get<std::string>() + "\")");
+  }
+}
+
+namespace {
+
+// The table quantities a `table` closure reads (p_theta, eta_theta, j_theta), in table_quantities' order.
+std::vector<std::string> readQuantities(const json& p) {
+  std::vector<std::string> out;
+  if (p.at("closure").get<std::string>() != "table") return out;
+  for (const auto& q : p.at("table_quantities")) out.push_back(tableQuantity(q.get<std::string>()));
+  return out;
+}
+
+}  // namespace
+
+std::vector<Replica> MfmStage::replicas(const json& p) const {
+  if (p.at("closure").get<std::string>() != "table") return {Replica{}};
+  return closureSampleReplicas(p, readQuantities(p));
+}
+
+std::string MfmStage::tableErrorsNeededBy(const json& p) const {
+  if (p.value("closure_samples", 0) > 0) return "/closure_samples";
+  if (p.value("closure_samples_per_quantity", 0) > 0) return "/closure_samples_per_quantity";
+  return "";
 }
 
 std::vector<ClosureTableRef> MfmStage::closureTables(const json& p) const {
@@ -305,7 +337,9 @@ void MfmStage::checkAgainstUpstream(const json& p, const std::string& ptr, const
 
 void MfmStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
-  const MfmSetup setup = makeMfmSetup(p, &ctx.closureTables(), &ctx.rheologies());
+  // A closure sample runs on its draw of the tables; the nominal run on the tables themselves.
+  const std::vector<core::LoadedClosureTable> tables = sampleClosureTables(p, ctx.closureTables());
+  const MfmSetup setup = makeMfmSetup(p, &tables, &ctx.rheologies());
   if (!setup.problems.empty()) {
     throw Error("/stages/" + ctx.stage() + "/params" + setup.problems.front().first + ": " +
                 setup.problems.front().second);
@@ -400,6 +434,7 @@ void MfmStage::run(StageContext& ctx) const {
     summary["table_coverage_solids"] =
         stats.tableSolidsSteps > 0.0 ? stats.coveredSolidsSteps / stats.tableSolidsSteps : 0.0;
     for (const auto& loaded : ctx.closureTables()) summary["table_sha256_" + loaded.quantity()] = loaded.sha256;
+    addClosureSampleSummary(p, summary);
   }
   // Which mu(I) the plastic regime took (plastic mu_i).
   if (const auto& rheology = setup.engine.model.plastic.params.rheology) {

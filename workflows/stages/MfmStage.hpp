@@ -45,6 +45,10 @@ class MfmStage final : public StageType {
                             core::json::Diagnostics& diagnostics) const override;
   // closure "table": closure_table's p_theta, eta_theta and j_theta, as table_quantities names.
   [[nodiscard]] std::vector<ClosureTableRef> closureTables(const nlohmann::json& resolved) const override;
+  // closure "table" with closure_samples or closure_samples_per_quantity: the nominal run and its
+  // closure samples (workflows/stages/ClosureSamples.hpp).
+  [[nodiscard]] std::vector<Replica> replicas(const nlohmann::json& resolved) const override;
+  [[nodiscard]] std::string tableErrorsNeededBy(const nlohmann::json& resolved) const override;
   // plastic mu_i: a rheology of other grains than the solids phase's is refused at /rheology.
   void checkTableGrains(const nlohmann::json& resolved, const std::string& pointer, const ClosureTableRef& ref,
                         const Grains& grains, core::json::Diagnostics& diagnostics) const override;

@@ -20,6 +20,15 @@ enum class InputMode {
 
 using contract::ResultColumn;
 
+// A copy of an instance a stage asks the planner for beyond its sweep points (an mfm stage's
+// closure samples): `overlay` is merged into the resolved params, so it enters the copy's key and
+// reaches its run; `label` joins the sweep point, so logs, manifests and comparing stages tell
+// the copies apart. The instance itself is the replica with an empty overlay and label.
+struct Replica {
+  nlohmann::json overlay = nlohmann::json::object();
+  nlohmann::json label = nlohmann::json::object();
+};
+
 // A closure table an instance reads from the workflow database, and the parameter naming it
 // (below the stage's /params, for messages).
 struct ClosureTableRef {
@@ -63,6 +72,14 @@ class StageType {
   [[nodiscard]] virtual std::vector<ClosureTableRef> closureTables(const nlohmann::json& /*resolved*/) const {
     return {};
   }
+  // The copies of each instance (one per sweep point) the planner makes: by default the instance
+  // alone. Parameters that only ask for copies should not affect results (doesNotAffectResults),
+  // so the first copy, with an empty overlay, keeps the key the instance has without them.
+  [[nodiscard]] virtual std::vector<Replica> replicas(const nlohmann::json& /*resolved*/) const { return {Replica{}}; }
+  // The parameter (below the stage's /params) that needs the standard errors of the closure
+  // tables the instance reads, when one does (closure samples draw within them); "" otherwise.
+  // The planner refuses a database table without errors naming it, before any work starts.
+  [[nodiscard]] virtual std::string tableErrorsNeededBy(const nlohmann::json& /*resolved*/) const { return ""; }
   // Checks a closure input this instance reads (closureTables) against the grains it was made
   // from, as the database records them or the plan of the tabulate stage in `from` that makes it
   // says: called at config load, so a rheology of other grains is refused before any work.

@@ -1,0 +1,43 @@
+#pragma once
+// How much the DEM closures' statistical error moves a continuum run's output (issue 31): the
+// spread of the output over the run's closure samples (workflows/stages/ClosureSamples.hpp), and
+// the share of it each table quantity carries.
+//
+// The spread is the standard deviation over the joint samples (every table drawn) when there are
+// at least two; otherwise the root sum of squares of the one-at-a-time spreads, which assumes the
+// output responds to each quantity's error independently and linearly (the draws are independent,
+// so for a linear response the two agree). A quantity's share is its one-at-a-time variance over
+// the sum of them: which quantity dominates, the nominal run's other tables held.
+#include <string>
+#include <vector>
+
+namespace grainbridge::workflows::report {
+
+// One closure sample's output: what it drew ("all", or the one quantity drawn) and its value.
+struct ClosureSampleValue {
+  std::string perturbed;
+  double value = 0.0;
+};
+
+struct QuantitySpread {
+  std::string quantity;  // p_theta, eta_theta, j_theta
+  int samples = 0;
+  double spread = 0.0;  // standard deviation over its one-at-a-time samples
+  double share = 0.0;   // spread^2 / sum of the quantities' spread^2 (0 when every spread is 0)
+};
+
+struct ClosureSpread {
+  int jointSamples = 0;
+  double spread = 0.0;                     // the output's standard deviation from the closures
+  bool fromJoint = false;                  // over joint samples, or the one-at-a-time root sum of squares
+  std::vector<QuantitySpread> quantities;  // in the order the samples first name them
+
+  // The quantity with the largest share, or "" without one-at-a-time samples.
+  [[nodiscard]] std::string dominant() const;
+};
+
+// Throws grainbridge::Error when the samples give no spread: fewer than two joint samples and no
+// quantity with two one-at-a-time samples.
+[[nodiscard]] ClosureSpread closureSpread(const std::vector<ClosureSampleValue>& samples);
+
+}  // namespace grainbridge::workflows::report
