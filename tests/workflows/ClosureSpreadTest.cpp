@@ -19,18 +19,19 @@ namespace {
 
 const std::map<std::string, double> kSlopes = {{"p_theta", 0.3}, {"eta_theta", 0.1}, {"j_theta", 0.0}};
 
-// `joint` joint samples and `each` one-at-a-time samples of every quantity of the linear output.
-std::vector<ClosureSampleValue> linearSamples(int joint, int each, std::uint64_t seed) {
+// `joint` joint samples and `each` one-at-a-time samples of every quantity of the linear output,
+// each with its own noise of standard deviation `noise` (a run's fluctuations), stated as its error.
+std::vector<ClosureSampleValue> linearSamples(int joint, int each, std::uint64_t seed, double noise = 0.0) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> z;
   std::vector<ClosureSampleValue> out;
   for (int s = 0; s < joint; ++s) {
-    double y = 2.0;
+    double y = 2.0 + noise * z(rng);
     for (const auto& [q, b] : kSlopes) y += b * z(rng);
-    out.push_back({"all", y});
+    out.push_back({"all", y, noise});
   }
   for (const auto& [q, b] : kSlopes) {
-    for (int s = 0; s < each; ++s) out.push_back({q, 2.0 + b * z(rng)});
+    for (int s = 0; s < each; ++s) out.push_back({q, 2.0 + b * z(rng) + noise * z(rng), noise});
   }
   return out;
 }
@@ -81,4 +82,24 @@ TEST(ClosureSpread, TooFewSamplesForASpreadAreRefusedSayingWhatItTakes) {
   } catch (const grainbridge::Error& e) {
     EXPECT_NE(std::string(e.what()).find("two joint samples"), std::string::npos) << e.what();
   }
+}
+
+// Each run's own fluctuations scatter the samples too: the spread is what is left after their
+// stated errors, so it recovers the closures' part alone.
+TEST(ClosureSpread, TheRunsOwnNoiseIsTakenOutOfTheScatter) {
+  const int n = 2000;
+  const double noise = 0.2;
+  const auto spread = closureSpread(linearSamples(n, 0, 11, noise));
+  const double analytic = std::sqrt(0.3 * 0.3 + 0.1 * 0.1);
+  const double total = std::sqrt(analytic * analytic + noise * noise);
+  // The standard error of the corrected deviation: that of the total variance, over 2 sqrt(var).
+  const double se = total * total * std::sqrt(2.0 / (n - 1)) / (2.0 * analytic);
+  EXPECT_NEAR(spread.scatter, total, 3 * total / std::sqrt(2.0 * (n - 1)));
+  EXPECT_NEAR(spread.spread, analytic, 3 * se);
+  // Noise alone: no spread from the closures, within the estimate's error.
+  std::vector<ClosureSampleValue> noiseOnly;
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> z;
+  for (int s = 0; s < n; ++s) noiseOnly.push_back({"all", 2.0 + noise * z(rng), noise});
+  EXPECT_LT(closureSpread(noiseOnly).spread, 3 * noise * std::sqrt(std::sqrt(2.0 / (n - 1))));
 }

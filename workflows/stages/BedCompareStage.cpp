@@ -318,7 +318,7 @@ void BedCompareStage::run(StageContext& ctx) const {
           const auto v = sample->summaryValue(key);
           if (!v)
             throw Error("bed_compare: closure sample " + sample->shortKey() + " of " + bed.label + " has no " + key);
-          values.push_back({sample->summaryText("closure_perturbed", "all"), v->value});
+          values.push_back({sample->summaryText("closure_perturbed", "all"), v->value, v->error});
         }
         run.closureSpreads[output] = report::closureSpread(values);
       }
