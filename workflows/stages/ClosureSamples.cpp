@@ -28,6 +28,7 @@ void addClosureSampleParams(params::ParamSchema& schema) {
       .add(ParamSpec::integer("sample_seed")
                .defaultValue(1)
                .min(0)
+               .max(2147483647)  // the stream's upper 32 bits; the sample number is the lower
                .doesNotAffectResults()
                .doc("seed of the closure samples' draws (sample k draws from the stream of (sample_seed, k))"));
 }
@@ -40,7 +41,7 @@ std::vector<Replica> closureSampleReplicas(const json& p, const std::vector<std:
   std::vector<Replica> replicas{Replica{}};
   const int joint = p.value("closure_samples", 0);
   const int each = p.value("closure_samples_per_quantity", 0);
-  const int seed = p.value("sample_seed", 1);
+  const std::int64_t seed = p.value("sample_seed", std::int64_t{1});
   int k = 0;
   const auto add = [&](const json& drawn, const std::string& perturbed) {
     ++k;
