@@ -445,11 +445,11 @@ TEST(MfmStage, ClosureSamplesDrawTheTablesWithinTheirErrorsReproduciblyAndNeedTa
     EXPECT_EQ(run.exitCode, 0) << run.output;
     return samplesOf(work.path() / "results" / workflow / "bed");
   };
-  const auto again = named("again", sampledBed("t", 1, 0, 7));
-  ASSERT_EQ(again.size(), 2u);
+  const auto again = named("again", sampledBed("t", 2, 0, 7));
+  ASSERT_EQ(again.size(), 3u);
   EXPECT_EQ(series(again.at(1)), series(beds.at(1)));
   EXPECT_EQ(series(again.at(0)), series(beds.at(0)));
-  const auto other = named("other", sampledBed("t", 1, 0, 8));
+  const auto other = named("other", sampledBed("t", 2, 0, 8));
   EXPECT_NE(series(other.at(1)), series(beds.at(1)));
 
   // 3. With every table error zero, each sample equals the nominal run bit for bit.

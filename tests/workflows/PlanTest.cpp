@@ -184,6 +184,10 @@ TEST(Plan, ClosureSamplesNeedATableClosureWithErrorsAndSayWhereAtCheck) {
   EXPECT_NE(perQuantity.find("/stages/bed/params/closure_samples_per_quantity"), std::string::npos) << perQuantity;
   // A table without errors is fine for a run that draws nothing.
   EXPECT_EQ(messageOf([] { sampledBedPlan(0, 0, 1, false); }), "accepted");
+  const std::string single = messageOf([] { sampledBedPlan(1, 1, 1, true); });
+  EXPECT_NE(single.find("/stages/bed/params/closure_samples"), std::string::npos) << single;
+  EXPECT_NE(single.find("one closure sample gives no spread"), std::string::npos) << single;
+  EXPECT_EQ(messageOf([] { sampledBedPlan(1, 2, 1, true); }), "accepted");
   const std::string kinetic = messageOf([] { sampledBedPlan(2, 0, 1, true, "ktgf"); });
   EXPECT_NE(kinetic.find("/stages/bed/params/closure_samples"), std::string::npos) << kinetic;
   EXPECT_NE(kinetic.find("closure \"table\""), std::string::npos) << kinetic;

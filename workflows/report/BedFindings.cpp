@@ -22,8 +22,8 @@ std::string withError(double v, double err, int significant = 4) {
 
 std::string number(double v) { return std::isfinite(v) ? core::roundTripText(v) : std::string(); }
 
-const std::vector<std::string> kClosureOutputs = {"mean_height", "pressure_drop", "segregation_percentage"};
-const std::vector<std::string> kClosureQuantities = {"p_theta", "eta_theta", "j_theta"};
+const std::vector<std::string>& kClosureOutputs = kClosureSampledOutputs;
+const std::vector<std::string>& kClosureQuantities = kClosureSampledQuantities;
 
 // "± 0.0011 (DEM closures, 8 joint samples scattering by 0.0013, less their own fluctuation
 // errors), mostly from p_theta (72 %)" for an output of a run

@@ -17,6 +17,12 @@
 
 namespace grainbridge::workflows::report {
 
+// The outputs of a bed run the samples are read for (summary keys; pressure_drop stands for the
+// compared tap's dp_<tap>) and the table quantities a share is given of.
+inline const std::vector<std::string> kClosureSampledOutputs = {"mean_height", "pressure_drop",
+                                                                "segregation_percentage"};
+inline const std::vector<std::string> kClosureSampledQuantities = {"p_theta", "eta_theta", "j_theta"};
+
 // One closure sample's output: what it drew ("all", or the one quantity drawn) and its value.
 struct ClosureSampleValue {
   std::string perturbed;

@@ -310,7 +310,7 @@ void BedCompareStage::run(StageContext& ctx) const {
     }
     if (!samplesOf[b].empty()) {
       run.closureSamples = static_cast<int>(samplesOf[b].size());
-      for (const std::string output : {"mean_height", "pressure_drop", "segregation_percentage"}) {
+      for (const std::string& output : report::kClosureSampledOutputs) {
         const std::string key = output == "pressure_drop" ? bed.dp : output;
         if (!std::isfinite(bed.value(key))) continue;
         std::vector<report::ClosureSampleValue> values;

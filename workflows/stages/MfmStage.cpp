@@ -268,6 +268,12 @@ void MfmStage::checkParams(const json& p, const std::string& ptr, core::json::Di
           "closure \"table\" (closure is \"" +
               p.at("closure").get<std::string>() + "\")");
   }
+  // A spread needs two samples of one kind (report/ClosureSpread); refuse what would fail bed_compare.
+  if (asksForClosureSamples(p) && p.at("closure_samples").get<int>() < 2 &&
+      p.at("closure_samples_per_quantity").get<int>() < 2) {
+    d.add(ptr + tableErrorsNeededBy(p), "one closure sample gives no spread: ask for at least 2 joint samples "
+                                        "(closure_samples) or 2 per quantity (closure_samples_per_quantity)");
+  }
 }
 
 namespace {
