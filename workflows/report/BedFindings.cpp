@@ -22,9 +22,6 @@ std::string withError(double v, double err, int significant = 4) {
 
 std::string number(double v) { return std::isfinite(v) ? core::roundTripText(v) : std::string(); }
 
-const std::vector<std::string>& kClosureOutputs = kClosureSampledOutputs;
-const std::vector<std::string>& kClosureQuantities = kClosureSampledQuantities;
-
 // "± 0.0011 (DEM closures, 8 joint samples scattering by 0.0013, less their own fluctuation
 // errors), mostly from p_theta (72 %)" for an output of a run
 // with closure samples; "" without.
@@ -52,9 +49,9 @@ std::string bedsCsv(const std::vector<BedRun>& runs, const std::vector<std::stri
          "segregation_percentage_err,mean_height_fields,mean_height_fields_err,bed_weight,coordination,"
          "coordination_err,multi_contact_ratio,multi_contact_ratio_err,closure_samples";
   // The spread from the DEM closures of each output and each table quantity's share of it.
-  for (const auto& output : kClosureOutputs) {
+  for (const auto& output : kClosureSampledOutputs) {
     csv << ',' << output << "_closure";
-    for (const auto& q : kClosureQuantities) csv << ',' << output << "_share_" << q;
+    for (const auto& q : kClosureSampledQuantities) csv << ',' << output << "_share_" << q;
   }
   csv << ",reference,reference_kind,reference_height,deviation\n";
   for (const auto& run : runs) {
@@ -68,10 +65,10 @@ std::string bedsCsv(const std::vector<BedRun>& runs, const std::vector<std::stri
       fields += ',' + number(run.value(k));
     }
     fields += ',' + (run.closureSamples > 0 ? std::to_string(run.closureSamples) : std::string());
-    for (const auto& output : kClosureOutputs) {
+    for (const auto& output : kClosureSampledOutputs) {
       const auto it = run.closureSpreads.find(output);
       fields += ',' + (it == run.closureSpreads.end() ? std::string() : number(it->second.spread));
-      for (const auto& q : kClosureQuantities) {
+      for (const auto& q : kClosureSampledQuantities) {
         double share = NAN;
         if (it != run.closureSpreads.end()) {
           for (const auto& s : it->second.quantities) share = s.quantity == q ? s.share : share;

@@ -276,21 +276,14 @@ void MfmStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   }
 }
 
-namespace {
-
-// The table quantities a `table` closure reads (p_theta, eta_theta, j_theta), in table_quantities' order.
-std::vector<std::string> readQuantities(const json& p) {
-  std::vector<std::string> out;
-  if (p.at("closure").get<std::string>() != "table") return out;
-  for (const auto& q : p.at("table_quantities")) out.push_back(tableQuantity(q.get<std::string>()));
-  return out;
-}
-
-}  // namespace
-
 std::vector<Replica> MfmStage::replicas(const json& p) const {
   if (p.at("closure").get<std::string>() != "table") return {Replica{}};
-  return closureSampleReplicas(p, readQuantities(p));
+  // The samples draw the closure tables the run reads (not its mu(I) rheology).
+  std::vector<std::string> quantities;
+  for (const auto& ref : closureTables(p)) {
+    if (ref.quantity != core::kRheologyQuantity) quantities.push_back(ref.quantity);
+  }
+  return closureSampleReplicas(p, quantities);
 }
 
 std::string MfmStage::tableErrorsNeededBy(const json& p) const {
