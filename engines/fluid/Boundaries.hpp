@@ -63,6 +63,9 @@ class Boundaries {
   // The kind of a padded cell: Interior for an interior cell, the patch's for a ghost of a side
   // (corner ghosts, which no stencil reads, are walls).
   [[nodiscard]] BoundaryKind kind(std::size_t cell) const { return kind_[cell]; }
+  // The index in patches() of the patch a ghost cell belongs to; -1 for interior and corner cells
+  // and for ghosts of sides no patch covers (walls).
+  [[nodiscard]] int patchOf(std::size_t cell) const { return patchOf_[cell]; }
   [[nodiscard]] bool hasOutlet() const;
 
   // Whether the face (axis, face) carries an unknown of the momentum equation of `axis`: an

@@ -105,9 +105,10 @@ StencilSystem assembleFractionCorrection(const FlowState& state, const FlowState
   return system;
 }
 
-void solveFractionNonNegative(PhaseFields& phase, const CellField& oldFraction, const CellField& density,
-                              const CellField& oldDensity, const std::array<FaceField, 3>& flux,
-                              const Boundaries& boundaries, double dt) {
+std::array<FaceField, 3> solveFractionNonNegative(PhaseFields& phase, const CellField& oldFraction,
+                                                  const CellField& density, const CellField& oldDensity,
+                                                  const std::array<FaceField, 3>& flux, const Boundaries& boundaries,
+                                                  double dt) {
   const StaggeredGrid& grid = phase.fraction.grid();
   const CellField& eps = phase.fraction;
   StencilSystem system(grid);
@@ -121,6 +122,8 @@ void solveFractionNonNegative(PhaseFields& phase, const CellField& oldFraction, 
       }
     }
   }
+  // Each open face's signed c_f, kept to give the fluxes of the solved fractions.
+  std::array<FaceField, 3> moved{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)};
   for (int a = 0; a < grid.dimensions(); ++a) {
     const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
     const FaceField& F = flux[static_cast<std::size_t>(a)];
@@ -135,9 +138,18 @@ void solveFractionNonNegative(PhaseFields& phase, const CellField& oldFraction, 
       // upwind); a ghost on either side is a known value or no equation.
       if (grid.interior(upwind)) system.ap(upwind) += coefficient;
       if (grid.interior(downwind)) system.anb(downwind, forward ? 2 * a : 2 * a + 1) += coefficient;
+      moved[static_cast<std::size_t>(a)][f] = forward ? coefficient : -coefficient;
     }
   }
   system.solve(phase.fraction);
+  for (int a = 0; a < grid.dimensions(); ++a) {
+    const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
+    FaceField& F = moved[static_cast<std::size_t>(a)];
+    for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
+      if (F[f] != 0.0) F[f] *= eps[v[f] >= 0.0 ? f : grid.neighbour(f, a, +1)];
+    }
+  }
+  return moved;
 }
 
 }  // namespace grainbridge::fluid

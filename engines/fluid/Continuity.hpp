@@ -61,8 +61,11 @@ namespace grainbridge::fluid {
 // SIMPLE loop meets each cell's continuity to the tolerance only, and a thin cell the solids
 // are leaving would otherwise end the step a residual below zero. Overwrites the interior of
 // `phase.fraction`; `flux` are massFluxes of the phase at eps*. Transient steps only (dt > 0).
-void solveFractionNonNegative(PhaseFields& phase, const CellField& oldFraction, const CellField& density,
-                              const CellField& oldDensity, const std::array<FaceField, 3>& flux,
-                              const Boundaries& boundaries, double dt);
+// Returns the fluxes it moved mass with, c_f eps_upwind at the solved eps (what crossed each face
+// over the step, BoundaryFlow.hpp), zero on closed faces.
+[[nodiscard]] std::array<FaceField, 3> solveFractionNonNegative(PhaseFields& phase, const CellField& oldFraction, const CellField& density,
+                                                         const CellField& oldDensity,
+                                                         const std::array<FaceField, 3>& flux,
+                                                         const Boundaries& boundaries, double dt);
 
 }  // namespace grainbridge::fluid

@@ -127,12 +127,27 @@ std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, double 
       add(at + "/solids_fractions", countProblem(b.solidsFractions.size(), "fractions", solidsPhases));
     if (!b.solidsInflow.empty() && b.solidsInflow.size() != solidsPhases)
       add(at + "/solids_inflow", countProblem(b.solidsInflow.size(), "speeds", solidsPhases));
+    for (std::size_t m = 0; m < b.solidsInflow.size(); ++m) {
+      if (b.solidsInflow[m] < 0.0) {
+        add(at + "/solids_inflow/" + std::to_string(m),
+            "is " + core::humanNumber(b.solidsInflow[m]) +
+                " m/s: a speed into the domain, not negative (solids leave through a pressure_outlet)");
+      }
+    }
+    // A wall lets nothing through: its phases would be dropped without a word.
+    const bool wall = *kind == BoundaryKind::NoSlipWall || *kind == BoundaryKind::FreeSlipWall;
+    if (wall && !b.solidsFractions.empty())
+      add(at + "/solids_fractions", "a " + b.kind + " lets no solids in: feed them through a velocity_inlet");
+    if (wall && !b.solidsInflow.empty())
+      add(at + "/solids_inflow", "a " + b.kind + " lets no solids in: feed them through a velocity_inlet");
     const std::vector<PhaseInflow> phases = inflow(b, side, solidsPhases);
     double solids = 0.0;
     for (std::size_t m = 1; m < phases.size(); ++m) solids += phases[m].fraction;
     if (solids > packedFraction) {
       add(at + "/solids_fractions", "the solids fractions add up to " + core::humanNumber(solids) +
-                                        ", above the packed solids fraction " + core::humanNumber(packedFraction));
+                                        ", above the packed solids fraction " + core::humanNumber(packedFraction) +
+                                        " (eps_s,max: raise packed_solids_fraction, whose default is 1 - "
+                                        "critical_void_fraction, or feed less)");
     }
     if (*kind == BoundaryKind::VelocityInlet && fixedStep) {
       for (std::size_t m = 0; m < phases.size(); ++m) {

@@ -164,15 +164,17 @@ void gasFromSolids(FlowState& state) {
 // A converged step's solids fractions, each phase's continuity solved implicitly with the
 // converged faces (Continuity.hpp): exact mass balance and no undershoot below zero, which the
 // iteration's tolerance alone leaves in thin cells; the gas is what the solids leave.
+// Fills each solved solids phase's boundary flows (the rest stay zero).
 void closeSolidsContinuity(FlowState& state, const FlowState& old, const FlowProperties& props,
                            const FlowProperties& oldProps, const Boundaries& boundaries, double dt,
-                           const std::vector<char>& given) {
+                           const std::vector<char>& given, std::vector<std::vector<PatchFlow>>& boundaryFlow) {
   for (std::size_t m = 1; m < state.phases.size(); ++m) {
     if (given[m] != 0) continue;
     PhaseFields& phase = state.phases[m];
     const auto flux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt));
-    solveFractionNonNegative(phase, old.phases[m].fraction, props.phases[m].density, oldProps.phases[m].density, flux,
-                             boundaries, dt);
+    const auto moved = solveFractionNonNegative(phase, old.phases[m].fraction, props.phases[m].density,
+                                                oldProps.phases[m].density, flux, boundaries, dt);
+    boundaryFlow[m] = patchFlows(moved, boundaries);
   }
   gasFromSolids(state);
   boundaries.apply(state, &props);
@@ -337,7 +339,12 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     if (worst.value < settings.tolerance) {
       result.converged = true;
       boundaries.apply(state, &props);
-      if (dt > 0.0 && M > 1) closeSolidsContinuity(state, old, props, oldProps, boundaries, dt, given);
+      if (dt > 0.0) {
+        result.boundaryFlow.assign(M, std::vector<PatchFlow>(boundaries.patches().size()));
+        if (M > 1) closeSolidsContinuity(state, old, props, oldProps, boundaries, dt, given, result.boundaryFlow);
+        result.boundaryFlow[0] =
+            patchFlows(massFluxes(state.phases[0], props.phases[0].density, boundaries), boundaries);
+      }
       return result;
     }
   }

@@ -19,6 +19,7 @@
 
 #include "core/Types.hpp"
 #include "engines/fluid/Boundaries.hpp"
+#include "engines/fluid/BoundaryFlow.hpp"
 #include "engines/fluid/FlowState.hpp"
 #include "engines/fluid/PhaseProperties.hpp"
 #include "engines/fluid/StencilSystem.hpp"
@@ -97,6 +98,11 @@ struct StepResult {
   std::array<int, 3> cell{0, 0, 0};
   // A non-finite value or a fraction outside [0, 1] stops the iterations at once; its reason.
   std::string failure;
+  // A converged transient step's flow through each boundary patch, per phase (the gas first) and
+  // patch [kg/s]: a solids phase's from the fluxes its closing continuity solve moved mass with
+  // (so its held mass changes by exactly in - out over the step), the gas's from the converged
+  // state (to the continuity tolerance); a given phase's is zero. Empty otherwise.
+  std::vector<std::vector<PatchFlow>> boundaryFlow;
 };
 
 // Advances `state` by dt (> 0). `state.time` moves on only when the step converged; otherwise,

@@ -22,6 +22,7 @@ MfmEngine::MfmEngine(const MultiFluidSetup& setup, const std::function<void(Mult
     : MfmEngine(setup, outputDir, std::move(stamp)) {
   initial(*engine_);
   engine_->boundaries().apply(engine_->state());
+  engine_->startMassAccount();
 }
 
 void MfmEngine::advance(bool /*observed*/) {
@@ -114,6 +115,17 @@ void MfmEngine::saveState(const fs::path& path, const std::string& fingerprint) 
     f.writeAttribute("/", "covered_cell_steps", static_cast<std::int64_t>(stats.coveredCellSteps));
     f.writeAttribute("/", "table_solids_steps", stats.tableSolidsSteps);
     f.writeAttribute("/", "covered_solids_steps", stats.coveredSolidsSteps);
+    f.writeDataset("/initial_mass", stats.initialMass);
+    std::vector<double> crossed;
+    for (const auto& phase : stats.boundaryMass) {
+      for (const fluid::PatchFlow& patch : phase) {
+        crossed.push_back(patch.in);
+        crossed.push_back(patch.out);
+      }
+    }
+    const auto phases = static_cast<hsize_t>(stats.boundaryMass.size());
+    const auto patches = static_cast<hsize_t>(engine_->boundaries().patches().size());
+    f.writeDataset("/boundary_mass", crossed, {phases, patches, 2});
   });
 }
 
@@ -134,6 +146,16 @@ std::unique_ptr<MfmEngine> MfmEngine::restore(const MultiFluidSetup& setup, cons
   stats.coveredCellSteps = f.readIntAttribute("/", "covered_cell_steps");
   stats.tableSolidsSteps = f.readDoubleAttribute("/", "table_solids_steps");
   stats.coveredSolidsSteps = f.readDoubleAttribute("/", "covered_solids_steps");
+  const std::size_t phases = e->engine_->state().phases.size();
+  const std::size_t patches = e->engine_->boundaries().patches().size();
+  stats.initialMass = f.readDoubles("/initial_mass", {phases});
+  const std::vector<double> crossed = f.readDoubles("/boundary_mass", {phases, patches, 2});
+  stats.boundaryMass.assign(phases, std::vector<fluid::PatchFlow>(patches));
+  for (std::size_t m = 0; m < phases; ++m) {
+    for (std::size_t p = 0; p < patches; ++p) {
+      stats.boundaryMass[m][p] = {crossed[2 * (m * patches + p)], crossed[2 * (m * patches + p) + 1]};
+    }
+  }
   e->engine_->restoreStatistics(stats);
   return e;
 }

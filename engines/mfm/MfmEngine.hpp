@@ -29,7 +29,8 @@ struct MultiFluidSetup {
 
 // 2: each phase's granular temperature too. The flow state is fluid/FlowStateIo's layout at the
 // root, the step, adaptive step and statistics attributes beside it.
-inline constexpr int kCheckpointFormatVersion = 2;
+// 3: the boundary mass account (initial_mass, boundary_mass: phase x patch x {in, out}).
+inline constexpr int kCheckpointFormatVersion = 3;
 
 class MfmEngine final : public core::engine::SteppedEngine {
  public:

@@ -41,6 +41,7 @@ void MultiFluidEngine::step(double limit) {
       stats_.iterations += r.iterations;
       stats_.lastDt = dt;
       stats_.lastResidual = r.residual;
+      accountBoundaryFlow(r.boundaryFlow, dt);
       if (model_.params().closure.kind() == "table") countCoverage();
       return;
     }
@@ -66,6 +67,35 @@ void MultiFluidEngine::step(double limit) {
       }
       msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")";
       throw Error(msg.str());
+    }
+  }
+}
+
+std::vector<double> MultiFluidEngine::heldMass() const {
+  const std::size_t phases = state_->phases.size();
+  std::vector<double> held(phases, 0.0);
+  fluid::CellField gasDensity(*grid_, 0.0);
+  for (std::size_t c = 0; c < grid_->paddedCount(); ++c)
+    gasDensity[c] = model_.params().gas.densityAt(state_->pressure[c]);
+  held[0] = fluid::heldMass(state_->phases[0].fraction, gasDensity);
+  for (std::size_t m = 1; m < phases; ++m) {
+    const fluid::CellField density(*grid_, model_.params().solids[m - 1].density);
+    held[m] = fluid::heldMass(state_->phases[m].fraction, density);
+  }
+  return held;
+}
+
+void MultiFluidEngine::startMassAccount() {
+  stats_.initialMass = heldMass();
+  stats_.boundaryMass.assign(state_->phases.size(), std::vector<fluid::PatchFlow>(boundaries_->patches().size()));
+}
+
+void MultiFluidEngine::accountBoundaryFlow(const std::vector<std::vector<fluid::PatchFlow>>& rates, double dt) {
+  if (stats_.boundaryMass.size() != rates.size()) return;  // no account started
+  for (std::size_t m = 0; m < rates.size(); ++m) {
+    for (std::size_t p = 0; p < rates[m].size(); ++p) {
+      stats_.boundaryMass[m][p].in += rates[m][p].in * dt;
+      stats_.boundaryMass[m][p].out += rates[m][p].out * dt;
     }
   }
 }

@@ -24,6 +24,11 @@ struct StepStatistics {
   // dilute fraction): cell-steps, and solids volume-steps, inside every table, and in all.
   long tableCellSteps = 0, coveredCellSteps = 0;
   double tableSolidsSteps = 0.0, coveredSolidsSteps = 0.0;  // [m^3]
+  // What crossed each boundary patch since the run began, per phase (the gas first) and patch,
+  // in and out apart [kg], summed over the converged steps (fluid::StepResult::boundaryFlow).
+  std::vector<std::vector<fluid::PatchFlow>> boundaryMass;
+  // Each phase's mass at the run's start [kg]: the balance's held0.
+  std::vector<double> initialMass;
 };
 
 class MultiFluidEngine {
@@ -42,6 +47,10 @@ class MultiFluidEngine {
   [[nodiscard]] fluid::TimeStepControl& timeStep() { return control_; }
   [[nodiscard]] const fluid::TimeStepControl& timeStep() const { return control_; }
   void restoreStatistics(const StepStatistics& s) { stats_ = s; }
+  // Each phase's mass in the domain now, the gas first [kg] (the gas at each cell's pressure).
+  [[nodiscard]] std::vector<double> heldMass() const;
+  // Starts the boundary bookkeeping at the current state: held0 from heldMass(), nothing crossed.
+  void startMassAccount();
   // Called with a line saying why a step is retried at a smaller one (the stage logs it).
   void onRetry(std::function<void(const std::string&)> log) { onRetry_ = std::move(log); }
 
@@ -56,6 +65,8 @@ class MultiFluidEngine {
   [[nodiscard]] double speedOverSpacing() const;
   // Adds the converged state's cells to the table coverage counts.
   void countCoverage();
+  // Adds a converged step's boundary flows (rates [kg/s] over dt) to the account.
+  void accountBoundaryFlow(const std::vector<std::vector<fluid::PatchFlow>>& rates, double dt);
 
   std::unique_ptr<fluid::StaggeredGrid> grid_;
   std::unique_ptr<fluid::Boundaries> boundaries_;

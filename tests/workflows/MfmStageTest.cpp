@@ -40,7 +40,9 @@ TEST(MfmStage, GrainSmokeWritesFramesMeanFieldsSeriesAndAFluidizationCurve) {
     EXPECT_TRUE(fs::exists(bed / "mean/fields.xmf"));
     const std::string series = readText(bed / "series.csv");
     EXPECT_EQ(series.substr(0, series.find('\n')),
-              "time,step,dp_bed,mean_height_grain,solids_volume_grain,dt,solver_steps,iterations,residual");
+              "time,step,dp_bed,mean_height_grain,solids_volume_grain,dt,solver_steps,iterations,residual,"
+              "mass_gas,mass_in_gas,mass_out_gas,mass_out_gas_y_high,mass_grain,mass_in_grain,mass_out_grain,"
+              "mass_out_grain_y_high");
     const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
     // Short runs: a sanity bound on the drop (below the 664 Pa weight at low inflow, not far
     // above it at high), an error that is a number, and the inventory kept.
@@ -48,6 +50,12 @@ TEST(MfmStage, GrainSmokeWritesFramesMeanFieldsSeriesAndAFluidizationCurve) {
     EXPECT_LT(summary.at("dp_bed").get<double>(), 1000.0);
     EXPECT_GE(summary.at("dp_bed_err").get<double>(), 0.0);
     EXPECT_LT(std::abs(summary.at("solids_volume_change").get<double>()), 1e-6);
+    // The mass account: the gas flows through, the walled grains stay, each balance closes.
+    EXPECT_GT(summary.at("mass_in_gas").get<double>(), 0.0);
+    EXPECT_EQ(summary.at("mass_in_grain").get<double>(), 0.0);
+    EXPECT_EQ(summary.at("mass_out_grain").get<double>(), 0.0);
+    EXPECT_LT(std::abs(summary.at("mass_balance_grain").get<double>()), 1e-12);
+    EXPECT_LT(std::abs(summary.at("mass_balance_gas").get<double>()), 1e-6);
     // What the curve is read against: the bed's buoyant weight (664 Pa at eps 0.404 less the
     // 2 % perturbation's share) and the drag law's U_mf (0.797 m/s for C 0.8, D 2.65).
     EXPECT_NEAR(summary.at("bed_weight").get<double>(), 664.0, 0.03 * 664.0);

@@ -2,10 +2,56 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/BedMeasures.hpp"
+#include "engines/fluid/BoundaryFlow.hpp"
 
 namespace grainbridge::workflows::stages {
+
+std::vector<std::string> outletLabels(const std::vector<std::string>& outletSides) {
+  std::vector<std::string> labels(outletSides.size());
+  for (std::size_t k = 0; k < outletSides.size(); ++k) {
+    if (outletSides[k].empty()) continue;
+    const auto shared = std::count(outletSides.begin(), outletSides.end(), outletSides[k]);
+    labels[k] = shared > 1 ? outletSides[k] + "_" + std::to_string(k) : outletSides[k];
+  }
+  return labels;
+}
+
+std::vector<std::string> massAccountColumns(const std::vector<std::string>& phases,
+                                            const std::vector<std::string>& outletSides) {
+  std::vector<std::string> names;
+  const auto labels = outletLabels(outletSides);
+  for (const auto& phase : phases) {
+    names.push_back("mass_" + phase);
+    names.push_back("mass_in_" + phase);
+    names.push_back("mass_out_" + phase);
+    for (const auto& label : labels) {
+      if (!label.empty()) names.push_back("mass_out_" + phase + "_" + label);
+    }
+  }
+  return names;
+}
+
+namespace {
+
+std::vector<std::string> outletSidesOf(const std::vector<fluid::BoundaryPatch>& patches) {
+  static const char* const sides[] = {"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"};
+  std::vector<std::string> out;
+  for (const auto& patch : patches)
+    out.emplace_back(patch.kind == fluid::BoundaryKind::PressureOutlet ? sides[patch.side] : "");
+  return out;
+}
+
+std::vector<std::string> phaseNames(const MfmSetup& setup) {
+  std::vector<std::string> names{"gas"};
+  for (const auto& s : setup.engine.model.solids) names.push_back(s.name);
+  return names;
+}
+
+}  // namespace
 
 MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup& setup, std::string stage)
     : engine_(engine), setup_(setup), stage_(std::move(stage)) {
@@ -16,6 +62,11 @@ MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup&
   // of two rows give the iterations per step over an interval), the last step's worst residual.
   for (const char* n : {"dt", "solver_steps", "iterations", "residual"}) names_.push_back(n);
   if (setup.segregation) names_.push_back("segregation_percentage");
+  const auto sides = outletSidesOf(setup.engine.patches);
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    if (!sides[k].empty()) outlets_.push_back(k);
+  }
+  for (auto& name : massAccountColumns(phaseNames(setup), sides)) names_.push_back(std::move(name));
 }
 
 void MfmSeriesColumns::sample(driver::SeriesRow& row) {
@@ -37,6 +88,14 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
   if (const auto& seg = setup_.segregation) {
     values.push_back(fluid::segregationPercentage(values[setup_.taps.size() + seg->small],
                                                   values[setup_.taps.size() + seg->large], seg->smallShare));
+  }
+  const auto held = engine_.engine().heldMass();
+  for (std::size_t m = 0; m < held.size(); ++m) {
+    const fluid::PatchFlow crossed = fluid::total(stats.boundaryMass[m]);
+    values.push_back(held[m]);
+    values.push_back(crossed.in);
+    values.push_back(crossed.out);
+    for (const std::size_t k : outlets_) values.push_back(stats.boundaryMass[m][k].out);
   }
   for (double v : values) row.add(v);
   // The residual history in the log, ten lines over the run: what the solver needed since the

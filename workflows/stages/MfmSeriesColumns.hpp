@@ -1,7 +1,7 @@
 #pragma once
 // The columns of an `mfm` stage's series.csv, sampled at every output interval: the pressure drop
 // between each pair of taps, the Eq. 5.22 mean particle height and the volume of each solids
-// phase, and the solver's last time step. Samples inside the averaging window are kept for the
+// phase, the solver's last time step, and each phase's mass account (held, in, out). Samples inside the averaging window are kept for the
 // summary's block averages, and the frames of the window for the time-averaged fields.
 #include <map>
 #include <string>
@@ -13,6 +13,15 @@
 #include "workflows/stages/MfmSetup.hpp"
 
 namespace grainbridge::workflows::stages {
+
+// The boundary mass account's columns (engines/fluid/BoundaryFlow): per phase, the gas first,
+// `mass_<phase>` held [kg], `mass_in_<phase>` and `mass_out_<phase>` crossed since the start
+// [kg], then `mass_out_<phase>_<outlet>` for each pressure outlet. `outletSides` has one entry per
+// boundary patch: the side's name ("x_high") for an outlet, "" otherwise. An outlet is named by
+// its side, or "<side>_<patch index>" where two outlets share a side.
+[[nodiscard]] std::vector<std::string> outletLabels(const std::vector<std::string>& outletSides);
+[[nodiscard]] std::vector<std::string> massAccountColumns(const std::vector<std::string>& phases,
+                                                          const std::vector<std::string>& outletSides);
 
 class MfmSeriesColumns final : public driver::SeriesColumns {
  public:
@@ -29,6 +38,7 @@ class MfmSeriesColumns final : public driver::SeriesColumns {
   const mfm::MfmEngine& engine_;
   const MfmSetup& setup_;
   std::vector<std::string> names_;
+  std::vector<std::size_t> outlets_;  // the patches that are pressure outlets
   std::string stage_;
   long lastSteps_ = 0, lastIterations_ = 0, lastRetries_ = 0;
   double nextLog_ = 0.0;

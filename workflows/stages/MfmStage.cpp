@@ -1,5 +1,6 @@
 #include "workflows/stages/MfmStage.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <spdlog/spdlog.h>
@@ -11,6 +12,7 @@
 #include "core/averaging/DominantFrequency.hpp"
 #include "core/io/FieldFrameWriter.hpp"
 #include "engines/fluid/BedMeasures.hpp"
+#include "engines/fluid/BoundaryFlow.hpp"
 #include "engines/fluid/FrameMaps.hpp"
 #include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/MfmEngine.hpp"
@@ -449,6 +451,22 @@ void MfmStage::run(StageContext& ctx) const {
     if (initialVolumes[m] > 0.0) summary["solids_volume_change_" + solids[m].name] = now / initialVolumes[m] - 1.0;
   }
   if (totalInitial > 0.0) summary["solids_volume_change"] = totalNow / totalInitial - 1.0;
+  // Each phase's mass account: (held - held0 - in + out) / max(in, held0), round-off for the
+  // solids (their closing continuity solves move exactly what crosses the boundary), the
+  // continuity tolerance for the gas.
+  {
+    const auto held = engine->engine().heldMass();
+    std::vector<std::string> phases{"gas"};
+    for (const auto& phase : solids) phases.push_back(phase.name);
+    for (std::size_t m = 0; m < phases.size(); ++m) {
+      const auto [in, out] = fluid::total(stats.boundaryMass[m]);
+      const double held0 = stats.initialMass[m];
+      const double scale = std::max(in, held0);
+      summary["mass_in_" + phases[m]] = in;
+      summary["mass_out_" + phases[m]] = out;
+      summary["mass_balance_" + phases[m]] = scale > 0.0 ? (held[m] - held0 - in + out) / scale : 0.0;
+    }
+  }
   if (setup.segregation) {
     addAverage(summary, "segregation_percentage", window.at("segregation_percentage"));
     summary["segregation_small_share"] = setup.segregation->smallShare;
@@ -513,6 +531,17 @@ std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
     out.seriesColumns.push_back("segregation_percentage");
   }
   keys.push_back("closure");
+  // The mass account of every phase, the gas first.
+  std::vector<std::string> phases{"gas"};
+  for (const auto& phase : solids) phases.push_back(phase.at("name").get<std::string>());
+  for (const auto& phase : phases) {
+    for (const char* k : {"mass_in_", "mass_out_", "mass_balance_"}) keys.push_back(k + phase);
+  }
+  std::vector<std::string> sides;
+  for (const auto& patch : p.value("boundaries", json::array())) {
+    sides.push_back(patch.value("kind", "") == "pressure_outlet" ? patch.value("side", "") : "");
+  }
+  for (auto& column : massAccountColumns(phases, sides)) out.seriesColumns.push_back(std::move(column));
   return out;
 }
 

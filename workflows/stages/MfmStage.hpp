@@ -28,7 +28,9 @@ class MfmStage final : public StageType {
   //    gradient (engines/fluid Momentum); one solids phase unchanged bit for bit.
   // 8: with several solids phases a cell without solids has no kinetic viscosity or conductivity
   //    (was the pure granular gas's); one solids phase unchanged bit for bit.
-  [[nodiscard]] int implVersion() const override { return 8; }
+  // 9: series and summary carry each phase's boundary mass account (mass_<phase>, mass_in_,
+  //    mass_out_ and per outlet, mass_balance_).
+  [[nodiscard]] int implVersion() const override { return 9; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

@@ -107,6 +107,20 @@ TEST(FluidSetup, EachPatchRuleNamesItsKey) {
   const auto packed = s.problems(1, 0.6);
   ASSERT_EQ(pointersOf(packed), (std::vector<std::string>{"/boundaries/0/solids_fractions"}));
   EXPECT_NE(packed[0].message.find("above the packed solids fraction 0.6"), std::string::npos) << packed[0].message;
+  EXPECT_NE(packed[0].message.find("packed_solids_fraction"), std::string::npos) << packed[0].message;
+  // A negative feed speed, and solids given to a wall (which would drop them silently).
+  s = jetBed();
+  s.boundaries[0].solidsFractions = {0.1};
+  s.boundaries[0].solidsInflow = {-0.5};
+  EXPECT_EQ(pointersOf(s.problems(1, 0.6)), (std::vector<std::string>{"/boundaries/0/solids_inflow/0"}));
+  s = jetBed();
+  ASSERT_EQ(s.boundaries[2].kind, "free_slip_wall");
+  s.boundaries[2].solidsFractions = {0.1};
+  s.boundaries[2].solidsInflow = {0.5};
+  const auto wall = s.problems(1, 0.6);
+  ASSERT_EQ(pointersOf(wall),
+            (std::vector<std::string>{"/boundaries/2/solids_fractions", "/boundaries/2/solids_inflow"}));
+  EXPECT_NE(wall[0].message.find("velocity_inlet"), std::string::npos) << wall[0].message;
   s = jetBed();
   s.boundaries[2].side = "y_low";  // over the jet
   const auto overlap = s.problems(1, 0.6);
