@@ -165,7 +165,9 @@ void Boundaries::apply(FlowState& state, const FlowProperties* properties) const
     const bool gasLeaves = state.phases[0].velocity[static_cast<std::size_t>(a)][face] * ghost.direction >= 0.0;
     for (std::size_t m = 0; m < phaseCount; ++m) {
       PhaseFields& phase = state.phases[m];
-      phase.granularTemperature[g] = phase.granularTemperature[in];
+      phase.granularTemperature[g] = k == BoundaryKind::VelocityInlet && patch->phases[m].granularTemperature >= 0.0
+                                         ? patch->phases[m].granularTemperature
+                                         : phase.granularTemperature[in];
       FaceField& normal = phase.velocity[static_cast<std::size_t>(a)];
       const PhaseProperties* slip = properties != nullptr && properties->phases[m].partialSlipWalls
                                         ? &properties->phases[m]

@@ -14,8 +14,9 @@
 // Sides no patch covers are no-slip walls. A phase whose properties ask for partial slip
 // (PhaseProperties::partialSlipWalls, Johnson-Jackson) has at no-slip wall patches the Robin
 // ghost value that gives the wall traction -c v_slip (Eq. 5.8). A granular temperature's ghosts
-// repeat the interior (no conduction through the side); the wall's energy flux (Eq. 5.9) is the
-// granular-energy equation's own boundary term.
+// repeat the interior (no conduction through the side), except at an inlet that states the
+// temperature its inflow carries; the wall's energy flux (Eq. 5.9) is the granular-energy
+// equation's own boundary term.
 #include <array>
 #include <cstddef>
 #include <string>
@@ -38,6 +39,10 @@ enum Side : int { XLow = 0, XHigh = 1, YLow = 2, YHigh = 3, ZLow = 4, ZHigh = 5 
 struct PhaseInflow {
   double fraction = 0.0;         // eps_m [-]
   Vec3 velocity = Vec3::Zero();  // v_m [m/s]
+  // The granular temperature the inflow carries [m^2/s^2] (MFiX's BC_THETA_M): the inlet ghost's
+  // theta, which the granular-energy equation convects and conducts in. Negative: none given, the
+  // ghost repeats the interior (the inflow carries the theta of the cell it enters).
+  double granularTemperature = -1.0;
 };
 
 struct BoundaryPatch {

@@ -49,6 +49,7 @@ std::vector<PhaseInflow> inflow(const PatchSetup& b, int side, std::size_t solid
   for (std::size_t m = 0; m < solidsPhases; ++m) {
     phases[m + 1].fraction = m < b.solidsFractions.size() ? b.solidsFractions[m] : 0.0;
     phases[m + 1].velocity[axis] = inward * (m < b.solidsInflow.size() ? b.solidsInflow[m] : 0.0);
+    if (m < b.solidsTemperature.size()) phases[m + 1].granularTemperature = b.solidsTemperature[m];
     solids += phases[m + 1].fraction;
   }
   phases[0].fraction = 1.0 - solids;
@@ -134,6 +135,14 @@ std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, double 
                 " m/s: a speed into the domain, not negative (solids leave through a pressure_outlet)");
       }
     }
+    if (!b.solidsTemperature.empty() && b.solidsTemperature.size() != solidsPhases)
+      add(at + "/solids_temperature", countProblem(b.solidsTemperature.size(), "temperatures", solidsPhases));
+    if (!b.solidsTemperature.empty() && *kind != BoundaryKind::VelocityInlet)
+      add(at + "/solids_temperature", "only a velocity_inlet's inflow carries a stated granular temperature");
+    for (std::size_t m = 0; m < b.solidsTemperature.size(); ++m) {
+      if (b.solidsTemperature[m] < 0.0)
+        add(at + "/solids_temperature/" + std::to_string(m), "is negative: a granular temperature is >= 0");
+    }
     // A wall lets nothing through: its phases would be dropped without a word.
     const bool wall = *kind == BoundaryKind::NoSlipWall || *kind == BoundaryKind::FreeSlipWall;
     if (wall && !b.solidsFractions.empty())
@@ -208,6 +217,7 @@ void to_json(json& j, const PatchSetup& p) {
        {"gas_inflow", p.gasInflow},
        {"solids_fractions", p.solidsFractions},
        {"solids_inflow", p.solidsInflow},
+       {"solids_temperature", p.solidsTemperature},
        {"pressure", p.pressure}};
   if (p.from) j["from"] = *p.from;
   if (p.to) j["to"] = *p.to;
@@ -221,6 +231,7 @@ void from_json(const json& j, PatchSetup& p) {
   p.gasInflow = j.at("gas_inflow");
   p.solidsFractions = j.at("solids_fractions").get<std::vector<double>>();
   p.solidsInflow = j.at("solids_inflow").get<std::vector<double>>();
+  p.solidsTemperature = j.value("solids_temperature", std::vector<double>{});
   p.pressure = j.at("pressure");
 }
 

@@ -33,6 +33,9 @@ struct PatchSetup {
   double gasInflow = 0.0;               // gas speed into the domain, normal to the side [m/s]
   std::vector<double> solidsFractions;  // per solids phase entering (outlet: of the backflow); empty: none
   std::vector<double> solidsInflow;     // per solids phase, speed into the domain [m/s]; empty: 0
+  // Inlet: per solids phase, the granular temperature the inflow carries [m^2/s^2]; empty: the
+  // interior's (zero gradient).
+  std::vector<double> solidsTemperature;
   double pressure = 101325.0;           // outlet: the pressure beyond the outlet face [Pa]
 };
 

@@ -45,6 +45,10 @@ std::shared_ptr<const ParamSchema> boundarySchema() {
       .add(ParamSpec::quantityList("solids_inflow", Dimension::velocity(), 0)
                .defaultValue(json::array())
                .doc("inlet: each solids phase's speed into the domain; default 0"))
+      .add(ParamSpec::quantityList("solids_temperature", Dimension::granularTemperature(), 0)
+               .defaultValue(json::array())
+               .doc("inlet: the granular temperature each solids phase's inflow carries (MFiX's BC_THETA_M); "
+                    "default the interior's (zero gradient)"))
       .add(ParamSpec::quantity("pressure", Dimension::pressure())
                .defaultValue("101325 Pa")
                .doc("outlet: the pressure beyond the outlet face"));

@@ -98,3 +98,22 @@ TEST(Boundaries, OverlappingOrOffSidePatchesAreRefused) {
   fewPhases.phases.pop_back();
   EXPECT_THROW(Boundaries(grid, {fewPhases}, 2), Error);
 }
+
+// The granular temperature an inflow carries (issue 29): a jet that states it puts it in its
+// ghosts, which the granular-energy equation convects and conducts in; without it, and on the
+// rest of the side, the ghost repeats the interior (zero gradient).
+TEST(Boundaries, AnInletStatesTheGranularTemperatureItsInflowCarries) {
+  const StaggeredGrid grid = grid8x4();
+  BoundaryPatch stated = jet();
+  stated.phases[1].granularTemperature = 0.25;
+  for (const bool given : {true, false}) {
+    const Boundaries b(grid, {given ? stated : jet()}, 2);
+    FlowState st(grid, 2);
+    for (std::size_t c = 0; c < grid.paddedCount(); ++c) st.phases[1].granularTemperature[c] = 0.01;
+    b.apply(st);
+    for (int i = 0; i < 8; ++i) {
+      const bool onJet = i >= 3 && i < 5;
+      EXPECT_EQ(st.phases[1].granularTemperature(i, -1, 0), given && onJet ? 0.25 : 0.01) << "cell " << i;
+    }
+  }
+}

@@ -121,6 +121,16 @@ TEST(FluidSetup, EachPatchRuleNamesItsKey) {
   ASSERT_EQ(pointersOf(wall),
             (std::vector<std::string>{"/boundaries/2/solids_fractions", "/boundaries/2/solids_inflow"}));
   EXPECT_NE(wall[0].message.find("velocity_inlet"), std::string::npos) << wall[0].message;
+  // The granular temperature an inflow carries: an inlet's, one per phase, not negative.
+  s = jetBed();
+  s.boundaries[0].solidsTemperature = {0.01};
+  EXPECT_TRUE(s.problems(1, 0.6).empty());
+  EXPECT_EQ(s.patches(1)[0].phases[1].granularTemperature, 0.01);
+  EXPECT_LT(jetBed().patches(1)[0].phases[1].granularTemperature, 0.0);  // none stated
+  s.boundaries[0].solidsTemperature = {-0.01};
+  s.boundaries[1].solidsTemperature = {0.01};
+  EXPECT_EQ(pointersOf(s.problems(1, 0.6)),
+            (std::vector<std::string>{"/boundaries/0/solids_temperature/0", "/boundaries/1/solids_temperature"}));
   s = jetBed();
   s.boundaries[2].side = "y_low";  // over the jet
   const auto overlap = s.problems(1, 0.6);
