@@ -104,6 +104,15 @@ bool Boundaries::hasOutlet() const {
                      [](const BoundaryPatch& p) { return p.kind == BoundaryKind::PressureOutlet; });
 }
 
+const BoundaryPatch* Boundaries::outletOfFace(int axis, std::size_t face, int& inward) const {
+  if (!openFace(axis, face)) return nullptr;
+  const bool lowSide = !grid_->interior(face);
+  const std::size_t ghost = lowSide ? face : grid_->neighbour(face, axis, +1);
+  if (grid_->interior(ghost) || kind_[ghost] != BoundaryKind::PressureOutlet) return nullptr;
+  inward = lowSide ? +1 : -1;
+  return &patches_[static_cast<std::size_t>(patchOf_[ghost])];
+}
+
 bool Boundaries::faceIsSolved(int axis, std::size_t face) const {
   const auto at = grid_->coordinates(face);
   for (int b = 0; b < 3; ++b) {
@@ -178,10 +187,12 @@ void Boundaries::apply(FlowState& state, const FlowProperties* properties) const
           normal[face] = patch->phases[m].velocity[a];
           break;
         case BoundaryKind::PressureOutlet: {
-          // Each phase by its own direction: what leaves carries the interior's fraction, what
-          // enters the backflow state's (solids falling back into the domain bring none).
-          const bool leaves = m == 0 ? gasLeaves : normal[face] * ghost.direction >= 0.0;
-          phase.fraction[g] = leaves ? phase.fraction[in] : patch->phases[m].fraction;
+          // The gas: leaving, the interior's fraction; entering, the backflow state's. A solids
+          // phase's ghost repeats the interior whichever way it moves, so that the outlet face's
+          // momentum coefficients (its mean fraction) do not jump when a phase hovering at the
+          // outlet turns: that flip kept the chaff at the combine's top outlet from converging.
+          // What a solids phase brings back in is the backflow state's all the same (massFluxes).
+          phase.fraction[g] = m > 0 || gasLeaves ? phase.fraction[in] : patch->phases[m].fraction;
           break;
         }
         default:

@@ -9,8 +9,10 @@
 //                  inflow, or a jet: a patch covering part of a side, aligned with the faces);
 //                  tangential ghost = 2 v_in - interior, so the face value is the inflow's;
 //   pressure outlet the ghost holds the outlet pressure; the normal velocity on the outlet face is
-//                  solved from momentum; a phase leaving takes the interior's fraction, a phase
-//                  flowing back in brings the patch's backflow state's.
+//                  solved from momentum; the gas leaving takes the interior's fraction, flowing
+//                  back in the patch's backflow state's; a solids phase's ghost repeats the
+//                  interior either way, and what it carries back in is the backflow state's
+//                  (massFluxes), so its face coefficients do not jump when it turns.
 // Sides no patch covers are no-slip walls. A phase whose properties ask for partial slip
 // (PhaseProperties::partialSlipWalls, Johnson-Jackson) has at no-slip wall patches the Robin
 // ghost value that gives the wall traction -c v_slip (Eq. 5.8). A granular temperature's ghosts
@@ -78,6 +80,9 @@ class Boundaries {
   [[nodiscard]] bool solvedFace(int axis, std::size_t face) const {
     return solved_[static_cast<std::size_t>(axis)][face] != 0;
   }
+  // The pressure outlet whose boundary face (axis, face) is, or null; `inward` is +1 when a
+  // positive velocity on it enters the domain (a low side), -1 otherwise.
+  [[nodiscard]] const BoundaryPatch* outletOfFace(int axis, std::size_t face, int& inward) const;
   // Whether the face (axis, face) lets mass through: not a wall face.
   [[nodiscard]] bool openFace(int axis, std::size_t face) const {
     return open_[static_cast<std::size_t>(axis)][face] != 0;

@@ -27,7 +27,7 @@ double faceFraction(const CellField& fraction, int axis, std::size_t face, doubl
 }
 
 std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& density, const Boundaries& boundaries,
-                                    const OutflowBudget& budget) {
+                                    const OutflowBudget& budget, std::size_t m) {
   const StaggeredGrid& grid = boundaries.grid();
   const CellField& fraction = phase.fraction;
   const auto upwindOf = [&](int a, std::size_t f, double u) { return u >= 0.0 ? f : grid.neighbour(f, a, +1); };
@@ -38,7 +38,13 @@ std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& d
     const FaceField& v = phase.velocity[static_cast<std::size_t>(a)];
     FaceField& face = flux[static_cast<std::size_t>(a)];
     for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
-      if (boundaries.openFace(a, f)) face[f] = faceFraction(fraction, a, f, v[f]);
+      if (!boundaries.openFace(a, f)) continue;
+      face[f] = faceFraction(fraction, a, f, v[f]);
+      int inward = 0;
+      if (m > 0) {
+        if (const BoundaryPatch* outlet = boundaries.outletOfFace(a, f, inward); outlet && v[f] * inward > 0.0)
+          face[f] = outlet->phases[m].fraction;
+      }
     }
   }
   std::optional<CellField> antidiffusiveOut;

@@ -28,7 +28,10 @@ struct OutflowBudget {
 // they are scaled down to it (Zalesak's limiting of the outflows alone). The upwind part is
 // implicit and keeps the fraction non-negative by itself (an M-matrix), so then no face carries
 // more out of a cell than the cell holds over the step.
+// `m` is the phase's index (0 the gas): where a solids phase flows back in through a pressure
+// outlet its face carries the patch's backflow fraction (the ghost repeats the interior, Boundaries).
 [[nodiscard]] std::array<FaceField, 3> massFluxes(const PhaseFields& phase, const CellField& density,
-                                                  const Boundaries& boundaries, const OutflowBudget& budget = {});
+                                                  const Boundaries& boundaries, const OutflowBudget& budget = {},
+                                                  std::size_t m = 0);
 
 }  // namespace grainbridge::fluid

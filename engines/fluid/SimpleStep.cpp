@@ -171,7 +171,7 @@ void closeSolidsContinuity(FlowState& state, const FlowState& old, const FlowPro
   for (std::size_t m = 1; m < state.phases.size(); ++m) {
     if (given[m] != 0) continue;
     PhaseFields& phase = state.phases[m];
-    const auto flux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt));
+    const auto flux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt), m);
     const auto moved = solveFractionNonNegative(phase, old.phases[m].fraction, props.phases[m].density,
                                                 oldProps.phases[m].density, flux, boundaries, dt);
     boundaryFlow[m] = patchFlows(moved, boundaries);
@@ -220,7 +220,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     for (std::size_t m = 0; m < M; ++m) {
       flux.push_back(given[m] != 0
                          ? std::array<FaceField, 3>{FaceField(grid, 0), FaceField(grid, 1), FaceField(grid, 2)}
-                         : massFluxes(state.phases[m], props.phases[m].density, boundaries, outflowBudget(old, m, dt)));
+                         : massFluxes(state.phases[m], props.phases[m].density, boundaries, outflowBudget(old, m, dt), m));
     }
     std::vector<double> speed(M, settings.velocityScale);
     for (std::size_t m = 0; m < M; ++m) {
@@ -277,7 +277,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       if (given[m] != 0) continue;
       boundaries.apply(state, &props);
       PhaseFields& phase = state.phases[m];
-      const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt));
+      const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt), m);
       offerContinuity(worst, phaseName(m), phase.fraction, old.phases[m].fraction, props.phases[m].density,
                       oldProps.phases[m].density, solidsFlux, dt);
       std::array<const FaceField*, 3> e{nullptr, nullptr, nullptr};

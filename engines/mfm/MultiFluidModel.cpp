@@ -369,7 +369,7 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
     in.oldDensity = &oldProps.phases[m].density;
     in.boundaries = &boundaries;
     in.dt = dt;
-    const auto flux = fluid::massFluxes(phase, props.phases[m].density, boundaries);
+    const auto flux = fluid::massFluxes(phase, props.phases[m].density, boundaries, {}, m);
     const fluid::StencilSystem system = assembleGranularEnergy(in, m, flux, terms);
     const auto r = system.normalisedResidual(phase.granularTemperature.values(), scale);
     residuals.push_back({r.value, "solids " + std::to_string(m) + " granular energy", r.worst});

@@ -1,8 +1,8 @@
 // configs/combine-smoke.json, the CI-sized grain-chaff combine (issue 29; Chapter 4, Table 4.4):
 // 0.3 s of grain and chaff fed through the upper part of the left side into a 3D box of rising
 // air. Each solids phase gains exactly what its feed carries, rho eps U A t, and keeps its balance
-// to round-off; the gas balances to round-off in every step after the feed's start-up; the grain
-// falls from the feed, the chaff is carried out; the 3D frames are written.
+// to round-off, and so does the gas (1e-6 of its inflow, the issue's bound); the grain falls from
+// the feed and stays below the chaff; the 3D frames are written.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,17 +36,16 @@ TEST(Combine, SmokeFeedsEachPhaseAsItsInletSaysAndKeepsEveryBalance) {
   for (const char* phase : {"grain", "chaff"}) {
     EXPECT_LT(std::abs(summary.at(std::string("mass_balance_") + phase).get<double>()), 1e-12) << phase;
   }
-  // Grain falls (terminal speed about 7 m/s against 0.85 m/s of air) and stays; chaff (about
-  // 1 m/s) is carried out of the top.
-  EXPECT_EQ(summary.at("mass_out_grain").get<double>(), 0.0);
-  EXPECT_GT(summary.at("mass_out_chaff").get<double>(), 0.0);
+  // Grain falls from the feed (terminal speed about 7 m/s against 0.85 m/s of air) and none of
+  // it leaves; the chaff stays above it.
+  EXPECT_LT(summary.at("mass_out_grain").get<double>(), 1e-9 * grainFed);
+  EXPECT_GT(summary.at("mean_height_chaff").get<double>(), summary.at("mean_height_grain").get<double>());
 
   const auto series = workflows::report::readNumericCsv(run / "series.csv");
   const auto& time = series.at("time");
   ASSERT_EQ(time.size(), 30u);
   EXPECT_LT(series.at("mean_height_grain").back(), series.at("mean_height_grain")[4]);
-  // The gas: the feed's start-up steps leave their continuity residual (below the tolerance, at
-  // most 1e-4 of the gas held); every step from 0.2 s on balances to round-off.
+  // The gas: its balance over the run, and every step from 0.2 s on to round-off.
   const auto gasError = [&](std::size_t k) {
     return series.at("mass_gas")[k] - series.at("mass_in_gas")[k] + series.at("mass_out_gas")[k];
   };
@@ -54,7 +53,7 @@ TEST(Combine, SmokeFeedsEachPhaseAsItsInletSaysAndKeepsEveryBalance) {
   ASSERT_NEAR(time[from], 0.2, 1e-9);
   const double inflow = series.at("mass_in_gas")[to] - series.at("mass_in_gas")[from];
   EXPECT_LT(std::abs(gasError(to) - gasError(from)), 1e-9 * inflow);
-  EXPECT_LT(std::abs(summary.at("mass_balance_gas").get<double>()), 1e-4);
+  EXPECT_LT(std::abs(summary.at("mass_balance_gas").get<double>()), 1e-6);
   // 3D frames, ParaView's way in.
   EXPECT_TRUE(fs::exists(run / "fields.xmf"));
   EXPECT_TRUE(fs::exists(run / "mean/fields.xmf"));

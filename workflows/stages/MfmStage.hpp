@@ -30,7 +30,9 @@ class MfmStage final : public StageType {
   //    (was the pure granular gas's); one solids phase unchanged bit for bit.
   // 9: series and summary carry each phase's boundary mass account (mass_<phase>, mass_in_,
   //    mass_out_ and per outlet, mass_balance_).
-  [[nodiscard]] int implVersion() const override { return 9; }
+  // 10: at a pressure outlet a solids phase's ghost repeats the interior whichever way the phase
+  //     moves (what it brings back in is still the backflow state's, engines/fluid MassFlux).
+  [[nodiscard]] int implVersion() const override { return 10; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

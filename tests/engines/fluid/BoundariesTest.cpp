@@ -6,6 +6,7 @@
 
 #include "core/Error.hpp"
 #include "engines/fluid/Boundaries.hpp"
+#include "engines/fluid/MassFlux.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::fluid;
@@ -80,8 +81,16 @@ TEST(Boundaries, AnOutletTakesEachPhasesOwnDirection) {
   }
   b.apply(st);
   EXPECT_EQ(st.pressure(2, 4, 0), 5.0);
-  EXPECT_EQ(st.phases[0].fraction(2, 4, 0), 0.7);     // leaving: the interior's
-  EXPECT_EQ(st.phases[1].fraction(2, 4, 0), 0.0);     // entering: the backflow state's (none)
+  EXPECT_EQ(st.phases[0].fraction(2, 4, 0), 0.7);  // the gas leaving: the interior's
+  // A solids phase's ghost repeats the interior either way (the face's coefficients stay
+  // continuous when it turns); what it brings back in is the backflow state's: none.
+  EXPECT_EQ(st.phases[1].fraction(2, 4, 0), 0.3);
+  const std::size_t face = grid.index(2, 3, 0);
+  const CellField density(grid, 1.0);
+  EXPECT_EQ(massFluxes(st.phases[1], density, b, {}, 1)[1][face], 0.0);
+  EXPECT_DOUBLE_EQ(massFluxes(st.phases[0], density, b)[1][face], 0.7 * grid.faceArea(1));
+  st.phases[1].velocity[1][face] = 1.0;  // leaving: the interior's fraction goes out
+  EXPECT_DOUBLE_EQ(massFluxes(st.phases[1], density, b, {}, 1)[1][face], 0.3 * grid.faceArea(1));
   EXPECT_TRUE(b.solvedFace(1, grid.index(2, 3, 0)));  // the outlet face is solved
 }
 
