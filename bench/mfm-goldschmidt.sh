@@ -9,9 +9,10 @@
 # Builds nothing: it uses build-release/bin/grainbridge (scripts/quickstart.sh builds it) or
 # $GRAINBRIDGE.
 #
-# --bed binary runs configs/goldschmidt-binary.json's bed at 1.30 m/s instead (bench/mfm-binary.sh).
+# --bed binary runs configs/goldschmidt-binary.json's bed at 1.30 m/s instead (bench/mfm-binary.sh);
+# --bed combine runs configs/combine.json as shipped (bench/mfm-combine.sh).
 #
-# Usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary]
+# Usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary|combine]
 # Last line: wall_seconds_per_simulated_second = X
 set -euo pipefail
 
@@ -22,13 +23,14 @@ while (($#)); do
   case "$1" in
     --duration) duration=$2; shift 2 ;;
     --bed) bed=$2; shift 2 ;;
-    *) echo "usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary]" >&2; exit 2 ;;
+    *) echo "usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary|combine]" >&2; exit 2 ;;
   esac
 done
 case "$bed" in
-  mono) inflow="1.92 m/s" ;;
-  binary) inflow="1.30 m/s" ;;
-  *) echo "--bed: mono or binary, not $bed" >&2; exit 2 ;;
+  mono) config=goldschmidt-mono; inflow="1.92 m/s" ;;
+  binary) config=goldschmidt-binary; inflow="1.30 m/s" ;;
+  combine) config=combine; inflow="" ;;
+  *) echo "--bed: mono, binary or combine, not $bed" >&2; exit 2 ;;
 esac
 gb=$(realpath -m "${GRAINBRIDGE:-$repo/build-release/bin/grainbridge}")
 [[ -x "$gb" ]] || { echo "no grainbridge binary at $gb: run scripts/quickstart.sh first (or set GRAINBRIDGE)" >&2; exit 2; }
@@ -37,16 +39,18 @@ core=$(($(nproc) - 1))
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# The shipped config's bed, one sweep point, the averaging window the last half of the run.
-python3 - "$repo/configs/goldschmidt-$bed.json" "$work/bench.json" "$duration" "$inflow" <<'PY'
+# The shipped config's bed (its mfm stage), one sweep point, the averaging window the last half of
+# the run; the Goldschmidt beds at the inflow above without rotation.
+python3 - "$repo/configs/$config.json" "$work/bench.json" "$duration" "$inflow" <<'PY'
 import json, sys
 source, target, duration, inflow = sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4]
 config = json.load(open(source))
-stage = config["stages"]["bed"]
+stage = next(s for s in config["stages"].values() if s["type"] == "mfm")
 stage.pop("sweep", None)
 params = stage["params"]
-params["boundaries"][0]["gas_inflow"] = inflow
-params["rotation_model"] = False
+if inflow:
+    params["boundaries"][0]["gas_inflow"] = inflow
+    params["rotation_model"] = False
 params["duration"] = f"{duration} s"
 params["average_from"] = f"{duration / 2} s"
 params["frames"] = 0
@@ -68,13 +72,20 @@ manifest, start, end, duration = sys.argv[1], float(sys.argv[2]), float(sys.argv
 m = json.load(open(manifest))
 s = m["summary"]
 wall = float(m.get("timing", {}).get("seconds", end - start))
-cells = 15 * 45
+cells = 1
+for n in m.get("params", {}).get("cells", [15, 45, 1]):
+    cells *= n
 steps = s["solver_steps"]
 iterations = steps * s["iterations_per_step"]
 print(f"simulated: {duration:g} s, solver steps {steps}, {s['iterations_per_step']:.2f} iterations per step, "
       f"{s['retries']} retried")
 print(f"mean particle height (averaged over {duration / 2:g}-{duration:g} s): {s['mean_height']:.4f} +- "
-      f"{s['mean_height_err']:.4f} m; pressure drop {s['pressure_drop']:.0f} +- {s['pressure_drop_err']:.0f} Pa")
+      f"{s['mean_height_err']:.4f} m" + (f"; pressure drop {s['pressure_drop']:.0f} +- {s['pressure_drop_err']:.0f} Pa"
+                                         if "pressure_drop" in s else ""))
+phases = [k[len("mass_balance_"):] for k in s if k.startswith("mass_balance_")]
+if any(s["mass_in_" + p] > 0 for p in phases if p != "gas"):
+    print("fed / out (kg): " + ", ".join(f"{p} {s['mass_in_' + p]:.4g} / {s['mass_out_' + p]:.4g}" for p in phases))
+    print("balances: " + ", ".join(f"{p} {s['mass_balance_' + p]:.1e}" for p in phases))
 if "segregation_percentage" in s:
     print(f"segregation percentage: {s['segregation_percentage']:.3f} +- {s['segregation_percentage_err']:.3f}")
 print(f"wall: {wall:.1f} s (stage); cell updates per second: {cells * steps / wall:.4g} "

@@ -63,6 +63,8 @@ std::string countProblem(std::size_t given, const char* what, std::size_t solids
 
 }  // namespace
 
+const char* sideKey(int side) { return kSideNames.at(static_cast<std::size_t>(side)); }
+
 core::data::GridGeometry FluidSetup::geometry() const {
   core::data::GridGeometry g;
   g.cells = cells;

@@ -61,6 +61,9 @@ struct FluidSetup {
   [[nodiscard]] std::vector<BoundaryPatch> patches(std::size_t solidsPhases) const;
 };
 
+// The key a side is written with in a config ("x_low", ..., "z_high"), for a Side.
+[[nodiscard]] const char* sideKey(int side);
+
 void to_json(nlohmann::json& j, const PatchSetup& p);
 void from_json(const nlohmann::json& j, PatchSetup& p);
 void to_json(nlohmann::json& j, const FluidSetup& s);

@@ -7,6 +7,7 @@
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "engines/fluid/BoundaryFlow.hpp"
+#include "engines/fluid/FluidSetup.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -38,10 +39,9 @@ std::vector<std::string> massAccountColumns(const std::vector<std::string>& phas
 namespace {
 
 std::vector<std::string> outletSidesOf(const std::vector<fluid::BoundaryPatch>& patches) {
-  static const char* const sides[] = {"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"};
   std::vector<std::string> out;
   for (const auto& patch : patches)
-    out.emplace_back(patch.kind == fluid::BoundaryKind::PressureOutlet ? sides[patch.side] : "");
+    out.emplace_back(patch.kind == fluid::BoundaryKind::PressureOutlet ? fluid::sideKey(patch.side) : "");
   return out;
 }
 
