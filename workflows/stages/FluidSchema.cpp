@@ -55,6 +55,12 @@ std::shared_ptr<const ParamSchema> boundarySchema() {
   return s;
 }
 
+fluid::LinearSolve::Method linearSolveMethod(const std::string& name) {
+  if (name == "bicgstab") return fluid::LinearSolve::Method::Iterative;
+  if (name == "gauss_seidel") return fluid::LinearSolve::Method::GaussSeidel;
+  return fluid::LinearSolve::Method::Direct;
+}
+
 std::shared_ptr<const ParamSchema> tapSchema() {
   auto s = std::make_shared<ParamSchema>();
   s->add(ParamSpec::string("name").required().doc("column name: series.csv gets dp_<name>"))

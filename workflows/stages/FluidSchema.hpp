@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "engines/fluid/StencilSystem.hpp"
 #include "workflows/params/ParamSchema.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -19,6 +20,10 @@ void addGasGridParams(params::ParamSchema& s);
 std::shared_ptr<const params::ParamSchema> boundarySchema();
 // One pressure tap: name, low, high (heights above the bottom).
 std::shared_ptr<const params::ParamSchema> tapSchema();
+
+// The linear solve a `momentum_solver` or `pressure_solver` value names (direct, bicgstab,
+// gauss_seidel; the schema's options have been checked): StencilSystem's LinearSolve::Method.
+[[nodiscard]] fluid::LinearSolve::Method linearSolveMethod(const std::string& name);
 
 struct PressureTap {
   std::string name;

@@ -235,14 +235,9 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   settings.fractionRelaxation = p.at("fraction_relaxation");
   settings.diluteFraction = p.at("dilute_fraction");
   // The linear solves: the band LU by default; iterative ones for 3D grids (StencilSystem.hpp).
-  const auto method = [](const std::string& name) {
-    return name == "bicgstab"       ? fluid::LinearSolve::Method::Iterative
-           : name == "gauss_seidel" ? fluid::LinearSolve::Method::GaussSeidel
-                                    : fluid::LinearSolve::Method::Direct;
-  };
-  settings.momentumSolve.method = method(p.at("momentum_solver").get<std::string>());
+  settings.momentumSolve.method = linearSolveMethod(p.at("momentum_solver").get<std::string>());
   settings.momentumSolve.tolerance = p.at("momentum_solver_tolerance");
-  settings.pressureSolve.method = method(p.at("pressure_solver").get<std::string>());
+  settings.pressureSolve.method = linearSolveMethod(p.at("pressure_solver").get<std::string>());
   settings.pressureSolve.tolerance = p.at("pressure_solver_tolerance");
   s.engine.interval = p.at("output_interval");
   s.duration = p.at("duration");

@@ -7,6 +7,7 @@
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/FluidSetup.hpp"
+#include "workflows/stages/FluidSchema.hpp"
 #include "workflows/stages/ParticleSchema.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -136,10 +137,7 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   e.solver.maxIterations = p.at("max_iterations");
   e.solver.momentumRelaxation = p.at("momentum_relaxation");
   e.solver.pressureRelaxation = p.at("pressure_relaxation");
-  e.solver.momentumSolve.method =
-      choice(p, "momentum_solver", {std::pair{"direct", fluid::LinearSolve::Method::Direct},
-                                    std::pair{"bicgstab", fluid::LinearSolve::Method::Iterative},
-                                    std::pair{"gauss_seidel", fluid::LinearSolve::Method::GaussSeidel}});
+  e.solver.momentumSolve.method = linearSolveMethod(p.at("momentum_solver").get<std::string>());
   e.solver.momentumSolve.tolerance = p.at("momentum_solver_tolerance");
   // The incompressible gas's pressure correction is symmetric positive definite (an outlet fixes
   // its level): the band Cholesky, half the LU's work.
