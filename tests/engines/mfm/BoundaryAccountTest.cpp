@@ -118,3 +118,79 @@ TEST(BoundaryAccount, SurvivesACheckpointBitForBit) {
   }
   EXPECT_GT(a.boundaryMass[1][inletIndex(column.setup)].in, 0.0);
 }
+
+namespace {
+
+constexpr double kChaffDensity = 40.6;  // Table 4.4's chaff, 2.3 mm
+
+// A lone chaff sphere's settling velocity in still air under the model's own drag law (Eq. 3.16
+// at eps_g = 1): the slip at which drag carries the buoyant weight, by bisection.
+double chaffTerminalVelocity(const closures::GasSolidsDrag& drag) {
+  const double weight = M_PI / 6.0 * std::pow(kGrainDiameter, 3) * (kChaffDensity - kAirDensity) * kGravity;
+  double lo = 1e-6, hi = 100.0;
+  for (int k = 0; k < 200; ++k) {
+    const double v = 0.5 * (lo + hi);
+    const auto c = drag.evaluate({1.0, 0.0, kGrainDiameter, kAirDensity, kAirViscosity, v});
+    (c.particle * v < weight ? lo : hi) = v;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+// Issue 29: a one-cell-wide column fed at the bottom with chaff and with gas at three times the
+// chaff's terminal velocity carries the chaff through its top outlet; once the feed has crossed
+// the column, what leaves per second is what enters.
+TEST(BoundaryAccount, AFedColumnCarriesItsSolidsOutOfTheTopOnceSteady) {
+  constexpr double kFeedFraction = 0.01;
+  GrainBedSpec spec;
+  spec.nx = 1;
+  spec.ny = 48;  // 0.457 m
+  spec.bedCells = 0;
+  GrainBed column = grainBed(spec);
+  column.setup.model.solids = {mfm::SolidsPhase{"chaff", kGrainDiameter, kChaffDensity, 0.9}};
+  const double terminal = chaffTerminalVelocity(column.setup.model.drag);
+  const double gasSuperficial = 3.0 * terminal;
+  std::printf("chaff terminal velocity %.4f m/s, gas %.4f m/s superficial\n", terminal, gasSuperficial);
+  ASSERT_GT(terminal, 0.9);  // ~1.0 m/s (issue 29)
+  ASSERT_LT(terminal, 1.1);
+  for (auto& patch : column.setup.patches) {
+    if (patch.kind != fluid::BoundaryKind::VelocityInlet) continue;
+    // The feed enters slower than it will rise (v_g - v_t, about 1.9 m/s), so it accelerates
+    // into the column and thins out first.
+    patch.phases = {
+        fluid::PhaseInflow{1.0 - kFeedFraction, Vec3(0.0, gasSuperficial / (1.0 - kFeedFraction), 0.0)},
+        fluid::PhaseInflow{kFeedFraction, Vec3(0.0, 0.5, 0.0)}};
+  }
+  for (auto& region : column.initial.regions) region.velocities.at(0) = Vec3(0.0, gasSuperficial, 0.0);
+  column.setup.interval = 0.1;
+
+  TempDir dir;
+  mfm::MfmEngine run(column.setup, [&](mfm::MultiFluidEngine& e) { mfm::initialise(e, column.initial); },
+                     dir.path(), core::io::ArtifactStamp{"test"});
+  const std::size_t inlet = inletIndex(column.setup);
+  const auto solidsCrossed = [&run] { return fluid::total(run.engine().statistics().boundaryMass[1]); };
+  for (int s = 0; s < 10; ++s) run.advance(false);  // 1 s of steady feed
+  const auto atOne = solidsCrossed();
+  const double heldAtOne = run.engine().heldMass()[1];
+  for (int s = 0; s < 2; ++s) run.advance(false);  // and 0.2 s more, measured
+  const auto atEnd = solidsCrossed();
+  const auto& stats = run.engine().statistics();
+  ASSERT_NEAR(run.engine().time(), 1.2, 1e-12);
+  EXPECT_EQ(stats.retries, 0);
+
+  // Everything fed came in through the inlet and left through the top.
+  EXPECT_EQ(stats.boundaryMass[1][inlet].out, 0.0);
+  EXPECT_GT(atOne.out, 0.0);
+  const double in = atEnd.in - atOne.in, out = atEnd.out - atOne.out;
+  const double held = run.engine().heldMass()[1];
+  std::printf("chaff over 1.0-1.2 s: in %.6e kg, out %.6e kg, out/in %.5f; held %.6e -> %.6e kg\n", in, out,
+              out / in, heldAtOne, held);
+  EXPECT_NEAR(out / in, 1.0, 0.01);
+  EXPECT_NEAR(held - heldAtOne, in - out, 1e-9 * in);
+  // The chaff held is the feed rate times the transit time at about v_g - v_t.
+  const double transit = spec.ny * spec.cell / (gasSuperficial - terminal);
+  std::printf("chaff held %.4e kg, feed rate x transit at v_g - v_t %.4e kg, %ld steps\n", held,
+              in / 0.2 * transit, stats.steps);
+  EXPECT_NEAR(held / (in / 0.2 * transit), 1.0, 0.25);
+}
