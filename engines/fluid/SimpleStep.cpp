@@ -167,13 +167,14 @@ void gasFromSolids(FlowState& state) {
 // Fills each solved solids phase's boundary flows (the rest stay zero).
 void closeSolidsContinuity(FlowState& state, const FlowState& old, const FlowProperties& props,
                            const FlowProperties& oldProps, const Boundaries& boundaries, double dt,
-                           const std::vector<char>& given, std::vector<std::vector<PatchFlow>>& boundaryFlow) {
+                           const std::vector<char>& given, const LinearSolve& how,
+                           std::vector<std::vector<PatchFlow>>& boundaryFlow) {
   for (std::size_t m = 1; m < state.phases.size(); ++m) {
     if (given[m] != 0) continue;
     PhaseFields& phase = state.phases[m];
     const auto flux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt), m);
     const auto moved = solveFractionNonNegative(phase, old.phases[m].fraction, props.phases[m].density,
-                                                oldProps.phases[m].density, flux, boundaries, dt);
+                                                oldProps.phases[m].density, flux, boundaries, dt, how);
     boundaryFlow[m] = patchFlows(moved, boundaries);
   }
   gasFromSolids(state);
@@ -286,7 +287,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       const StencilSystem fractionSystem =
           assembleFractionCorrection(state, old, props, oldProps, m, solidsFlux, e, dt);
       CellField fractionCorrection(grid, 0.0);
-      fractionSystem.solve(fractionCorrection);
+      fractionSystem.solve(fractionCorrection, settings.fractionSolve);
       // The correction conserves the phase's mass exactly (its fluxes telescope); Eq. 3.68's
       // relaxation withholds part of it, which the next iteration hands back. A step converges
       // only once what was withheld is negligible, so under-relaxation never leaks mass.
@@ -341,7 +342,8 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       boundaries.apply(state, &props);
       if (dt > 0.0) {
         result.boundaryFlow.assign(M, std::vector<PatchFlow>(boundaries.patches().size()));
-        if (M > 1) closeSolidsContinuity(state, old, props, oldProps, boundaries, dt, given, result.boundaryFlow);
+        if (M > 1) closeSolidsContinuity(state, old, props, oldProps, boundaries, dt, given, settings.fractionSolve,
+                                       result.boundaryFlow);
         result.boundaryFlow[0] =
             patchFlows(massFluxes(state.phases[0], props.phases[0].density, boundaries), boundaries);
       }

@@ -82,10 +82,12 @@ struct SimpleSettings {
   // phase's inventory: what keeps a long run's mass balance to round-off.
   double massTolerance = 1e-10;
   int maxIterations = 50;
-  // How each momentum component's system and the gas pressure correction are solved
-  // (StencilSystem.hpp); the solids fraction corrections are always solved directly.
+  // How each momentum component's system, the gas pressure correction and the solids fraction
+  // systems (Eq. 3.69's correction and the step's closing continuity, solveFractionNonNegative)
+  // are solved (StencilSystem.hpp).
   LinearSolve momentumSolve;
   LinearSolve pressureSolve;
+  LinearSolve fractionSolve;
 };
 
 struct StepResult {

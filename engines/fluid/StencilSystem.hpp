@@ -87,6 +87,7 @@ class StencilSystem {
   // The same by `how` (an iterative solve starts from phi's active values).
   void solve(std::vector<double>& phi, const LinearSolve& how) const;
   void solve(FaceField& phi, const LinearSolve& how) const { solve(phi.values(), how); }
+  void solve(CellField& phi, const LinearSolve& how) const { solve(phi.values(), how); }
   // The largest |a_P Phi_P - sum a_nb Phi_nb - b| over the active cells: the residual the
   // solver's convergence test reads.
   [[nodiscard]] double residual(const std::vector<double>& phi) const;
@@ -114,6 +115,8 @@ class StencilSystem {
   };
   [[nodiscard]] Assembled assemble(const std::vector<double>& phi) const;
   void solveDirect(Assembled& system, std::vector<double>& phi, bool symmetric) const;
+  // Jacobi-preconditioned BiCGSTAB from phi; false (phi unchanged) when it did not converge.
+  bool solveIterative(std::vector<double>& phi, const LinearSolve& how) const;
   // Gauss-Seidel sweeps; false (phi then holds the last sweep) when they did not converge.
   bool sweep(std::vector<double>& phi, const LinearSolve& how) const;
 

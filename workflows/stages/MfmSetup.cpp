@@ -239,6 +239,8 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   settings.momentumSolve.tolerance = p.at("momentum_solver_tolerance");
   settings.pressureSolve.method = linearSolveMethod(p.at("pressure_solver").get<std::string>());
   settings.pressureSolve.tolerance = p.at("pressure_solver_tolerance");
+  settings.fractionSolve.method = linearSolveMethod(p.at("fraction_solver").get<std::string>());
+  settings.fractionSolve.tolerance = p.at("fraction_solver_tolerance");
   s.engine.interval = p.at("output_interval");
   s.duration = p.at("duration");
   s.averageFrom = p.at("average_from");

@@ -259,6 +259,17 @@ MfmStage::MfmStage() {
                .defaultValue(1e-8)
                .positive()
                .doc("bicgstab, gauss_seidel: each pressure-correction solve's residual norm over its right-hand side's"))
+      .add(ParamSpec::string("fraction_solver")
+               .defaultValue("direct")
+               .options({"direct", "bicgstab", "gauss_seidel"})
+               .doc("each solids phase's fraction correction (Eq. 3.69) and closing continuity solve: the LU, or "
+                    "BiCGSTAB or Gauss-Seidel to fraction_solver_tolerance, whose closing solve is then finished in "
+                    "flux form so the mass balance stays exact (the LU where a cell would go below zero); "
+                    "gauss_seidel on 3D grids"))
+      .add(ParamSpec::number("fraction_solver_tolerance")
+               .defaultValue(1e-10)
+               .positive()
+               .doc("bicgstab, gauss_seidel: each fraction solve's residual norm over its right-hand side's"))
       .add(
           ParamSpec::integer("max_iterations").defaultValue(50).min(1).doc("outer iterations before a step is retried"))
       .add(ParamSpec::number("momentum_relaxation").defaultValue(0.9).min(0.0, false).max(1.0).doc("alpha_u"))
