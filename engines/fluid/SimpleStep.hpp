@@ -102,8 +102,9 @@ struct StepResult {
   std::string failure;
   // A converged transient step's flow through each boundary patch, per phase (the gas first) and
   // patch [kg/s]: a solids phase's from the fluxes its closing continuity solve moved mass with
-  // (so its held mass changes by exactly in - out over the step), the gas's from the converged
-  // state (to the continuity tolerance); a given phase's is zero. Empty otherwise.
+  // (so its held mass changes by exactly in - out over the step), the gas's from the state its
+  // closing pressure correction leaves (exact too for an incompressible gas; an ideal gas's to the
+  // continuity tolerance); a given phase's is zero. Empty otherwise.
   std::vector<std::vector<PatchFlow>> boundaryFlow;
 };
 

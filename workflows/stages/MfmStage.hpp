@@ -32,7 +32,10 @@ class MfmStage final : public StageType {
   //    mass_out_ and per outlet, mass_balance_).
   // 10: at a pressure outlet a solids phase's ghost repeats the interior whichever way the phase
   //     moves (what it brings back in is still the backflow state's, engines/fluid MassFlux).
-  [[nodiscard]] int implVersion() const override { return 10; }
+  // 11: each transient step closes the gas's continuity with its final fractions (engines/fluid
+  //     SimpleStep closeGasContinuity): an incompressible gas's balance exact, every field moved
+  //     by the size of a continuity residual.
+  [[nodiscard]] int implVersion() const override { return 11; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

@@ -16,7 +16,9 @@ class TfdemStage final : public StageType {
  public:
   TfdemStage();
   [[nodiscard]] std::string name() const override { return "tfdem"; }
-  [[nodiscard]] int implVersion() const override { return 4; }
+  // 5: each gas step closes the gas's continuity with its final fractions (engines/fluid
+  //    SimpleStep closeGasContinuity), moving the gas by the size of a continuity residual.
+  [[nodiscard]] int implVersion() const override { return 5; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"coordination", "–"}, {"multi_contact_ratio", "–"}};
   }
