@@ -34,7 +34,7 @@ case "$bed" in
 esac
 gb=$(realpath -m "${GRAINBRIDGE:-$repo/build-release/bin/grainbridge}")
 [[ -x "$gb" ]] || { echo "no grainbridge binary at $gb: run scripts/quickstart.sh first (or set GRAINBRIDGE)" >&2; exit 2; }
-core=$(($(nproc) - 1))
+core=${BENCH_CORE:-$(($(nproc) - 1))}  # the last core unless BENCH_CORE names one
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -56,36 +56,17 @@ struct ThinCellBox {
 }  // namespace
 
 TEST(Continuity, ClosingASolidsPhaseKeepsAThinCellNonNegativeAndTheMassExact) {
-  core::data::GridGeometry g;
-  g.cells = {8, 6, 1};
-  g.spacing = Vec3(0.01, 0.01, 0.01);
-  const StaggeredGrid grid(g);
-  const Boundaries walls(grid, {}, 2);  // a closed box: the phase's mass cannot change
-  FlowState state(grid, 2);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> fraction(0.2, 0.5), speed(-0.3, 0.3);
-  PhaseFields& solids = state.phases[1];
-  for (int j = 0; j < 6; ++j) {
-    for (int i = 0; i < 8; ++i) {
-      solids.fraction(i, j, 0) = fraction(random);
-      solids.velocity[0](i, j, 0) = speed(random);
-      solids.velocity[1](i, j, 0) = speed(random);
-    }
-  }
-  // A thin cell, its solids leaving through all four faces at 1 m/s.
-  solids.fraction(3, 2, 0) = 1e-6;
-  solids.velocity[0](3, 2, 0) = 1.0;
-  solids.velocity[0](2, 2, 0) = -1.0;
-  solids.velocity[1](3, 2, 0) = 1.0;
-  solids.velocity[1](3, 1, 0) = -1.0;
-  walls.apply(state);
+  ThinCellBox box;  // a closed box: the phase's mass cannot change
+  const StaggeredGrid& grid = box.grid;
+  const Boundaries& walls = box.walls;
+  PhaseFields& solids = box.state.phases[1];
   const CellField start = solids.fraction;
   const CellField density(grid, 2500.0);
   const double dt = 1e-2;  // a Courant number of 1 on each of the thin cell's faces
   const auto flux = massFluxes(solids, density, walls, OutflowBudget{&start, dt});
 
   // The explicit update with these faces would leave the thin cell below zero.
-  const std::size_t thin = grid.index(3, 2, 0);
+  const std::size_t thin = box.thin;
   const double explicitValue =
       start[thin] - massImbalance(start, start, density, density, flux, dt, thin) * dt / (2500.0 * grid.cellVolume());
   ASSERT_LT(explicitValue, -1e-6);
