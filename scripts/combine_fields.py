@@ -49,17 +49,20 @@ def main():
     zs = sorted({round(c[2], 9) for c in cells})
     grain, chaff = arrays["ep_s_grain"], arrays["ep_s_chaff"]
     print(f"{args.xmf} at t = {t:g} s: {len(xs)} x {len(ys)} x {len(zs)} cells")
-    print("row  y[cm]  ep_s_grain  ep_s_chaff   v_g[m/s]  v_grain  v_chaff  (x-z means; velocities solids-weighted)")
+    print("row  y[cm]  ep_s_grain  ep_s_chaff   u_g[m/s] v_g[m/s]  u_chaff  v_grain  v_chaff  (x-z means; solids' velocities "
+          "solids-weighted)")
     for j, y in enumerate(ys):
         row = [c[3] for c in cells if round(c[1], 9) == y]
         eg = sum(grain.GetValue(k) for k in row) / len(row)
         ec = sum(chaff.GetValue(k) for k in row) / len(row)
+        ug = sum(arrays["u_g"].GetComponent(k, 0) for k in row) / len(row)
         vg = sum(arrays["u_g"].GetComponent(k, 1) for k in row) / len(row)
         wg = sum(grain.GetValue(k) for k in row)
         wc = sum(chaff.GetValue(k) for k in row)
         vgr = sum(grain.GetValue(k) * arrays["u_s_grain"].GetComponent(k, 1) for k in row) / wg if wg > 0 else 0.0
         vch = sum(chaff.GetValue(k) * arrays["u_s_chaff"].GetComponent(k, 1) for k in row) / wc if wc > 0 else 0.0
-        print(f"{j:3d} {100 * y:6.1f}  {eg:10.3e}  {ec:10.3e}  {vg:9.3f} {vgr:8.3f} {vch:8.3f}")
+        uch = sum(chaff.GetValue(k) * arrays["u_s_chaff"].GetComponent(k, 0) for k in row) / wc if wc > 0 else 0.0
+        print(f"{j:3d} {100 * y:6.1f}  {eg:10.3e}  {ec:10.3e}  {ug:8.3f} {vg:8.3f} {uch:8.3f} {vgr:8.3f} {vch:8.3f}")
     zc = zs[len(zs) // 2]
     plane = [c for c in cells if round(c[2], 9) == zc]
     print(f"central x-y plane (z = {100 * zc:.0f} cm), column means over y, along x:")
