@@ -264,7 +264,8 @@ MfmStage::MfmStage() {
                .options({"direct", "bicgstab", "gauss_seidel"})
                .doc("each solids phase's fraction correction (Eq. 3.69) and closing continuity solve: the LU, or "
                     "BiCGSTAB or Gauss-Seidel to fraction_solver_tolerance, whose closing solve is then finished in "
-                    "flux form so the mass balance stays exact (the LU where a cell would go below zero); "
+                    "flux form so the mass balance stays exact (the LU where that would leave more than a round-off "
+                    "below zero); "
                     "gauss_seidel on 3D grids"))
       .add(ParamSpec::number("fraction_solver_tolerance")
                .defaultValue(1e-10)
