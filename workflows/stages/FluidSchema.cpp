@@ -55,10 +55,22 @@ std::shared_ptr<const ParamSchema> boundarySchema() {
   return s;
 }
 
-fluid::LinearSolve::Method linearSolveMethod(const std::string& name) {
-  if (name == "bicgstab") return fluid::LinearSolve::Method::Iterative;
-  if (name == "gauss_seidel") return fluid::LinearSolve::Method::GaussSeidel;
-  return fluid::LinearSolve::Method::Direct;
+void addLinearSolveParams(ParamSchema& s, const std::string& family, const std::string& method, double tolerance,
+                          const std::string& doc) {
+  s.add(ParamSpec::string(family + "_solver").defaultValue(method).options({"direct", "bicgstab", "gauss_seidel"}).doc(doc))
+      .add(ParamSpec::number(family + "_solver_tolerance")
+               .defaultValue(tolerance)
+               .positive()
+               .doc("bicgstab, gauss_seidel: each " + family + " solve's residual norm over its right-hand side's"));
+}
+
+fluid::LinearSolve readLinearSolve(const json& p, const std::string& family) {
+  fluid::LinearSolve how;
+  const std::string name = p.at(family + "_solver").get<std::string>();
+  if (name == "bicgstab") how.method = fluid::LinearSolve::Method::Iterative;
+  if (name == "gauss_seidel") how.method = fluid::LinearSolve::Method::GaussSeidel;
+  how.tolerance = p.at(family + "_solver_tolerance");
+  return how;
 }
 
 std::shared_ptr<const ParamSchema> tapSchema() {

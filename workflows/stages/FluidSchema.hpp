@@ -21,9 +21,14 @@ std::shared_ptr<const params::ParamSchema> boundarySchema();
 // One pressure tap: name, low, high (heights above the bottom).
 std::shared_ptr<const params::ParamSchema> tapSchema();
 
-// The linear solve a `momentum_solver` or `pressure_solver` value names (direct, bicgstab,
-// gauss_seidel; the schema's options have been checked): StencilSystem's LinearSolve::Method.
-[[nodiscard]] fluid::LinearSolve::Method linearSolveMethod(const std::string& name);
+// How one family of linear systems is solved (fluid::LinearSolve): `<family>_solver`, direct |
+// bicgstab | gauss_seidel (default `method`; `doc` says which systems and what the choice does),
+// and `<family>_solver_tolerance` (default `tolerance`), the iterative solves' residual norm over
+// the right-hand side's.
+void addLinearSolveParams(params::ParamSchema& s, const std::string& family, const std::string& method,
+                          double tolerance, const std::string& doc);
+// The two keys addLinearSolveParams declared, read back (the schema's checks have passed).
+[[nodiscard]] fluid::LinearSolve readLinearSolve(const nlohmann::json& params, const std::string& family);
 
 struct PressureTap {
   std::string name;

@@ -235,12 +235,9 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   settings.fractionRelaxation = p.at("fraction_relaxation");
   settings.diluteFraction = p.at("dilute_fraction");
   // The linear solves: the band LU by default; iterative ones for 3D grids (StencilSystem.hpp).
-  settings.momentumSolve.method = linearSolveMethod(p.at("momentum_solver").get<std::string>());
-  settings.momentumSolve.tolerance = p.at("momentum_solver_tolerance");
-  settings.pressureSolve.method = linearSolveMethod(p.at("pressure_solver").get<std::string>());
-  settings.pressureSolve.tolerance = p.at("pressure_solver_tolerance");
-  settings.fractionSolve.method = linearSolveMethod(p.at("fraction_solver").get<std::string>());
-  settings.fractionSolve.tolerance = p.at("fraction_solver_tolerance");
+  settings.momentumSolve = readLinearSolve(p, "momentum");
+  settings.pressureSolve = readLinearSolve(p, "pressure");
+  settings.fractionSolve = readLinearSolve(p, "fraction");
   s.engine.interval = p.at("output_interval");
   s.duration = p.at("duration");
   s.averageFrom = p.at("average_from");

@@ -240,37 +240,20 @@ MfmStage::MfmStage() {
                .positive()
                .doc("largest step (dt_min = dt_max: a fixed step)"))
       .add(ParamSpec::number("courant").defaultValue(0.5).positive().doc("largest |v| dt / dx"))
-      .add(ParamSpec::number("tolerance").defaultValue(1e-4).positive().doc("normalised residuals of a converged step"))
-      .add(ParamSpec::string("momentum_solver")
-               .defaultValue("direct")
-               .options({"direct", "bicgstab", "gauss_seidel"})
-               .doc("every phase's momentum systems: the band LU, or Jacobi-preconditioned BiCGSTAB or Gauss-Seidel "
-                    "sweeps to momentum_solver_tolerance (the LU where they fail); iterative on 3D grids, whose "
-                    "band (nx ny) makes the LU slow"))
-      .add(ParamSpec::number("momentum_solver_tolerance")
-               .defaultValue(1e-6)
-               .positive()
-               .doc("bicgstab, gauss_seidel: each momentum solve's residual norm over its right-hand side's"))
-      .add(ParamSpec::string("pressure_solver")
-               .defaultValue("direct")
-               .options({"direct", "bicgstab", "gauss_seidel"})
-               .doc("the gas pressure correction: the band LU, or BiCGSTAB or Gauss-Seidel to pressure_solver_tolerance"))
-      .add(ParamSpec::number("pressure_solver_tolerance")
-               .defaultValue(1e-8)
-               .positive()
-               .doc("bicgstab, gauss_seidel: each pressure-correction solve's residual norm over its right-hand side's"))
-      .add(ParamSpec::string("fraction_solver")
-               .defaultValue("direct")
-               .options({"direct", "bicgstab", "gauss_seidel"})
-               .doc("each solids phase's fraction correction (Eq. 3.69) and closing continuity solve: the LU, or "
-                    "BiCGSTAB or Gauss-Seidel to fraction_solver_tolerance, whose closing solve is then finished in "
-                    "flux form so the mass balance stays exact (the LU where that would leave more than a round-off "
-                    "below zero); "
-                    "gauss_seidel on 3D grids"))
-      .add(ParamSpec::number("fraction_solver_tolerance")
-               .defaultValue(1e-10)
-               .positive()
-               .doc("bicgstab, gauss_seidel: each fraction solve's residual norm over its right-hand side's"))
+      .add(ParamSpec::number("tolerance").defaultValue(1e-4).positive().doc("normalised residuals of a converged step"));
+  addLinearSolveParams(schema_, "momentum", "direct", 1e-6,
+                       "every phase's momentum systems: the band LU, or Jacobi-preconditioned BiCGSTAB or Gauss-Seidel "
+                       "sweeps to momentum_solver_tolerance (the LU where they fail); iterative on 3D grids, whose "
+                       "band (nx ny) makes the LU slow");
+  addLinearSolveParams(schema_, "pressure", "direct", 1e-8,
+                       "the gas pressure correction: the band LU, or BiCGSTAB or Gauss-Seidel to "
+                       "pressure_solver_tolerance");
+  addLinearSolveParams(schema_, "fraction", "direct", 1e-10,
+                       "each solids phase's fraction correction (Eq. 3.69) and closing continuity solve: the LU, or "
+                       "BiCGSTAB or Gauss-Seidel to fraction_solver_tolerance, whose closing solve is then finished in "
+                       "flux form so the mass balance stays exact (the LU where that would leave more than a "
+                       "round-off below zero); gauss_seidel on 3D grids");
+  schema_
       .add(
           ParamSpec::integer("max_iterations").defaultValue(50).min(1).doc("outer iterations before a step is retried"))
       .add(ParamSpec::number("momentum_relaxation").defaultValue(0.9).min(0.0, false).max(1.0).doc("alpha_u"))

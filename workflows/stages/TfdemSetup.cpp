@@ -137,8 +137,7 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   e.solver.maxIterations = p.at("max_iterations");
   e.solver.momentumRelaxation = p.at("momentum_relaxation");
   e.solver.pressureRelaxation = p.at("pressure_relaxation");
-  e.solver.momentumSolve.method = linearSolveMethod(p.at("momentum_solver").get<std::string>());
-  e.solver.momentumSolve.tolerance = p.at("momentum_solver_tolerance");
+  e.solver.momentumSolve = readLinearSolve(p, "momentum");
   // The incompressible gas's pressure correction is symmetric positive definite (an outlet fixes
   // its level): the band Cholesky, half the LU's work.
   e.solver.pressureSolve.method = fluid::LinearSolve::Method::Cholesky;

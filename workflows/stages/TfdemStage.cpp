@@ -77,16 +77,11 @@ TfdemStage::TfdemStage() {
       // problem the SIMPLE iteration can take whole (omega_P 1: 4.1 outer iterations per gas step
       // on the jet, 6 at MFiX's 0.8), and each momentum system is dominated by its transient term,
       // so Gauss-Seidel sweeps solve it for a fraction of the band LU's work (docs/tfdem.md).
-      .add(ParamSpec::number("pressure_relaxation").defaultValue(1.0).min(0.0, false).max(1.0).doc("omega_P"))
-      .add(ParamSpec::string("momentum_solver")
-               .defaultValue("gauss_seidel")
-               .options({"gauss_seidel", "bicgstab", "direct"})
-               .doc("the gas momentum systems: Gauss-Seidel sweeps or Jacobi-preconditioned BiCGSTAB to "
-                    "momentum_solver_tolerance (the band LU where they fail), or the band LU"))
-      .add(ParamSpec::number("momentum_solver_tolerance")
-               .defaultValue(1e-6)
-               .positive()
-               .doc("gauss_seidel, bicgstab: the residual norm of each momentum solve over its right-hand side's"))
+      .add(ParamSpec::number("pressure_relaxation").defaultValue(1.0).min(0.0, false).max(1.0).doc("omega_P"));
+  addLinearSolveParams(schema_, "momentum", "gauss_seidel", 1e-6,
+                       "the gas momentum systems: Gauss-Seidel sweeps or Jacobi-preconditioned BiCGSTAB to "
+                       "momentum_solver_tolerance (the band LU where they fail), or the band LU");
+  schema_
       // The coupling (docs/tfdem.md).
       .add(ParamSpec::string("deposition")
                .defaultValue("centre_cell")
