@@ -10,6 +10,13 @@ find_package(OpenSSL REQUIRED COMPONENTS Crypto)
 find_package(Threads REQUIRED)
 # LAPACK's banded LU (dgbsv) solves the fluid engine's systems on grids narrow in one direction.
 find_package(LAPACK REQUIRED)
+# LAMMPS's library (Debian liblammps-dev) runs the dem stage's `engine` lammps (issue 32). Optional:
+# without it the build is complete and that engine is refused at `grainbridge check`.
+option(GRAINBRIDGE_WITH_LAMMPS "build engine lammps when liblammps is found" ON)
+if(GRAINBRIDGE_WITH_LAMMPS)
+  find_package(MPI QUIET COMPONENTS CXX)
+  find_package(LAMMPS CONFIG QUIET)
+endif()
 
 # udunits2 (Unidata) parses and converts unit strings ("2.5 mm", "39 m/s", "1.2 g/cm3");
 # Debian ships no CMake config for it.

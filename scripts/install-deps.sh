@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev libhdf5-dev libsqlite3-dev sqlite3 nlohmann-json3-dev
   libopenmpi-dev openmpi-bin libcli11-dev libspdlog-dev libssl-dev
   libudunits2-dev gnuplot-nox fonts-dejavu-core liblapack-dev
+  liblammps-dev
   libgtest-dev libgmock-dev
 )
 if [[ "${1:-}" == "--tests" ]]; then

@@ -6,13 +6,13 @@
 #include <memory>
 #include <optional>
 
-#include "core/engine/SteppedEngine.hpp"
 #include "core/io/ParticleFrameWriter.hpp"
+#include "engines/dem/ParticleEngine.hpp"
 #include "engines/dem/Simulation.hpp"
 
 namespace grainbridge::dem {
 
-class DemEngine final : public core::engine::SteppedEngine {
+class DemEngine final : public ParticleEngine {
  public:
   // Frames go to `outputDir`/frames and `outputDir`/particles.xmf.
   DemEngine(SimulationSetup setup, Particles particles, const std::filesystem::path& outputDir,
@@ -41,9 +41,12 @@ class DemEngine final : public core::engine::SteppedEngine {
   }
   // The current state as a frame, with the contacts of the last observed step; built once per
   // step however many observers and writers read it.
-  const core::data::ParticleFrame& frame();
-  // Species, contact coefficients and gravity stamped on every frame (set by the stage).
-  void setMaterials(core::data::Materials materials) {
+  const core::data::ParticleFrame& frame() override;
+  [[nodiscard]] Energies energies() override { return sim_.energies(); }
+  [[nodiscard]] std::int64_t mobileCount() override { return sim_.mobileCount(); }
+  [[nodiscard]] std::vector<Vec3> wallForces() override { return sim_.wallForces(); }
+  [[nodiscard]] std::int64_t neighbourRebuilds() const override { return sim_.rebuilds(); }
+  void setMaterials(core::data::Materials materials) override {
     materials_ = std::move(materials);
     if (frame_) frame_->materials = materials_;
   }

@@ -9,7 +9,10 @@ translational kinetic energy (LAMMPS `ke`) and rotational kinetic energy (`c_1`,
 erotate/sphere) with grainbridge's series.csv.
 
 Fails unless the compatible mode agrees to 1e-7 relative at every step; prints the default's
-difference beside it. Exit 77 (skipped) when ../shared/lammps-bench is not there.
+difference beside it. The config's stage chute_on_lammps runs the same 100 steps on engine lammps
+(LAMMPS through its library, issue 32), which must equal engine grainbridge with lammps_history to
+1e-10 relative in both energies at every step. Exit 77 (skipped) when ../shared/lammps-bench is not
+there.
 """
 import argparse
 import csv
@@ -21,6 +24,7 @@ import subprocess
 import sys
 
 TOLERANCE = 1e-7
+ENGINE_TOLERANCE = 1e-10
 
 
 def lammps_thermo(lmp, inputs, data, work, steps):
@@ -50,7 +54,10 @@ def grainbridge_series(gb, repo, work):
                    cwd=repo, check=True)
     series = {}
     for csv_path in sorted(work.glob("results/**/series.csv")):
-        mode = json.loads((csv_path.parent / "manifest.json").read_text())["params"]["tangential_model"]
+        manifest = json.loads((csv_path.parent / "manifest.json").read_text())
+        mode = manifest["params"]["tangential_model"]
+        if manifest["params"].get("engine", "grainbridge") == "lammps":
+            mode = "engine lammps"
         with csv_path.open() as f:
             series[mode] = list(csv.DictReader(f))
     return series
@@ -135,6 +142,17 @@ def main():
         if mode == "lammps_history" and max(worst) > TOLERANCE:
             print(f"FAIL: the LAMMPS-compatible mode must agree to {TOLERANCE:g} relative at every step")
             ok = False
+    if "engine lammps" not in series:
+        print("no run of stage chute_on_lammps (engine lammps)")
+        return 1
+    worst, where, _ = compare({int(r["step"]): (float(r["ke_translational"]), float(r["ke_rotational"]))
+                               for r in series["lammps_history"]}, kinetic_energies(series["engine lammps"]), args.steps)
+    print(f"engine lammps against engine grainbridge (lammps_history): over {args.steps} steps the largest relative "
+          f"difference is {worst[0]:.3g} (step {where[0]}) in translational and {worst[1]:.3g} (step {where[1]}) in "
+          f"rotational kinetic energy")
+    if max(worst) > ENGINE_TOLERANCE:
+        print(f"FAIL: the two engines must agree to {ENGINE_TOLERANCE:g} relative at every step")
+        ok = False
     return 0 if ok else 1
 
 

@@ -25,7 +25,20 @@ bool onSchedule(std::int64_t step, std::int64_t count, std::int64_t total) {
 }  // namespace
 
 TimeLoopDriver::TimeLoopDriver(stages::StageContext& ctx, TimeLoopOptions options)
-    : ctx_(ctx), options_(options), checkpoints_(ctx.checkpointDir(), ctx.key()) {}
+    : ctx_(ctx), options_(options), checkpoints_(ctx.checkpointDir(), ctx.key()) {
+  // On an instance of several ranks (an engine that runs over them, LAMMPS) every rank runs this
+  // loop in step; the first writes the files and shows the progress.
+  leader_ = ctx_.comm().rank() == 0;
+  if (!leader_) options_.progress = false;
+}
+
+bool TimeLoopDriver::onAllRanks(bool mine) const {
+  if (ctx_.comm().size() == 1) return mine;
+  int flag = mine ? 1 : 0;
+  int any = 0;
+  MPI_Allreduce(&flag, &any, 1, MPI_INT, MPI_MAX, ctx_.comm().raw());
+  return any != 0;
+}
 
 std::string TimeLoopDriver::header() const {
   std::string h = "time,step";
@@ -55,6 +68,7 @@ void TimeLoopDriver::run(core::engine::SteppedEngine& engine) {
   lastCheckpoint_ = std::chrono::steady_clock::now();
   for (std::size_t k = firstPhase; k < phases_.size(); ++k) runPhase(engine, k, k == firstPhase ? firstStep : 0);
 
+  if (!leader_) return;
   core::writeFileAtomically(ctx_.outputDir() / "series.csv", series_);
   checkpoints_.clear();
   registerArtifacts();
@@ -88,13 +102,17 @@ void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t i
     // Not on a phase's last step: what is left there is bookkeeping, and a run resumed after its
     // last step would hold no observed state for the stage's summary.
     if (s % options_.pollEvery == 0 && s < phase.steps) {
-      if (ctx_.stopRequested()) {
+      // The ranks of one instance decide together: a signal or a clock seen by one is acted on
+      // by all, at the same step (a checkpoint is collective).
+      const bool stop = onAllRanks(ctx_.stopRequested());
+      const bool due = onAllRanks(std::chrono::steady_clock::now() - lastCheckpoint_ > options_.checkpointEvery);
+      if (stop) {
         checkpoint(engine, index, s);  // a batch system's SIGTERM: save, then stop cleanly
         spdlog::warn("{}: stopped at step {} of {}{}; checkpoint written, the next run resumes here", ctx_.stage(), s,
                      phase.steps, phase.output ? "" : " of the " + phase.name);
         throw stages::StageInterrupted{};
       }
-      if (std::chrono::steady_clock::now() - lastCheckpoint_ > options_.checkpointEvery) {
+      if (due) {
         checkpoint(engine, index, s);
         lastCheckpoint_ = std::chrono::steady_clock::now();
       }
@@ -124,7 +142,13 @@ void TimeLoopDriver::sampleSeries(const core::engine::SteppedEngine& engine) {
 }
 
 void TimeLoopDriver::checkpoint(const core::engine::SteppedEngine& engine, std::size_t phase, std::int64_t phaseStep) {
-  checkpoints_.save(engine, phase, phaseStep, series_);
+  if (leader_) {
+    checkpoints_.save(engine, phase, phaseStep, series_);
+  } else {
+    // The engine's state is saved collectively (LAMMPS's write_restart); the leader's engine
+    // writes the file the register names, the others' write nothing.
+    engine.saveState(ctx_.checkpointDir() / "state-of-a-worker-rank", ctx_.key());
+  }
   core::failPoint("engine.checkpoint");
 }
 

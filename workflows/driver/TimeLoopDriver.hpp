@@ -68,6 +68,8 @@ class TimeLoopDriver {
   void sampleSeries(const core::engine::SteppedEngine& engine);
   void checkpoint(const core::engine::SteppedEngine& engine, std::size_t phase, std::int64_t phaseStep);
   void registerArtifacts();
+  // True on every rank of the instance when `mine` is true on any (one rank: `mine`).
+  [[nodiscard]] bool onAllRanks(bool mine) const;
   [[nodiscard]] std::string header() const;
 
   stages::StageContext& ctx_;
@@ -78,6 +80,7 @@ class TimeLoopDriver {
   std::vector<std::unique_ptr<SeriesColumns>> columns_;
   std::string series_;
   std::chrono::steady_clock::time_point lastCheckpoint_;
+  bool leader_ = true;  // rank 0 of the instance: writes series.csv, checkpoints and artifacts
 };
 
 }  // namespace grainbridge::workflows::driver

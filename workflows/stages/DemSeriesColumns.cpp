@@ -16,15 +16,15 @@ namespace {
 
 class EnergyColumns final : public SeriesColumns {
  public:
-  explicit EnergyColumns(const dem::DemEngine& engine) : engine_(engine) {}
+  explicit EnergyColumns(dem::ParticleEngine& engine) : engine_(engine) {}
   [[nodiscard]] std::vector<std::string> names() const override { return {"ke_translational", "ke_rotational"}; }
   void sample(SeriesRow& row) override {
-    const auto e = engine_.simulation().energies();
+    const auto e = engine_.energies();
     row.add(e.translational).add(e.rotational);
   }
 
  private:
-  const dem::DemEngine& engine_;
+  dem::ParticleEngine& engine_;
 };
 
 // Coordination counts the mobile grains only: a frozen rough base is not part of the packing.
@@ -32,33 +32,33 @@ class EnergyColumns final : public SeriesColumns {
 // counts) and after a preparation has released the grains it held.
 class ContactColumns final : public SeriesColumns {
  public:
-  explicit ContactColumns(dem::DemEngine& engine) : engine_(engine) {}
+  explicit ContactColumns(dem::ParticleEngine& engine) : engine_(engine) {}
   [[nodiscard]] std::vector<std::string> names() const override { return {"contacts", "coordination"}; }
   void sample(SeriesRow& row) override {
     const auto contacts = engine_.frame().contacts.size();
-    const auto mobile = engine_.simulation().mobileCount();
+    const auto mobile = engine_.mobileCount();
     row.add(contacts).add(mobile > 0 ? 2.0 * static_cast<double>(contacts) / static_cast<double>(mobile) : 0.0);
   }
 
  private:
-  dem::DemEngine& engine_;
+  dem::ParticleEngine& engine_;
 };
 
 // Eq. 2.3 over the whole box, as it is now (pressure control moves it).
 class StressColumns final : public SeriesColumns {
  public:
-  explicit StressColumns(dem::DemEngine& engine) : engine_(engine) {}
+  explicit StressColumns(dem::ParticleEngine& engine) : engine_(engine) {}
   [[nodiscard]] std::vector<std::string> names() const override {
     return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_xz", "stress_yz"};
   }
   void sample(SeriesRow& row) override {
-    const auto& sim = engine_.simulation();
-    const Mat3 sigma = dem::wholeDomainStress(engine_.frame(), (sim.boxHigh() - sim.boxLow()).prod());
+    const auto& frame = engine_.frame();
+    const Mat3 sigma = dem::wholeDomainStress(frame, (frame.domain.hi - frame.domain.lo).prod());
     for (auto [a, b] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) row.add(sigma(a, b));
   }
 
  private:
-  dem::DemEngine& engine_;
+  dem::ParticleEngine& engine_;
 };
 
 // Pressure control: the box length along the gradient, the solid fraction in it, and the p_yy
@@ -84,26 +84,27 @@ class PressureControlColumns final : public SeriesColumns {
 
 class WallForceColumns final : public SeriesColumns {
  public:
-  explicit WallForceColumns(const dem::DemEngine& engine) : engine_(engine) {}
+  WallForceColumns(dem::ParticleEngine& engine, std::size_t walls) : engine_(engine), walls_(walls) {}
   [[nodiscard]] std::vector<std::string> names() const override {
     std::vector<std::string> out;
-    for (std::size_t w = 0; w < engine_.simulation().setup().walls.size(); ++w) {
+    for (std::size_t w = 0; w < walls_; ++w) {
       for (const char* c : {"x", "y", "z"}) out.push_back("wall" + std::to_string(w) + "_f" + c);
     }
     return out;
   }
   void sample(SeriesRow& row) override {
-    for (const auto& f : engine_.simulation().wallForces()) row.add(f[0]).add(f[1]).add(f[2]);
+    for (const auto& f : engine_.wallForces()) row.add(f[0]).add(f[1]).add(f[2]);
   }
 
  private:
-  const dem::DemEngine& engine_;
+  dem::ParticleEngine& engine_;
+  std::size_t walls_;
 };
 
 // Per species: the centre of mass height, then the highest top (z + a), the free surface.
 class SpeciesHeightColumns final : public SeriesColumns {
  public:
-  SpeciesHeightColumns(dem::DemEngine& engine, std::vector<std::string> species)
+  SpeciesHeightColumns(dem::ParticleEngine& engine, std::vector<std::string> species)
       : engine_(engine), species_(std::move(species)) {}
   [[nodiscard]] std::vector<std::string> names() const override {
     std::vector<std::string> out;
@@ -127,13 +128,13 @@ class SpeciesHeightColumns final : public SeriesColumns {
   }
 
  private:
-  dem::DemEngine& engine_;
+  dem::ParticleEngine& engine_;
   std::vector<std::string> species_;
 };
 
 class TrackedHeightColumns final : public SeriesColumns {
  public:
-  TrackedHeightColumns(dem::DemEngine& engine, std::vector<std::int64_t> ids) : engine_(engine), ids_(std::move(ids)) {}
+  TrackedHeightColumns(dem::ParticleEngine& engine, std::vector<std::int64_t> ids) : engine_(engine), ids_(std::move(ids)) {}
   [[nodiscard]] std::vector<std::string> names() const override {
     std::vector<std::string> out;
     for (const auto id : ids_) out.push_back("z_id" + std::to_string(id));
@@ -149,21 +150,26 @@ class TrackedHeightColumns final : public SeriesColumns {
   }
 
  private:
-  dem::DemEngine& engine_;
+  dem::ParticleEngine& engine_;
   std::vector<std::int64_t> ids_;
 };
 
 }  // namespace
 
-std::vector<std::unique_ptr<SeriesColumns>> demSeriesColumns(dem::DemEngine& engine, const DemSetup& setup) {
+std::vector<std::unique_ptr<SeriesColumns>> demSeriesColumns(dem::ParticleEngine& engine, const DemSetup& setup) {
   std::vector<std::string> species;
   for (const auto& s : setup.species) species.push_back(s.name);
   std::vector<std::unique_ptr<SeriesColumns>> out;
   out.push_back(std::make_unique<EnergyColumns>(engine));
   out.push_back(std::make_unique<ContactColumns>(engine));
   out.push_back(std::make_unique<StressColumns>(engine));
-  if (setup.engine.pressureControl.active()) out.push_back(std::make_unique<PressureControlColumns>(engine));
-  out.push_back(std::make_unique<WallForceColumns>(engine));
+  if (setup.engine.pressureControl.active()) {
+    // Pressure control is grainbridge's own (refused on engine lammps at check).
+    auto* own = dynamic_cast<dem::DemEngine*>(&engine);
+    GB_ASSERT(own != nullptr, "pressure control runs on grainbridge's engine only");
+    out.push_back(std::make_unique<PressureControlColumns>(*own));
+  }
+  out.push_back(std::make_unique<WallForceColumns>(engine, setup.engine.walls.size()));
   out.push_back(std::make_unique<SpeciesHeightColumns>(engine, std::move(species)));
   out.push_back(std::make_unique<TrackedHeightColumns>(engine, setup.trackedIds));
   return out;

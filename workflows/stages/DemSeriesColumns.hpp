@@ -12,7 +12,9 @@
 
 namespace grainbridge::workflows::stages {
 
-// Every column group of the dem series, in series.csv's order.
-std::vector<std::unique_ptr<driver::SeriesColumns>> demSeriesColumns(dem::DemEngine& engine, const DemSetup& setup);
+// Every column group of the dem series, in series.csv's order, of either engine (grainbridge's
+// or LAMMPS).
+std::vector<std::unique_ptr<driver::SeriesColumns>> demSeriesColumns(dem::ParticleEngine& engine,
+                                                                     const DemSetup& setup);
 
 }  // namespace grainbridge::workflows::stages

@@ -16,6 +16,10 @@
 #include "core/text/NumberText.hpp"
 #include "engines/dem/DemEngine.hpp"
 #include "engines/dem/contact/Conversions.hpp"
+#include "engines/lammps/LammpsInput.hpp"
+#ifdef GRAINBRIDGE_HAVE_LAMMPS
+#include "engines/lammps/LammpsEngine.hpp"
+#endif
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DemSeriesColumns.hpp"
@@ -114,6 +118,12 @@ std::shared_ptr<ParamSchema> lammpsTypeSchema() {
   return s;
 }
 
+lammps::LammpsSpeciesRadii lammpsRadii(const DemSetup& setup) {
+  lammps::LammpsSpeciesRadii radii;
+  for (const auto& s : setup.species) radii.radius.push_back(s.radius);
+  return radii;
+}
+
 }  // namespace
 
 DemStage::DemStage() {
@@ -131,7 +141,12 @@ DemStage::DemStage() {
       .add(ParamSpec::integer("frames").defaultValue(10).min(0).doc(
           "particle + contact frames after the initial one, evenly spaced"))
       .add(ParamSpec::integer("series_points").defaultValue(200).min(1).doc("rows of series.csv, evenly spaced"))
-      .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"));
+      .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"))
+      .add(ParamSpec::string("engine")
+               .defaultValue("grainbridge")
+               .options({"grainbridge", "lammps"})
+               .doc("who runs the steps: grainbridge's own engine, or LAMMPS's GRANULAR package through "
+                    "liblammps on the instance's ranks (docs/dem.md lists what it refuses)"));
   addContactModelParams(schema_);
   schema_.add(ParamSpec::quantity("shear_rate", Dimension::frequency())
                .defaultValue(0.0)
@@ -281,8 +296,25 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
         d.add(where + "/radius", "a cylinder needs a positive radius");
     }
   }
+  const bool onLammps = p.at("engine") == "lammps";
+  if (onLammps && !lammps::lammpsAvailable()) {
+    d.add(ptr + "/engine", "this build has no LAMMPS: install Debian's liblammps-dev (scripts/install-deps.sh) and "
+                           "rebuild grainbridge");
+  }
+  if (onLammps && p.contains("preparation")) {
+    d.add(ptr + "/preparation", "engine lammps: the two-step preparation (held species, shaken container) is "
+                                "grainbridge's own; prepare the state with engine grainbridge and start from its "
+                                "frame (initial_frame)");
+  }
   if (!d.empty()) return;
   const DemSetup setup = makeDemSetup(p);
+  if (onLammps) {
+    for (const auto& problem : lammps::lammpsProblems(setup.engine, lammpsRadii(setup))) {
+      // Pair coefficients come from `contact` unless pair_contacts overrides some.
+      const bool fromContact = problem.pointer == "/pair_contacts" && !p.contains("pair_contacts");
+      d.add(ptr + (fromContact ? "/contact" : problem.pointer), problem.message);
+    }
+  }
   // The engine's own rules (box, periodic lengths, shear, neighbour grid, a run without
   // particles), written once in dem::SimulationSetup, at the pointers of the keys the engine setup
   // shares with these params. A state read from a file is not counted: an upstream stage may
@@ -332,14 +364,90 @@ std::unique_ptr<dem::DemEngine> freshEngine(StageContext& ctx, const DemSetup& s
 }
 
 // A state from a file brings its own ids: the tracked ones must be among them.
-void checkTrackedIds(const StageContext& ctx, const DemSetup& setup, const dem::Simulation& sim) {
+void checkTrackedIds(const StageContext& ctx, const DemSetup& setup, dem::ParticleEngine& engine,
+                     const dem::DemEngine* own) {
+  if (setup.trackedIds.empty()) return;
+  auto has = [&](std::int64_t id) {
+    if (own != nullptr) return own->simulation().indexOf(id).has_value();
+    const auto& ids = engine.frame().id;
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
+  };
   for (std::size_t k = 0; k < setup.trackedIds.size(); ++k) {
-    if (!sim.indexOf(setup.trackedIds[k])) {
+    if (!has(setup.trackedIds[k])) {
       throw Error("/stages/" + ctx.stage() + "/params/track_ids/" + std::to_string(k) + ": no particle with id " +
                   std::to_string(setup.trackedIds[k]) + " in the initial state");
     }
   }
 }
+
+// The run proper after the engine is built (fresh or resumed), on either engine: the
+// preparation phases (grainbridge's engine only), the run, the series and the summary.
+void runLoop(StageContext& ctx, const DemSetup& setup, driver::TimeLoopDriver& loop, dem::ParticleEngine& engine,
+             dem::DemEngine* own) {
+  const json& p = ctx.params();
+  checkTrackedIds(ctx, setup, engine, own);
+  if (p.contains("preparation")) {
+    GB_ASSERT(own != nullptr, "a preparation is refused on engine lammps at check");
+    for (auto& phase : preparationPhases(ctx, setup, *own)) loop.addPhase(std::move(phase));
+  }
+  const auto steps = runSteps(p);
+  driver::Phase run;
+  run.name = "run";
+  run.steps = steps;
+  run.output = true;
+  loop.addPhase(std::move(run));
+  for (auto& columns : demSeriesColumns(engine, setup)) loop.addColumns(std::move(columns));
+  loop.run(engine);
+
+  const auto e = engine.energies();
+  const auto& last = engine.frame();
+  const std::int64_t mobile = engine.mobileCount();
+  json summary = {{"particles", engine.workItems()},
+                  {"steps", steps},
+                  {"final_ke_translational", e.translational},
+                  {"final_ke_rotational", e.rotational},
+                  {"final_contacts", last.contacts.size()},
+                  {"final_coordination",
+                   mobile > 0 ? 2.0 * static_cast<double>(last.contacts.size()) / static_cast<double>(mobile) : 0.0}};
+  // LAMMPS does not count its rebuilds for the library.
+  if (engine.neighbourRebuilds() >= 0) summary["neighbour_rebuilds"] = engine.neighbourRebuilds();
+  ctx.setSummary(std::move(summary));
+}
+
+#ifdef GRAINBRIDGE_HAVE_LAMMPS
+// engine lammps: the same initial particles as grainbridge's engine would start from, handed to
+// LAMMPS on the instance's communicator.
+void runOnLammps(StageContext& ctx, const DemSetup& setup, driver::TimeLoopDriver& loop) {
+  const json& p = ctx.params();
+  const MPI_Comm comm = ctx.comm().isMpi() ? ctx.comm().raw() : MPI_COMM_NULL;
+  const core::io::ArtifactStamp stamp{ctx.key()};
+  auto engine = loop.start<lammps::LammpsEngine>(
+      [&] {
+        dem::Particles particles;
+        if (!p.contains("lammps_data") && !p.contains("initial_frame")) {
+          particles = insertSpecies(ctx, p, setup);
+        } else {
+          const char* source = p.contains("lammps_data") ? "lammps_data" : "initial_frame";
+          particles = p.contains("lammps_data") ? readLammpsParticles(p, setup) : readFrameParticles(p, setup);
+          const auto worst = dem::Simulation(setup.engine, particles).largestOverlap();
+          if (worst.relative > p.at("max_initial_overlap").get<double>()) {
+            throw Error("/stages/" + ctx.stage() + "/params/" + source + ": particles " + std::to_string(worst.i) +
+                        " and " + std::to_string(worst.j) + " overlap by " + std::to_string(worst.relative) +
+                        " of the smaller diameter, above max_initial_overlap = " +
+                        std::to_string(p.at("max_initial_overlap").get<double>()));
+          }
+        }
+        return std::make_unique<lammps::LammpsEngine>(setup.engine, lammpsRadii(setup), particles, runSteps(p),
+                                                      comm, ctx.outputDir(), stamp);
+      },
+      [&](const std::filesystem::path& state) {
+        return lammps::LammpsEngine::restore(setup.engine, lammpsRadii(setup), runSteps(p), state, ctx.key(), comm,
+                                             ctx.outputDir(), stamp);
+      });
+  engine->setMaterials(setup.materials);
+  runLoop(ctx, setup, loop, *engine, nullptr);
+}
+#endif
 
 }  // namespace
 
@@ -354,6 +462,14 @@ void DemStage::run(StageContext& ctx) const {
   options.checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
   options.progress = p.at("progress");
   driver::TimeLoopDriver loop(ctx, options);
+  if (p.at("engine") == "lammps") {
+#ifdef GRAINBRIDGE_HAVE_LAMMPS
+    runOnLammps(ctx, setup, loop);
+    return;
+#else
+    throw Error("/stages/" + ctx.stage() + "/params/engine: this build has no LAMMPS (install liblammps-dev)");
+#endif
+  }
   // Every frame carries the materials its readers need (core/data/Materials), fresh or resumed.
   auto withMaterials = [&](std::unique_ptr<dem::DemEngine> engine) {
     engine->setMaterials(setup.materials);
@@ -365,31 +481,7 @@ void DemStage::run(StageContext& ctx) const {
         return withMaterials(dem::DemEngine::restore(setup.engine, state, ctx.key(), ctx.outputDir(),
                                                      core::io::ArtifactStamp{ctx.key()}));
       });
-  checkTrackedIds(ctx, setup, engine->simulation());
-  if (p.contains("preparation")) {
-    for (auto& phase : preparationPhases(ctx, setup, *engine)) loop.addPhase(std::move(phase));
-  }
-  const auto steps = runSteps(p);
-  driver::Phase run;
-  run.name = "run";
-  run.steps = steps;
-  run.output = true;
-  loop.addPhase(std::move(run));
-  for (auto& columns : demSeriesColumns(*engine, setup)) loop.addColumns(std::move(columns));
-  loop.run(*engine);
-
-  const auto& sim = engine->simulation();
-  const auto e = sim.energies();
-  const auto& last = engine->frame();
-  const std::int64_t mobile = sim.mobileCount();
-  ctx.setSummary({{"particles", static_cast<std::int64_t>(sim.particles().nOwned)},
-                  {"steps", steps},
-                  {"final_ke_translational", e.translational},
-                  {"final_ke_rotational", e.rotational},
-                  {"final_contacts", last.contacts.size()},
-                  {"final_coordination",
-                   mobile > 0 ? 2.0 * static_cast<double>(last.contacts.size()) / static_cast<double>(mobile) : 0.0},
-                  {"neighbour_rebuilds", sim.rebuilds()}});
+  runLoop(ctx, setup, loop, *engine, engine.get());
 }
 
 // Frames at t = 0 (the initial state, after any preparation) and, with frames > 0, evenly up to
