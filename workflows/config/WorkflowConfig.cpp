@@ -382,6 +382,12 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
             cj::Diagnostics local;
             sc.type->params().checkRules(merged, ptr + "/params", local);
             sc.type->checkParams(merged, ptr + "/params", local);
+            if (sc.ranksPerInstance > 1 && !sc.type->runsOnSeveralRanks(merged)) {
+              local.add(ptr + "/ranks_per_instance",
+                        "stage type " + sc.type->name() + " runs an instance on one rank" +
+                            (sc.type->name() == "dem" ? " unless its engine is lammps" : "") + "; found " +
+                            std::to_string(sc.ranksPerInstance));
+            }
             for (const auto& item : local.items()) {
               if (seen.insert(item.where + item.message).second) d.add(atSweepPoint(item.where, point), item.message);
             }

@@ -36,6 +36,10 @@ class DemStage final : public StageType {
                    core::json::Diagnostics& diagnostics) const override;
   void run(StageContext& ctx) const override;
   [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override;
+  // LAMMPS divides the box over the instance's ranks; grainbridge's engine runs on one.
+  [[nodiscard]] bool runsOnSeveralRanks(const nlohmann::json& resolved) const override {
+    return resolved.at("engine") == "lammps";
+  }
 
  private:
   params::ParamSchema schema_;

@@ -90,6 +90,10 @@ class StageType {
   // the stage's CSV regardless. Empty: the report shows the summary values that vary (no plots,
   // as their units are not declared).
   [[nodiscard]] virtual std::vector<ResultColumn> keyResults() const { return {}; }
+  // Whether an instance can run on several ranks (ranks_per_instance > 1): every rank runs run()
+  // in step and the stage's engine divides the work (dem on engine lammps). Others run on one
+  // rank, and the workflow check refuses more.
+  [[nodiscard]] virtual bool runsOnSeveralRanks(const nlohmann::json& /*resolved*/) const { return false; }
   // Runs one instance. Throws grainbridge::Error on failure (the instance is then recorded
   // failed and never cached) or StageInterrupted after a clean stop.
   virtual void run(StageContext& ctx) const = 0;
