@@ -31,8 +31,7 @@ constexpr int kWallColumns = 8;
 // relative velocity (p5-p7).
 constexpr int kPairColumns = 10;
 
-// The rows every rank holds, gathered on every rank in rank order, so each rank builds the same
-// frame and the series columns agree.
+// The rows every rank holds, gathered on every rank in rank order.
 std::vector<double> allRows(MPI_Comm comm, std::vector<double> local) {
   if (comm == MPI_COMM_NULL) return local;
   int size = 1;
@@ -45,6 +44,28 @@ std::vector<double> allRows(MPI_Comm comm, std::vector<double> local) {
   std::partial_sum(counts.begin(), std::prev(counts.end()), std::next(displs.begin()));
   std::vector<double> all(static_cast<std::size_t>(displs.back() + counts.back()));
   MPI_Allgatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, comm);
+  return all;
+}
+
+// The rows every rank holds, gathered on the instance's first rank in rank order (the others get
+// none): a frame of a million particles is held once, where it is written and sampled.
+std::vector<double> leaderRows(MPI_Comm comm, std::vector<double> local) {
+  if (comm == MPI_COMM_NULL) return local;
+  int size = 1;
+  int rank = 0;
+  MPI_Comm_size(comm, &size);
+  MPI_Comm_rank(comm, &rank);
+  if (size == 1) return local;
+  const int n = static_cast<int>(local.size());
+  std::vector<int> counts(static_cast<std::size_t>(size));
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  std::vector<int> displs(static_cast<std::size_t>(size), 0);
+  std::vector<double> all;
+  if (rank == 0) {
+    std::partial_sum(counts.begin(), std::prev(counts.end()), std::next(displs.begin()));
+    all.resize(static_cast<std::size_t>(displs.back() + counts.back()));
+  }
+  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
   return all;
 }
 
@@ -345,7 +366,7 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
       for (int c = 0; c < kWallColumns; ++c) local.push_back(wallArrays[w] ? wallArrays[w][k][c] : 0.0);
     }
   }
-  const auto rows = allRows(comm_, std::move(local));
+  const auto rows = leaderRows(comm_, std::move(local));
   const std::size_t n = rows.size() / width;
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
@@ -387,7 +408,6 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
       f.wallContacts.forceTangential.push_back(force - force.dot(normal) * normal);
     }
   }
-  atoms_ = static_cast<std::int64_t>(n);
 
   // Contacts as grainbridge's engine records them: the forces of the last step's evaluation, at
   // its half-step velocities. LAMMPS's computes evaluate the pairs at the atoms' velocities, so
@@ -434,7 +454,7 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
       }
     }
   }
-  const auto pairs = allRows(comm_, std::move(pairLocal));
+  const auto pairs = leaderRows(comm_, std::move(pairLocal));
   const bool hertzian = setup_.contact.normal == dem::contact::HertzSpring::name;
   const auto& m = setup_.material(0, 0);
   auto& cl = f.contacts;

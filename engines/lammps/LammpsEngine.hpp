@@ -53,6 +53,9 @@ class LammpsEngine final : public dem::ParticleEngine {
   [[nodiscard]] std::int64_t workItems() const override { return atoms_; }
   [[nodiscard]] std::string throughputNote() const override;
 
+  // Collective: every rank of the instance calls it at the same step. The particles and contacts
+  // are gathered on the first rank only; the others get a frame without particles (they write
+  // and sample nothing).
   const core::data::ParticleFrame& frame() override;
   [[nodiscard]] dem::Energies energies() override;
   [[nodiscard]] std::int64_t mobileCount() override;

@@ -364,9 +364,10 @@ std::unique_ptr<dem::DemEngine> freshEngine(StageContext& ctx, const DemSetup& s
 }
 
 // A state from a file brings its own ids: the tracked ones must be among them.
-void checkTrackedIds(const StageContext& ctx, const DemSetup& setup, dem::ParticleEngine& engine,
+void checkTrackedIds(StageContext& ctx, const DemSetup& setup, dem::ParticleEngine& engine,
                      const dem::DemEngine* own) {
-  if (setup.trackedIds.empty()) return;
+  // On several ranks (engine lammps) the frame is gathered on the first.
+  if (setup.trackedIds.empty() || ctx.comm().rank() != 0) return;
   auto has = [&](std::int64_t id) {
     if (own != nullptr) return own->simulation().indexOf(id).has_value();
     const auto& ids = engine.frame().id;
