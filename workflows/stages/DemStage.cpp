@@ -341,25 +341,35 @@ void logContactTimes(const StageContext& ctx, const DemSetup& setup) {
   }
 }
 
-// The initial particles of a fresh run: inserted, or read from a file and refused if they
-// overlap (before the first step, rather than let the springs explode).
+// A state read from a file whose worst overlap is beyond max_initial_overlap is refused, naming
+// the pair (before the first step, rather than let the springs explode).
+void refuseOverlappingState(const StageContext& ctx, const dem::Simulation& sim) {
+  const json& p = ctx.params();
+  const auto worst = sim.largestOverlap();
+  if (worst.relative > p.at("max_initial_overlap").get<double>()) {
+    throw Error("/stages/" + ctx.stage() + "/params/" + (p.contains("lammps_data") ? "lammps_data" : "initial_frame") +
+                ": particles " + std::to_string(worst.i) + " and " + std::to_string(worst.j) + " overlap by " +
+                std::to_string(worst.relative) + " of the smaller diameter, above max_initial_overlap = " +
+                std::to_string(p.at("max_initial_overlap").get<double>()));
+  }
+}
+
+// The initial particles of a fresh run: inserted, or read from a file (lammps_data,
+// initial_frame).
+bool stateFromFile(const json& p) { return p.contains("lammps_data") || p.contains("initial_frame"); }
+dem::Particles particlesFromFile(const json& p, const DemSetup& setup) {
+  return p.contains("lammps_data") ? readLammpsParticles(p, setup) : readFrameParticles(p, setup);
+}
+
+// grainbridge's engine of a fresh run.
 std::unique_ptr<dem::DemEngine> freshEngine(StageContext& ctx, const DemSetup& setup) {
   const json& p = ctx.params();
   const core::io::ArtifactStamp stamp{ctx.key()};
-  if (!p.contains("lammps_data") && !p.contains("initial_frame")) {
+  if (!stateFromFile(p)) {
     return std::make_unique<dem::DemEngine>(setup.engine, insertSpecies(ctx, p, setup), ctx.outputDir(), stamp);
   }
-  const char* source = p.contains("lammps_data") ? "lammps_data" : "initial_frame";
-  auto engine = std::make_unique<dem::DemEngine>(
-      setup.engine, p.contains("lammps_data") ? readLammpsParticles(p, setup) : readFrameParticles(p, setup),
-      ctx.outputDir(), stamp);
-  const auto worst = engine->simulation().largestOverlap();
-  if (worst.relative > p.at("max_initial_overlap").get<double>()) {
-    throw Error("/stages/" + ctx.stage() + "/params/" + source + ": particles " + std::to_string(worst.i) + " and " +
-                std::to_string(worst.j) + " overlap by " + std::to_string(worst.relative) +
-                " of the smaller diameter, above max_initial_overlap = " +
-                std::to_string(p.at("max_initial_overlap").get<double>()));
-  }
+  auto engine = std::make_unique<dem::DemEngine>(setup.engine, particlesFromFile(p, setup), ctx.outputDir(), stamp);
+  refuseOverlappingState(ctx, engine->simulation());
   return engine;
 }
 
@@ -425,18 +435,11 @@ void runOnLammps(StageContext& ctx, const DemSetup& setup, driver::TimeLoopDrive
   auto engine = loop.start<lammps::LammpsEngine>(
       [&] {
         dem::Particles particles;
-        if (!p.contains("lammps_data") && !p.contains("initial_frame")) {
+        if (!stateFromFile(p)) {
           particles = insertSpecies(ctx, p, setup);
         } else {
-          const char* source = p.contains("lammps_data") ? "lammps_data" : "initial_frame";
-          particles = p.contains("lammps_data") ? readLammpsParticles(p, setup) : readFrameParticles(p, setup);
-          const auto worst = dem::Simulation(setup.engine, particles).largestOverlap();
-          if (worst.relative > p.at("max_initial_overlap").get<double>()) {
-            throw Error("/stages/" + ctx.stage() + "/params/" + source + ": particles " + std::to_string(worst.i) +
-                        " and " + std::to_string(worst.j) + " overlap by " + std::to_string(worst.relative) +
-                        " of the smaller diameter, above max_initial_overlap = " +
-                        std::to_string(p.at("max_initial_overlap").get<double>()));
-          }
+          particles = particlesFromFile(p, setup);
+          refuseOverlappingState(ctx, dem::Simulation(setup.engine, particles));
         }
         return std::make_unique<lammps::LammpsEngine>(setup.engine, lammpsRadii(setup), particles, runSteps(p),
                                                       comm, ctx.outputDir(), stamp);
