@@ -73,9 +73,14 @@ Vec3 row3(const double* r) { return {r[0], r[1], r[2]}; }
 
 }  // namespace
 
-LammpsEngine::LammpsEngine(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii, std::int64_t lastStep,
-                           MPI_Comm comm, const std::filesystem::path& outputDir, core::io::ArtifactStamp stamp)
-    : setup_(setup), radii_(radii), input_(lammpsInput(setup, radii)), lastStep_(lastStep) {
+LammpsEngine::LammpsEngine(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii, bool frozenAtoms,
+                           std::int64_t lastStep, MPI_Comm comm, const std::filesystem::path& outputDir,
+                           core::io::ArtifactStamp stamp)
+    : setup_(setup),
+      radii_(radii),
+      input_(lammpsInput(setup, radii, frozenAtoms)),
+      frozenAtoms_(frozenAtoms),
+      lastStep_(lastStep) {
   open(comm);
   if (leader()) writer_.emplace(outputDir, std::move(stamp));
 }
@@ -83,7 +88,11 @@ LammpsEngine::LammpsEngine(const dem::SimulationSetup& setup, const LammpsSpecie
 LammpsEngine::LammpsEngine(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii,
                            const dem::Particles& particles, std::int64_t lastStep, MPI_Comm comm,
                            const std::filesystem::path& outputDir, core::io::ArtifactStamp stamp)
-    : LammpsEngine(setup, radii, lastStep, comm, outputDir, std::move(stamp)) {
+    : LammpsEngine(setup, radii,
+                   std::any_of(particles.invMass.begin(),
+                               particles.invMass.begin() + static_cast<std::ptrdiff_t>(particles.nOwned),
+                               [](double w) { return w == 0.0; }),
+                   lastStep, comm, outputDir, std::move(stamp)) {
   for (const auto& line : input_.system) command(line);
   const auto n = particles.nOwned;
   std::vector<int> ids(n), types(n);
@@ -158,7 +167,8 @@ std::unique_ptr<LammpsEngine> LammpsEngine::restore(const dem::SimulationSetup& 
   in.read(reinterpret_cast<char*>(forces.data()), static_cast<std::streamsize>(forceValues * sizeof(double)));
   if (!in) throw Error(stateFile.string() + ": the LAMMPS restart or the forces in it are cut short");
 
-  std::unique_ptr<LammpsEngine> engine(new LammpsEngine(setup, radii, lastStep, comm, outputDir, std::move(stamp)));
+  std::unique_ptr<LammpsEngine> engine(
+      new LammpsEngine(setup, radii, header.value("frozen_atoms", true), lastStep, comm, outputDir, std::move(stamp)));
   // LAMMPS reads a restart from a file of its own, beside the state, written once (its first rank
   // reads it and sends the atoms to the others).
   const auto restartFile = std::filesystem::path(stateFile.string() + ".lammps-restart");
@@ -285,9 +295,13 @@ void LammpsEngine::saveState(const std::filesystem::path& file, const std::strin
   if (!leader()) return;
   std::ifstream in(restartFile, std::ios::binary);
   const std::string restart((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const nlohmann::json header = {
-      {"fingerprint", fingerprint},    {"step", step_},     {"time", time_}, {"bytes", restart.size()},
-      {"force_values", forces.size()}, {"engine", "lammps"}};
+  const nlohmann::json header = {{"fingerprint", fingerprint},
+                                 {"step", step_},
+                                 {"time", time_},
+                                 {"bytes", restart.size()},
+                                 {"force_values", forces.size()},
+                                 {"frozen_atoms", frozenAtoms_},
+                                 {"engine", "lammps"}};
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   out << header.dump() << '\n';
   out.write(restart.data(), static_cast<std::streamsize>(restart.size()));

@@ -67,8 +67,9 @@ class LammpsEngine final : public dem::ParticleEngine {
   }
 
  private:
-  LammpsEngine(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii, std::int64_t lastStep, MPI_Comm comm,
-               const std::filesystem::path& outputDir, core::io::ArtifactStamp stamp);
+  LammpsEngine(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii, bool frozenAtoms,
+               std::int64_t lastStep, MPI_Comm comm, const std::filesystem::path& outputDir,
+               core::io::ArtifactStamp stamp);
   // Never before the current step (a run asked to go past its last step goes on).
   [[nodiscard]] std::int64_t lastStep() const { return std::max(lastStep_, step_); }
   void open(MPI_Comm comm);
@@ -82,6 +83,7 @@ class LammpsEngine final : public dem::ParticleEngine {
   dem::SimulationSetup setup_;
   LammpsSpeciesRadii radii_;
   LammpsInput input_;
+  bool frozenAtoms_ = false;  // some atoms are of a frozen type
   void* lmp_ = nullptr;
   MPI_Comm comm_ = MPI_COMM_NULL;  // the instance's, or MPI_COMM_NULL when serial
   mutable std::int64_t pending_ = 0;

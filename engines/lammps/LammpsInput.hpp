@@ -41,8 +41,9 @@ inline std::string wallFixId(std::size_t wall) { return "gb_wall" + std::to_stri
 std::vector<core::engine::SetupProblem> lammpsProblems(const dem::SimulationSetup& setup,
                                                        const LammpsSpeciesRadii& radii);
 
-// The input for a setup without problems (asserts that).
-LammpsInput lammpsInput(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii);
+// The input for a setup without problems (asserts that). `frozenAtoms`: some particles are frozen
+// (their types, fix freeze and the neighbour exclusion are issued only then).
+LammpsInput lammpsInput(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii, bool frozenAtoms);
 
 // The xy tilt the box is created with under Lees-Edwards shear: shear_rate L_y dt, one step
 // ahead, since fix deform tilts the box at the end of each step (LammpsInput.cpp).

@@ -56,7 +56,7 @@ std::vector<std::string> pointers(const dem::SimulationSetup& s, const LammpsSpe
 
 TEST(LammpsInput, CoefficientsReachLammpsToTheBit) {
   const auto s = twoSpecies();
-  const auto in = lammps::lammpsInput(s, {{0.0005, 0.001}});
+  const auto in = lammps::lammpsInput(s, {{0.0005, 0.001}}, true);
   const auto& pair = in.interactions.front();
   ASSERT_EQ(pair.rfind("pair_style gran/hooke/history ", 0), 0u) << pair;
   // k_n is printed so that it reads back as the same double.
@@ -67,6 +67,12 @@ TEST(LammpsInput, CoefficientsReachLammpsToTheBit) {
   EXPECT_TRUE(has(in.system, "boundary p p f"));
   EXPECT_TRUE(has(in.interactions, "group gb_frozen type 3:4"));
   EXPECT_TRUE(has(in.interactions, "neigh_modify exclude group gb_frozen gb_frozen"));
+  EXPECT_TRUE(has(in.interactions, "fix gb_integrate gb_mobile nve/sphere"));
+  // Without frozen atoms, no exclusion (it slows LAMMPS's neighbour build) and all atoms move.
+  const auto free = lammps::lammpsInput(s, {{0.0005, 0.001}}, false);
+  EXPECT_FALSE(std::any_of(free.interactions.begin(), free.interactions.end(),
+                           [](const std::string& l) { return l.find("gb_frozen") != std::string::npos; }));
+  EXPECT_TRUE(has(free.interactions, "fix gb_integrate all nve/sphere"));
   const auto gravity = std::find_if(in.interactions.begin(), in.interactions.end(), [](const std::string& l) {
     return l.rfind("fix gb_gravity all gravity ", 0) == 0;
   });
@@ -77,7 +83,7 @@ TEST(LammpsInput, CoefficientsReachLammpsToTheBit) {
 }
 
 TEST(LammpsInput, AWallIsTheSideItFaces) {
-  const auto in = lammps::lammpsInput(twoSpecies(), {{0.0005, 0.001}});
+  const auto in = lammps::lammpsInput(twoSpecies(), {{0.0005, 0.001}}, false);
   auto wall = [&](std::size_t w) {
     for (const auto& line : in.interactions) {
       if (line.rfind("fix " + lammps::wallFixId(w) + " ", 0) == 0) return line;
@@ -94,7 +100,7 @@ TEST(LammpsInput, HertzianCoefficientsAbsorbTheOtherFactor) {
   auto s = twoSpecies();
   s.contact.normal = "hertz";
   const double a = 0.0005;
-  const auto in = lammps::lammpsInput(s, {{a, a}});
+  const auto in = lammps::lammpsInput(s, {{a, a}}, false);
   const auto& pair = in.interactions.front();
   ASSERT_EQ(pair.rfind("pair_style gran/hertz/history ", 0), 0u) << pair;
   const double kn = std::strtod(pair.c_str() + std::string("pair_style gran/hertz/history ").size(), nullptr);
@@ -146,7 +152,7 @@ TEST(LammpsInput, AShearedBoxIsTiltedOneStepAhead) {
   s.walls.clear();
   s.periodic = {true, true, true};
   s.shearRate = 100.0;
-  const auto in = lammps::lammpsInput(s, {{0.0005, 0.001}});
+  const auto in = lammps::lammpsInput(s, {{0.0005, 0.001}}, true);
   EXPECT_EQ(lammps::leesEdwardsInitialTilt(s), 100.0 * 0.02 * 1e-5);
   EXPECT_TRUE(std::any_of(in.system.begin(), in.system.end(), [&](const std::string& l) {
     return l.rfind("region gb_box prism 0 0.04 0 0.02 0 0.06 ", 0) == 0 && l.ends_with(" 0 0 units box");
