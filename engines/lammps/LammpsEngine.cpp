@@ -330,6 +330,15 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
                               : 0.0;
   f.domain.leesEdwardsOffset = offset;
   f.domain.leesEdwardsShearRate = setup_.shearRate;
+  // The offset of the ghosts the contacts are evaluated with: after a step, the one above (the
+  // box's tilt one step back); in the state of a setup (the initial frame), the box's tilt now,
+  // which is one step ahead of grainbridge's (the box starts at rate L_y dt, LammpsInput.cpp), so
+  // a contact across the y boundary of the initial frame is that of the image at t = dt.
+  const double ghostOffset = [&] {
+    if (setup_.shearRate == 0.0 || halfStep_) return offset;
+    const double o = std::fmod(*static_cast<double*>(lammps_extract_global(lmp_, "xy")), length[0]);
+    return o < 0 ? o + length[0] : o;
+  }();
   for (const auto& w : setup_.walls) {
     f.domain.walls.push_back({w.kind == dem::Wall::Kind::Plane ? "plane" : "cylinder", w.positionAt(time_), w.direction,
                               w.kind == dem::Wall::Kind::Plane ? 0.0 : w.radius, w.velocityAt(time_)});
@@ -482,7 +491,7 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
       if (!setup_.periodic[static_cast<std::size_t>(a)]) continue;
       const double images = std::round(branch[a] / length[a]);
       branch[a] -= images * length[a];
-      if (a == 1) branch[0] -= images * offset;
+      if (a == 1) branch[0] -= images * ghostOffset;
     }
     const double dist = r[2];
     if (std::abs(branch.norm() - dist) > 1e-9 * dist) {
