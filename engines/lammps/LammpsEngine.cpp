@@ -31,42 +31,45 @@ constexpr int kWallColumns = 8;
 // relative velocity (p5-p7).
 constexpr int kPairColumns = 10;
 
-// The rows every rank holds, gathered on every rank in rank order.
-std::vector<double> allRows(MPI_Comm comm, std::vector<double> local) {
-  if (comm == MPI_COMM_NULL) return local;
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  if (size == 1) return local;
-  const int n = static_cast<int>(local.size());
-  std::vector<int> counts(static_cast<std::size_t>(size));
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  std::vector<int> displs(static_cast<std::size_t>(size), 0);
-  std::partial_sum(counts.begin(), std::prev(counts.end()), std::next(displs.begin()));
-  std::vector<double> all(static_cast<std::size_t>(displs.back() + counts.back()));
-  MPI_Allgatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, comm);
-  return all;
-}
+// Where gathered rows end up: on every rank (each rank puts back its own atoms' forces after a
+// restart re-partitions them), or on the instance's first rank only (a frame of a million
+// particles is held once, where it is written and sampled; the others get none).
+enum class Gather { Everywhere, OnFirstRank };
 
-// The rows every rank holds, gathered on the instance's first rank in rank order (the others get
-// none): a frame of a million particles is held once, where it is written and sampled.
-std::vector<double> leaderRows(MPI_Comm comm, std::vector<double> local) {
+// The rows every rank holds, gathered in rank order.
+std::vector<double> gatherRows(MPI_Comm comm, std::vector<double> local, Gather where) {
   if (comm == MPI_COMM_NULL) return local;
   int size = 1;
   int rank = 0;
   MPI_Comm_size(comm, &size);
   MPI_Comm_rank(comm, &rank);
   if (size == 1) return local;
+  const bool everywhere = where == Gather::Everywhere;
   const int n = static_cast<int>(local.size());
   std::vector<int> counts(static_cast<std::size_t>(size));
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  if (everywhere) {
+    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  } else {
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  }
   std::vector<int> displs(static_cast<std::size_t>(size), 0);
   std::vector<double> all;
-  if (rank == 0) {
+  if (everywhere || rank == 0) {
     std::partial_sum(counts.begin(), std::prev(counts.end()), std::next(displs.begin()));
     all.resize(static_cast<std::size_t>(displs.back() + counts.back()));
   }
-  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
+  if (everywhere) {
+    MPI_Allgatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, comm);
+  } else {
+    MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
+  }
   return all;
+}
+
+// A Lees-Edwards offset (or a tilt) as an x shift in [0, L_x).
+double wrappedOffset(double shift, double lengthX) {
+  const double o = std::fmod(shift, lengthX);
+  return o < 0 ? o + lengthX : o;
 }
 
 Vec3 row3(const double* r) { return {r[0], r[1], r[2]}; }
@@ -76,11 +79,7 @@ Vec3 row3(const double* r) { return {r[0], r[1], r[2]}; }
 LammpsEngine::LammpsEngine(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii, bool frozenAtoms,
                            std::int64_t lastStep, MPI_Comm comm, const std::filesystem::path& outputDir,
                            core::io::ArtifactStamp stamp)
-    : setup_(setup),
-      radii_(radii),
-      input_(lammpsInput(setup, radii, frozenAtoms)),
-      frozenAtoms_(frozenAtoms),
-      lastStep_(lastStep) {
+    : setup_(setup), input_(lammpsInput(setup, radii, frozenAtoms)), frozenAtoms_(frozenAtoms), lastStep_(lastStep) {
   open(comm);
   if (leader()) writer_.emplace(outputDir, std::move(stamp));
 }
@@ -285,7 +284,7 @@ void LammpsEngine::saveState(const std::filesystem::path& file, const std::strin
     local.insert(local.end(), {static_cast<double>(tag[k]), force[k][0], force[k][1], force[k][2], torque[k][0],
                                torque[k][1], torque[k][2]});
   }
-  const auto forces = allRows(comm_, std::move(local));
+  const auto forces = gatherRows(comm_, std::move(local), Gather::Everywhere);
   // write_restart re-partitions the atoms (exchange, borders) and so leaves the neighbour lists
   // stale: the next run needs LAMMPS's setup, after which these forces are put back, as on a
   // resume.
@@ -322,23 +321,16 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
   f.domain.periodic = setup_.periodic;
   const Vec3 length = setup_.hi - setup_.lo;
   // grainbridge's Lees-Edwards offset of the image above, at this time (dem::Simulation's).
-  const double offset =
-      setup_.shearRate != 0.0 ? [&] {
-        const double o = std::fmod(setup_.shearRate * length[1] * time_, length[0]);
-        return o < 0 ? o + length[0] : o;
-      }()
-                              : 0.0;
+  const double offset = setup_.shearRate != 0.0 ? wrappedOffset(setup_.shearRate * length[1] * time_, length[0]) : 0.0;
   f.domain.leesEdwardsOffset = offset;
   f.domain.leesEdwardsShearRate = setup_.shearRate;
   // The offset of the ghosts the contacts are evaluated with: after a step, the one above (the
   // box's tilt one step back); in the state of a setup (the initial frame), the box's tilt now,
   // which is one step ahead of grainbridge's (the box starts at rate L_y dt, LammpsInput.cpp), so
   // a contact across the y boundary of the initial frame is that of the image at t = dt.
-  const double ghostOffset = [&] {
-    if (setup_.shearRate == 0.0 || halfStep_) return offset;
-    const double o = std::fmod(*static_cast<double*>(lammps_extract_global(lmp_, "xy")), length[0]);
-    return o < 0 ? o + length[0] : o;
-  }();
+  const double ghostOffset = setup_.shearRate == 0.0 || halfStep_
+                                 ? offset
+                                 : wrappedOffset(*static_cast<double*>(lammps_extract_global(lmp_, "xy")), length[0]);
   for (const auto& w : setup_.walls) {
     f.domain.walls.push_back({w.kind == dem::Wall::Kind::Plane ? "plane" : "cylinder", w.positionAt(time_), w.direction,
                               w.kind == dem::Wall::Kind::Plane ? 0.0 : w.radius, w.velocityAt(time_)});
@@ -389,7 +381,7 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
       for (int c = 0; c < kWallColumns; ++c) local.push_back(wallArrays[w] ? wallArrays[w][k][c] : 0.0);
     }
   }
-  const auto rows = leaderRows(comm_, std::move(local));
+  const auto rows = gatherRows(comm_, std::move(local), Gather::OnFirstRank);
   const std::size_t n = rows.size() / width;
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
@@ -477,7 +469,7 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
       }
     }
   }
-  const auto pairs = leaderRows(comm_, std::move(pairLocal));
+  const auto pairs = gatherRows(comm_, std::move(pairLocal), Gather::OnFirstRank);
   const bool hertzian = setup_.contact.normal == dem::contact::HertzSpring::name;
   const auto& m = setup_.material(0, 0);
   auto& cl = f.contacts;

@@ -81,7 +81,6 @@ class LammpsEngine final : public dem::ParticleEngine {
   [[nodiscard]] bool leader() const;
 
   dem::SimulationSetup setup_;
-  LammpsSpeciesRadii radii_;
   LammpsInput input_;
   bool frozenAtoms_ = false;  // some atoms are of a frozen type
   void* lmp_ = nullptr;
