@@ -158,6 +158,9 @@ void to_json(json& j, const SimulationSetup& s) {
                      {"vibration_frequency", w.vibration.frequency},
                      {"vibration_direction", core::json::vec3Json(w.vibration.direction)},
                      {"materials", materials}});
+    // Only when not the default, so the states of runs from before the key are read as they were.
+    if (w.vibration.start != Vibration::Start::MidStroke)
+      walls.back()["vibration_start"] = vibrationStartName(w.vibration.start);
   }
   j = {{"box_lo", core::json::vec3Json(s.lo)},
        {"box_hi", core::json::vec3Json(s.hi)},
@@ -211,6 +214,7 @@ void from_json(const json& j, SimulationSetup& s) {
     w.vibration.amplitude = wj.at("vibration_amplitude");
     w.vibration.frequency = wj.at("vibration_frequency");
     w.vibration.direction = core::json::vec3FromJson(wj.at("vibration_direction"));
+    w.vibration.start = vibrationStartFromName(wj.value("vibration_start", "mid_stroke"));
     for (const auto& m : wj.at("materials")) w.material.push_back(material(m));
     s.walls.push_back(std::move(w));
   }

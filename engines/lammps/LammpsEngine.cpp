@@ -138,6 +138,7 @@ LammpsEngine::LammpsEngine(const dem::SimulationSetup& setup, const LammpsSpecie
     for (int a = 0; a < 3; ++a) omega[k][a] = particles.omega[i][a];
   }
   for (const auto& line : input_.interactions) command(line);
+  makeWalls(0);
 }
 
 std::unique_ptr<LammpsEngine> LammpsEngine::restore(const dem::SimulationSetup& setup, const LammpsSpeciesRadii& radii,
@@ -182,6 +183,7 @@ std::unique_ptr<LammpsEngine> LammpsEngine::restore(const dem::SimulationSetup& 
     if (line.rfind("pair_", 0) == 0) continue;
     engine->command(line);
   }
+  engine->makeWalls(header.at("step").get<std::int64_t>());
   if (comm != MPI_COMM_NULL) MPI_Barrier(comm);
   if (engine->leader()) std::filesystem::remove(restartFile);
   engine->restoredForces_ = std::move(forces);
@@ -190,6 +192,20 @@ std::unique_ptr<LammpsEngine> LammpsEngine::restore(const dem::SimulationSetup& 
   engine->time_ = header.at("time").get<double>();
   engine->atoms_ = static_cast<std::int64_t>(lammps_get_natoms(engine->lmp_));
   return engine;
+}
+
+void LammpsEngine::makeWalls(std::int64_t step) {
+  // A vibrating wall's phase counts from the step its fix is made at (LAMMPS's time_origin): the
+  // step is set to the vibration's origin for that fix and back to `step` after it.
+  bool moved = false;
+  for (const auto& wall : input_.walls) {
+    if (wall.vibrating) {
+      command("reset_timestep " + std::to_string(wall.timeOrigin));
+      moved = true;
+    }
+    command(wall.command);
+  }
+  if (moved) command("reset_timestep " + std::to_string(step));
 }
 
 LammpsEngine::~LammpsEngine() {

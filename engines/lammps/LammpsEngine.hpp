@@ -74,6 +74,8 @@ class LammpsEngine final : public dem::ParticleEngine {
   [[nodiscard]] std::int64_t lastStep() const { return std::max(lastStep_, step_); }
   void open(MPI_Comm comm);
   void command(const std::string& line) const;
+  // The walls' fixes (LammpsInput::walls), made while LAMMPS is at `step`.
+  void makeWalls(std::int64_t step);
   // Runs the steps advance() has counted.
   void flush() const;
   // After a resumed run's setup: its forces are the checkpoint's (restoredForces_).
@@ -90,10 +92,9 @@ class LammpsEngine final : public dem::ParticleEngine {
   // A step has run since the setup: the forces held are a step's, evaluated at half-step
   // velocities (the setup's are at the state's own).
   mutable bool halfStep_ = false;
-  mutable bool forcesPending_ = false;
-  mutable std::int64_t setupStep_ = 0;
-  std::int64_t lastStep_ =
-      0;  // the step of LAMMPS's last setup (fix deform's origin)  // restoredForces_ still to be put back
+  mutable bool forcesPending_ = false;     // restoredForces_ still to be put back
+  mutable std::int64_t setupStep_ = 0;     // the step of LAMMPS's last setup (fix deform's origin)
+  std::int64_t lastStep_ = 0;              // the run's last step
   std::int64_t step_ = 0;
   double time_ = 0.0;
   mutable std::int64_t atoms_ = 0;

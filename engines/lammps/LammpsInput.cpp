@@ -77,6 +77,18 @@ std::string granularArgs(const dem::SimulationSetup& s, const dem::PairMaterial&
 
 }  // namespace
 
+bool wiggleOrigin(const dem::Vibration& v, double dt, std::int64_t& timeOrigin) {
+  if (v.start == dem::Vibration::Start::AtRest) {
+    timeOrigin = 0;
+    return true;
+  }
+  const double steps = 0.75 / (v.frequency * dt);
+  const double whole = std::round(steps);
+  if (whole < 1.0 || std::abs(steps - whole) > 1e-12 * steps) return false;
+  timeOrigin = static_cast<std::int64_t>(whole);
+  return true;
+}
+
 double leesEdwardsInitialTilt(const dem::SimulationSetup& s) { return s.shearRate * (s.hi[1] - s.lo[1]) * s.dt; }
 
 bool lammpsAvailable() {
@@ -152,10 +164,22 @@ std::vector<core::engine::SetupProblem> lammpsProblems(const dem::SimulationSetu
           "engine lammps: fix wall/gran's zcylinder has its axis along z through x = y = 0; give the "
           "cylinder that axis (shift the box)");
     }
-    if (wall.vibration.amplitude != 0.0 && wall.vibration.frequency != 0.0) {
-      add(where + "/vibration_amplitude",
-          "engine lammps: vibrating walls (fix wall/gran wiggle) are not translated "
-          "yet");
+    if (wall.vibration.active()) {
+      int vibrationSign = 0;
+      const int vibrationAxis = axisOf(wall.vibration.direction, vibrationSign);
+      std::int64_t origin = 0;
+      if (vibrationAxis < 0) {
+        add(where + "/vibration_direction", "engine lammps: fix wall/gran wiggles along x, y or z only");
+      } else if (wall.kind == dem::Wall::Kind::Cylinder && vibrationAxis != 2) {
+        add(where + "/vibration_direction", "engine lammps: fix wall/gran's zcylinder wiggles along its axis z only");
+      } else if (!wiggleOrigin(wall.vibration, s.dt, origin)) {
+        add(where + "/vibration_start",
+            text("engine lammps: fix wall/gran's wiggle moves as A (1 - cos 2 pi f t) from the step its fix is "
+                 "made; mid_stroke's A sin(2 pi f t) is that three quarters of a period on, which must be a "
+                 "whole number of steps and is ",
+                 0.75 / (wall.vibration.frequency * s.dt),
+                 " here: set vibration_start \"at_rest\", or a frequency and dt with 3 / (4 f dt) whole"));
+      }
     }
     for (std::size_t k = 1; k < wall.material.size(); ++k) {
       if (!sameMaterial(wall.material[k], wall.material[0])) {
@@ -225,17 +249,33 @@ LammpsInput lammpsInput(const dem::SimulationSetup& s, const LammpsSpeciesRadii&
     const auto& wall = s.walls[w];
     int sign = 0;
     const int axis = axisOf(wall.direction, sign);
+    LammpsInput::WallFix fix;
+    // A wiggle moves the wall as a (1 - cos omega (n - n0) dt) from its base, a signed along the
+    // axis; mid_stroke's base is one amplitude back from the rest position (wiggleOrigin).
+    std::string wiggle;
+    double base = wall.kind == dem::Wall::Kind::Plane ? wall.origin[axis] : 0.0;
+    if (wall.vibration.active()) {
+      int vibrationSign = 0;
+      const int vibrationAxis = axisOf(wall.vibration.direction, vibrationSign);
+      const double amplitude = vibrationSign * wall.vibration.amplitude;
+      fix.vibrating = true;
+      GB_ASSERT(wiggleOrigin(wall.vibration, s.dt, fix.timeOrigin), "a refused vibration reached lammpsInput()");
+      if (vibrationAxis == axis && wall.vibration.start == dem::Vibration::Start::MidStroke) base -= amplitude;
+      wiggle = text(" wiggle ", kAxis[static_cast<std::size_t>(vibrationAxis)], " ", amplitude, " ",
+                    1.0 / wall.vibration.frequency);
+    }
     std::string geometry;
     if (wall.kind == dem::Wall::Kind::Plane) {
       // The normal points into the domain: a +z normal is a floor (lo), a -z one a lid (hi).
-      const std::string at = exact(wall.origin[axis]);
+      const std::string at = exact(base);
       geometry =
           std::string(kAxis[static_cast<std::size_t>(axis)]) + "plane " + (sign > 0 ? at + " NULL" : "NULL " + at);
     } else {
       geometry = "zcylinder " + exact(wall.radius);
     }
-    cmd.push_back("fix " + wallFixId(w) + " all wall/gran " +
-                  granularArgs(s, wall.material.front(), a * std::sqrt(2.0)) + " " + geometry + " contacts");
+    fix.command = "fix " + wallFixId(w) + " all wall/gran " + granularArgs(s, wall.material.front(), a * std::sqrt(2.0)) +
+                  " " + geometry + wiggle + " contacts";
+    in.walls.push_back(std::move(fix));
   }
   cmd.push_back(std::string("compute ") + kPairAtomsCompute + " all property/local patom1 patom2 cutoff radius");
   cmd.push_back(std::string("compute ") + kPairForcesCompute +

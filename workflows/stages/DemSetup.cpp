@@ -129,6 +129,7 @@ DemSetup makeDemSetup(const json& p) {
       wall.vibration.amplitude = wj.at("vibration_amplitude");
       wall.vibration.frequency = wj.at("vibration_frequency");
       wall.vibration.direction = core::json::vec3FromJson(wj.at("vibration_direction")).normalized();
+      wall.vibration.start = dem::vibrationStartFromName(wj.at("vibration_start"));
       for (const auto& s : out.species) {
         wall.material.push_back(material(wj, *law, s.mass, 2.0 * s.radius));
         out.timings.push_back(timing(s.name + "-wall " + std::to_string(w), "/walls/" + std::to_string(w), wj, *law,

@@ -57,14 +57,19 @@ std::shared_ptr<ParamSchema> wallSchema() {
       .add(ParamSpec::quantity("vibration_amplitude", Dimension::lengthDim())
                .defaultValue(0.0)
                .min(0.0)
-               .doc("A of A sin(2 pi f t)"))
+               .doc("A of A sin(2 pi f t), or of A (1 - cos 2 pi f t) with vibration_start at_rest"))
       .add(ParamSpec::quantity("vibration_frequency", Dimension::frequency())
                .defaultValue(0.0)
                .min(0.0)
                .doc("f (ordinary frequency)"))
       .add(ParamSpec::quantityList("vibration_direction", Dimension::none(), 3)
                .defaultValue(json::array({0, 0, 1}))
-               .doc("direction of vibration"));
+               .doc("direction of vibration"))
+      .add(ParamSpec::string("vibration_start")
+               .defaultValue("mid_stroke")
+               .options({"mid_stroke", "at_rest"})
+               .doc("mid_stroke: A sin(2 pi f t), through the rest position at full speed at t = 0; at_rest: "
+                    "A (1 - cos 2 pi f t), from rest (LAMMPS's wiggle)"));
   addContactParams(*s);
   return s;
 }

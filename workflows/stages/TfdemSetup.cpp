@@ -56,6 +56,7 @@ json demParamsOf(const json& p, bool twoD) {
       w["vibration_amplitude"] = 0.0;
       w["vibration_frequency"] = 0.0;
       w["vibration_direction"] = json::array({0, 0, 1});
+      w["vibration_start"] = "mid_stroke";
       walls.push_back(std::move(w));
     }
   }

@@ -29,7 +29,7 @@ SimulationSetup twoSpeciesWithWalls() {
   Wall cylinder = dem::testing::floorWall(dem::testing::table61Wall(0.3), 0.0, 2);
   cylinder.kind = Wall::Kind::Cylinder;
   cylinder.radius = 2.5;
-  cylinder.vibration = {Vec3(0, 0.6, 0.8), 0.01, 15.0};
+  cylinder.vibration = {Vec3(0, 0.6, 0.8), 0.01, 15.0, Vibration::Start::AtRest};
   s.walls = {dem::testing::floorWall(dem::testing::table61Wall(), 0.25, 2), cylinder};
   return s;
 }
@@ -41,6 +41,10 @@ TEST(SimulationSetup, JsonRoundTripIsExact) {
   EXPECT_EQ(json(back), j);
   EXPECT_EQ(back.lo, s.lo);
   EXPECT_EQ(back.walls[1].vibration.direction, s.walls[1].vibration.direction);
+  EXPECT_EQ(back.walls[1].vibration.start, Vibration::Start::AtRest);
+  EXPECT_EQ(back.walls[0].vibration.start, Vibration::Start::MidStroke);
+  // The default start is not written, so a state from before the key reads as it did.
+  EXPECT_FALSE(j.at("walls")[0].contains("vibration_start"));
   EXPECT_EQ(back.material(0, 1).mu, 0.1);
   EXPECT_EQ(back.contact, s.contact);
   // The keys the dem stage's params share keep the stage's names, so pointers map one to one.
@@ -97,3 +101,19 @@ TEST(SimulationSetup, ANeighbourGridTooLargeToAllocateIsRefusedNamingTheBox) {
 }
 
 }  // namespace
+
+// at_rest: A (1 - cos 2 pi f t), at rest at t = 0 and 2 A out at half a period; mid_stroke:
+// A sin(2 pi f t), at full speed 2 pi f A at t = 0.
+TEST(Vibration, StartsAtRestOrMidStroke) {
+  Vibration v{Vec3(0, 0, 1), 0.01, 15.0, Vibration::Start::AtRest};
+  EXPECT_EQ(v.displacement(0.0).norm(), 0.0);
+  EXPECT_EQ(v.velocity(0.0).norm(), 0.0);
+  EXPECT_NEAR(v.displacement(0.5 / 15.0).z(), 0.02, 1e-15);
+  EXPECT_NEAR(v.velocity(0.25 / 15.0).z(), 2 * M_PI * 15.0 * 0.01, 1e-12);
+  v.start = Vibration::Start::MidStroke;
+  EXPECT_EQ(v.displacement(0.0).norm(), 0.0);
+  EXPECT_NEAR(v.velocity(0.0).z(), 2 * M_PI * 15.0 * 0.01, 1e-12);
+  EXPECT_NEAR(v.displacement(0.25 / 15.0).z(), 0.01, 1e-15);
+  EXPECT_EQ(vibrationStartFromName(vibrationStartName(Vibration::Start::AtRest)), Vibration::Start::AtRest);
+  EXPECT_THROW((void)vibrationStartFromName("sine"), Error);
+}

@@ -84,12 +84,9 @@ TEST(LammpsInput, CoefficientsReachLammpsToTheBit) {
 
 TEST(LammpsInput, AWallIsTheSideItFaces) {
   const auto in = lammps::lammpsInput(twoSpecies(), {{0.0005, 0.001}}, false);
-  auto wall = [&](std::size_t w) {
-    for (const auto& line : in.interactions) {
-      if (line.rfind("fix " + lammps::wallFixId(w) + " ", 0) == 0) return line;
-    }
-    return std::string();
-  };
+  auto wall = [&](std::size_t w) { return in.walls.at(w).command; };
+  EXPECT_TRUE(wall(0).rfind("fix " + lammps::wallFixId(0) + " all wall/gran ", 0) == 0) << wall(0);
+  EXPECT_FALSE(in.walls.at(0).vibrating);
   EXPECT_TRUE(wall(0).ends_with(" zplane 0.001 NULL contacts")) << wall(0);  // a floor: particles above
   EXPECT_TRUE(wall(1).ends_with(" zplane NULL 0.05 contacts")) << wall(1);   // a lid: particles below
 }
@@ -105,10 +102,7 @@ TEST(LammpsInput, HertzianCoefficientsAbsorbTheOtherFactor) {
   ASSERT_EQ(pair.rfind("pair_style gran/hertz/history ", 0), 0u) << pair;
   const double kn = std::strtod(pair.c_str() + std::string("pair_style gran/hertz/history ").size(), nullptr);
   EXPECT_DOUBLE_EQ(kn * std::sqrt(1e-6 * a * a / (2 * a)), s.material(0, 0).kn * std::sqrt(1e-6 / (2 * a)));
-  std::string floor;
-  for (const auto& line : in.interactions) {
-    if (line.rfind("fix " + lammps::wallFixId(0) + " ", 0) == 0) floor = line;
-  }
+  const std::string floor = in.walls.at(0).command;
   const auto at = floor.find("hertz/history ");
   ASSERT_NE(at, std::string::npos) << floor;
   const double knWall = std::strtod(floor.c_str() + at + 14, nullptr);
@@ -134,13 +128,20 @@ TEST(LammpsInput, EveryRefusalNamesItsKey) {
   drum.radius = 0.01;
   drum.vibration.amplitude = 1e-3;
   drum.vibration.frequency = 20.0;
+  drum.vibration.direction = Vec3(1, 0, 0);  // zcylinder wiggles along z only
   drum.material = s.walls[1].material;
   drum.material[1] = drum.material[0];
   s.walls.push_back(drum);
+  dem::Wall shaker = s.walls[0];
+  shaker.direction = Vec3(0, 0, 1);
+  shaker.vibration = {Vec3(0, 0.6, 0.8), 1e-3, 20.0};  // oblique
+  s.walls.push_back(shaker);
+  shaker.vibration = {Vec3(0, 0, 1), 1e-3, 35.0};  // 3 / (4 f dt) = 2142.9 steps: not whole
+  s.walls.push_back(shaker);
   const auto found = pointers(s, radii);
-  for (const char* key :
-       {"/tangential_model", "/damping_model", "/normal_model", "/planar", "/pressure_control", "/pair_contacts",
-        "/walls/0/direction", "/walls/1", "/walls/2", "/walls/2/vibration_amplitude"}) {
+  for (const char* key : {"/tangential_model", "/damping_model", "/normal_model", "/planar", "/pressure_control",
+                          "/pair_contacts", "/walls/0/direction", "/walls/1", "/walls/2", "/walls/2/vibration_direction",
+                          "/walls/3/vibration_direction", "/walls/4/vibration_start"}) {
     EXPECT_TRUE(has(found, key)) << key;
   }
 }
@@ -169,4 +170,36 @@ TEST(LammpsInput, WithoutFrictionAnyTangentialLawWillDo) {
     for (auto& m : w.material) m.mu = 0.0;
   }
   EXPECT_TRUE(lammps::lammpsProblems(s, {{0.0005, 0.001}}).empty());
+}
+
+// LAMMPS's wiggle moves a wall as a (1 - cos omega (n - n0) dt) from the step n0 its fix is made
+// at. at_rest is that from step 0; mid_stroke's a sin(omega t) is the same three quarters of a
+// period on, from a base one amplitude back.
+TEST(LammpsInput, AVibratingWallWigglesFromItsOrigin) {
+  auto s = twoSpecies();
+  s.walls.resize(1);
+  s.walls[0].vibration = {Vec3(0, 0, 1), 2e-4, 25.0};  // a period of 4000 steps of 1e-5 s
+  auto in = lammps::lammpsInput(s, {{0.0005, 0.001}}, false);
+  ASSERT_TRUE(in.walls.at(0).vibrating);
+  EXPECT_EQ(in.walls[0].timeOrigin, 3000);
+  EXPECT_TRUE(in.walls[0].command.ends_with(" zplane 8e-04 NULL wiggle z 2e-04 0.04 contacts")) << in.walls[0].command;
+  s.walls[0].vibration.start = dem::Vibration::Start::AtRest;
+  in = lammps::lammpsInput(s, {{0.0005, 0.001}}, false);
+  EXPECT_EQ(in.walls.at(0).timeOrigin, 0);
+  EXPECT_TRUE(in.walls[0].command.ends_with(" zplane 0.001 NULL wiggle z 2e-04 0.04 contacts")) << in.walls[0].command;
+  // Along -z the signed amplitude is negative, and the base is one amplitude up.
+  s.walls[0].vibration = {Vec3(0, 0, -1), 2e-4, 25.0};
+  in = lammps::lammpsInput(s, {{0.0005, 0.001}}, false);
+  const auto& lid = in.walls.at(0).command;
+  ASSERT_TRUE(lid.ends_with(" NULL wiggle z -2e-04 0.04 contacts")) << lid;
+  EXPECT_EQ(std::strtod(lid.c_str() + lid.find(" zplane ") + 8, nullptr), 0.001 + 2e-4) << lid;
+  // Sideways, a plane only moves in itself: its position stays.
+  s.walls[0].vibration = {Vec3(1, 0, 0), 2e-4, 25.0};
+  in = lammps::lammpsInput(s, {{0.0005, 0.001}}, false);
+  EXPECT_TRUE(in.walls.at(0).command.ends_with(" zplane 0.001 NULL wiggle x 2e-04 0.04 contacts"))
+      << in.walls[0].command;
+  std::int64_t origin = -1;
+  EXPECT_FALSE(lammps::wiggleOrigin({Vec3(0, 0, 1), 2e-4, 35.0}, 1e-5, origin));
+  EXPECT_TRUE(lammps::wiggleOrigin({Vec3(0, 0, 1), 2e-4, 35.0, dem::Vibration::Start::AtRest}, 1e-5, origin));
+  EXPECT_EQ(origin, 0);
 }
