@@ -1,7 +1,10 @@
 #include "workflows/exec/MpiDispatcher.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
+
+#include <spdlog/spdlog.h>
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
@@ -107,7 +110,12 @@ void runMpiWorker(const stages::StageRegistry& registry, const std::filesystem::
       MPI_Group_free(&world);
       comm = core::parallel::Communicator(raw, /*owned=*/true);
     }
+    // The instance's other ranks run the same stage in step with its first: their progress and
+    // info lines would repeat the first rank's line for line, so they log warnings and errors only.
+    const auto level = spdlog::get_level();
+    if (me != task.group.front()) spdlog::set_level(std::max(level, spdlog::level::warn));
     InstanceOutcome outcome = runInstance(task, registry, resultsRoot, comm, stopFlag());
+    spdlog::set_level(level);
     if (me == task.group.front()) sendJson(outcome.toJson(), 0, kTagResult);
   }
 }
