@@ -78,6 +78,12 @@ class LammpsEngine final : public dem::ParticleEngine {
   void makeWalls(std::int64_t step);
   // Runs the steps advance() has counted.
   void flush() const;
+  // `steps` steps in one `pre no` run.
+  void runSteps(std::int64_t steps) const;
+  // Under Lees-Edwards shear: the number of further steps until the one at whose end fix deform
+  // finds the tilt past half the box and flips it (the flip itself comes at the next step); the
+  // lists are rebuilt on every step from one before that to one after (flush()).
+  [[nodiscard]] std::int64_t stepsToFlip() const;
   // After a resumed run's setup: its forces are the checkpoint's (restoredForces_).
   void putBackForces() const;
   [[nodiscard]] bool leader() const;
