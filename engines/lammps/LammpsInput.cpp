@@ -259,7 +259,8 @@ LammpsInput lammpsInput(const dem::SimulationSetup& s, const LammpsSpeciesRadii&
       const int vibrationAxis = axisOf(wall.vibration.direction, vibrationSign);
       const double amplitude = vibrationSign * wall.vibration.amplitude;
       fix.vibrating = true;
-      GB_ASSERT(wiggleOrigin(wall.vibration, s.dt, fix.timeOrigin), "a refused vibration reached lammpsInput()");
+      const bool wiggles = wiggleOrigin(wall.vibration, s.dt, fix.timeOrigin);
+      GB_ASSERT(wiggles, "a refused vibration reached lammpsInput()");
       if (vibrationAxis == axis && wall.vibration.start == dem::Vibration::Start::MidStroke) base -= amplitude;
       wiggle = text(" wiggle ", kAxis[static_cast<std::size_t>(vibrationAxis)], " ", amplitude, " ",
                     1.0 / wall.vibration.frequency);
