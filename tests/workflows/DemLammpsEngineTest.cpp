@@ -47,21 +47,21 @@ json bed() {
   })");
 }
 
-struct Run {
+struct EngineRun {
   std::map<std::string, std::vector<double>> series;
   fs::path lastFrame;
 };
 
 // Each engine's series.csv (by column) and last frame.
-std::map<std::string, Run> runBoth(const fs::path& work, const json& cfg) {
+std::map<std::string, EngineRun> runBoth(const fs::path& work, const json& cfg) {
   writeText(work / "wf.json", cfg.dump());
   const auto r = runGrainbridge(work, "run wf.json");
   EXPECT_EQ(r.exitCode, 0) << r.output;
-  std::map<std::string, Run> out;
+  std::map<std::string, EngineRun> out;
   for (const auto& e : fs::recursive_directory_iterator(work / "results/wf/bed")) {
     if (e.path().filename() != "manifest.json") continue;
     const auto manifest = json::parse(readText(e.path()));
-    Run& run = out[manifest.at("params").at("engine").get<std::string>()];
+    EngineRun& run = out[manifest.at("params").at("engine").get<std::string>()];
     std::istringstream lines(readText(e.path().parent_path() / "series.csv"));
     std::string line;
     std::getline(lines, line);
@@ -81,7 +81,7 @@ std::map<std::string, Run> runBoth(const fs::path& work, const json& cfg) {
 }
 
 // Every column agrees at every row to `tolerance` of the column's largest magnitude.
-void expectSameSeries(const Run& ours, const Run& lammps, double tolerance) {
+void expectSameSeries(const EngineRun& ours, const EngineRun& lammps, double tolerance) {
   ASSERT_EQ(ours.series.size(), lammps.series.size());
   for (const auto& [name, values] : ours.series) {
     const auto& other = lammps.series.at(name);
@@ -210,6 +210,38 @@ std::string stoppedRun(const fs::path& work) {
   return readText(work / "bg.log");
 }
 
+// `cfg` (one instance on engine lammps) run once through in `reference`, and in `work` stopped by
+// SIGTERM after its first checkpoint and run again; each run's results, read as runBoth reads
+// them (the frames stay in the caller's folders).
+void uninterruptedAndResumed(const json& cfg, const fs::path& reference, const fs::path& work, EngineRun& uninterrupted,
+                             EngineRun& resumed) {
+  writeText(reference / "wf.json", cfg.dump());
+  ASSERT_EQ(runGrainbridge(reference, "run wf.json").exitCode, 0);
+  writeText(work / "wf.json", cfg.dump());
+  const std::string log = stoppedRun(work);
+  ASSERT_NE(log.find("checkpoint written"), std::string::npos) << log;
+  const auto rerun = runGrainbridge(work, "run wf.json");
+  ASSERT_EQ(rerun.exitCode, 0) << rerun.output;
+  EXPECT_NE(rerun.output.find("resuming from the checkpoint at step"), std::string::npos) << rerun.output;
+  uninterrupted = runBoth(reference, cfg).at("lammps");
+  resumed = runBoth(work, cfg).at("lammps");
+}
+
+// Every particle of frame `a` is in frame `b` (matched by id, in whichever order) at the same
+// place to 1e-10 of its radius, up to a whole box length on a periodic axis.
+void expectSamePositions(const core::data::ParticleFrame& a, const core::data::ParticleFrame& b) {
+  ASSERT_EQ(a.size(), b.size());
+  std::map<std::int64_t, std::size_t> inB;
+  for (std::size_t i = 0; i < b.size(); ++i) inB[b.id[i]] = i;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(inB.count(a.id[i]), 1u);
+    Vec3 d = a.position[i] - b.position[inB.at(a.id[i])];
+    for (int k = 0; k < 3; ++k)
+      d[k] -= std::round(d[k] / (a.domain.hi[k] - a.domain.lo[k])) * (a.domain.hi[k] - a.domain.lo[k]);
+    EXPECT_LE(d.norm(), 1e-10 * a.radius[i]) << "particle " << a.id[i];
+  }
+}
+
 }  // namespace
 
 // SIGTERM writes a checkpoint (a LAMMPS restart file with the last step's forces), and the next
@@ -224,17 +256,9 @@ TEST(DemLammpsEngine, AStoppedRunResumesFromItsCheckpoint) {
   stage["params"]["series_points"] = 50;
   stage["params"]["checkpoint_interval"] = "0.2 s";
   TempDir reference;
-  writeText(reference.path() / "wf.json", cfg.dump());
-  ASSERT_EQ(runGrainbridge(reference.path(), "run wf.json").exitCode, 0);
   TempDir work;
-  writeText(work.path() / "wf.json", cfg.dump());
-  const std::string log = stoppedRun(work.path());
-  ASSERT_NE(log.find("checkpoint written"), std::string::npos) << log;
-  const auto resumed = runGrainbridge(work.path(), "run wf.json");
-  ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
-  EXPECT_NE(resumed.output.find("resuming from the checkpoint at step"), std::string::npos) << resumed.output;
-  const auto reference_ = runBoth(reference.path(), cfg).at("lammps");
-  const auto resumed_ = runBoth(work.path(), cfg).at("lammps");
+  EngineRun reference_, resumed_;
+  ASSERT_NO_FATAL_FAILURE(uninterruptedAndResumed(cfg, reference.path(), work.path(), reference_, resumed_));
   const auto& a = reference_.series;
   const auto& b = resumed_.series;
   ASSERT_EQ(a.at("step").size(), 50u);
@@ -308,17 +332,8 @@ TEST(DemLammpsEngine, AShearedBoxGivesTheSameSeriesOnBothEngines) {
   expectSameSeries(runs.at("grainbridge"), runs.at("lammps"), 1e-10);
   const auto a = core::io::readParticleFrame(runs.at("grainbridge").lastFrame);
   const auto b = core::io::readParticleFrame(runs.at("lammps").lastFrame);
-  ASSERT_EQ(a.size(), b.size());
-  std::map<std::int64_t, std::size_t> inB;
-  for (std::size_t i = 0; i < b.size(); ++i) inB[b.id[i]] = i;
   EXPECT_NEAR(a.domain.leesEdwardsOffset, b.domain.leesEdwardsOffset, 1e-12 * (a.domain.hi[0] - a.domain.lo[0]));
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    ASSERT_EQ(inB.count(a.id[i]), 1u);
-    Vec3 d = a.position[i] - b.position[inB.at(a.id[i])];
-    for (int k = 0; k < 3; ++k)
-      d[k] -= std::round(d[k] / (a.domain.hi[k] - a.domain.lo[k])) * (a.domain.hi[k] - a.domain.lo[k]);
-    EXPECT_LE(d.norm(), 1e-10 * a.radius[i]) << "particle " << a.id[i];
-  }
+  expectSamePositions(a, b);
 }
 
 // A vibrating container, Brazil-nut style: a floor shaken along z as A sin(2 pi f t)
@@ -366,15 +381,8 @@ TEST(DemLammpsEngine, AVibratingContainerGivesTheSameSeriesOnBothEngines) {
   EXPECT_GT(std::accumulate(drum.begin(), drum.end(), 0.0, [](double m, double f) { return std::max(m, std::abs(f)); }),
             0.0);
   expectSameSeries(runs.at("grainbridge"), runs.at("lammps"), 1e-10);
-  const auto a = core::io::readParticleFrame(runs.at("grainbridge").lastFrame);
-  const auto b = core::io::readParticleFrame(runs.at("lammps").lastFrame);
-  ASSERT_EQ(a.size(), b.size());
-  std::map<std::int64_t, std::size_t> inB;
-  for (std::size_t i = 0; i < b.size(); ++i) inB[b.id[i]] = i;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    ASSERT_EQ(inB.count(a.id[i]), 1u);
-    EXPECT_LE((a.position[i] - b.position[inB.at(a.id[i])]).norm(), 1e-10 * a.radius[i]) << "particle " << a.id[i];
-  }
+  expectSamePositions(core::io::readParticleFrame(runs.at("grainbridge").lastFrame),
+                      core::io::readParticleFrame(runs.at("lammps").lastFrame));
 }
 
 // One grain riding the shaken floor (peak acceleration 0.12 g): with nothing to sum in another
@@ -395,17 +403,11 @@ TEST(DemLammpsEngine, AResumedRunKeepsTheWallsPhase) {
   params["series_points"] = 97;  // not a whole number of periods apart
   params["checkpoint_interval"] = "0.2 s";
   TempDir reference;
-  writeText(reference.path() / "wf.json", cfg.dump());
-  ASSERT_EQ(runGrainbridge(reference.path(), "run wf.json").exitCode, 0);
   TempDir work;
-  writeText(work.path() / "wf.json", cfg.dump());
-  const std::string log = stoppedRun(work.path());
-  ASSERT_NE(log.find("checkpoint written"), std::string::npos) << log;
-  const auto resumed = runGrainbridge(work.path(), "run wf.json");
-  ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
-  EXPECT_NE(resumed.output.find("resuming from the checkpoint at step"), std::string::npos) << resumed.output;
-  const auto a = runBoth(reference.path(), cfg).at("lammps").series;
-  const auto b = runBoth(work.path(), cfg).at("lammps").series;
+  EngineRun uninterrupted, resumed;
+  ASSERT_NO_FATAL_FAILURE(uninterruptedAndResumed(cfg, reference.path(), work.path(), uninterrupted, resumed));
+  const auto& a = uninterrupted.series;
+  const auto& b = resumed.series;
   ASSERT_EQ(b.at("step"), a.at("step"));
   const auto& height = a.at("com_z_grain");
   const auto [low, high] = std::minmax_element(height.begin(), height.end());
