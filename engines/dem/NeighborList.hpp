@@ -51,6 +51,18 @@ class NeighborList {
   [[nodiscard]] std::uint32_t innerPartner(std::size_t k) const { return innerPartner_[k]; }
   [[nodiscard]] std::size_t innerSlot(std::size_t k) const { return innerSlot_[k]; }
   [[nodiscard]] std::size_t innerPairCount() const { return innerPartner_.size(); }
+  // The inner list's arrays, for the force loop to hold in registers: through the member
+  // functions above GCC reloads each array's address after every store of a force (it cannot
+  // prove that a store of a double or a count leaves a std::vector's pointers alone).
+  struct InnerView {
+    const std::size_t* offset;
+    const std::uint32_t* partner;
+    const std::size_t* slot;
+    Vec3* history;
+  };
+  [[nodiscard]] InnerView innerView() {
+    return {innerOffset_.data(), innerPartner_.data(), innerSlot_.data(), history_.data()};
+  }
   // Positions of owned particles at the last inner build, for its rebuild criterion.
   [[nodiscard]] const std::vector<Vec3>& innerReferencePositions() const { return x1_; }
 

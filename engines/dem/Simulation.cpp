@@ -548,7 +548,10 @@ void Simulation::pairForces() {
   Vec3* const force = p_.force.data();
   Vec3* const torque = p_.torque.data();
   const PairMaterial* const materials = setup_.pairMaterial.data();
-  for (std::size_t i = 0; i < p_.nOwned; ++i) {
+  const NeighborList::InnerView inner = list_.innerView();
+  const std::size_t nOwned = p_.nOwned;
+  std::size_t contacts = 0;  // a local: the member's every increment went through memory
+  for (std::size_t i = 0; i < nOwned; ++i) {
     const Vec3 xi = x[i];
     const Vec3 vi = v[i];
     const Vec3 wi = omega[i];
@@ -558,26 +561,31 @@ void Simulation::pairForces() {
     Vec3 fi = Vec3::Zero();
     Vec3 ti = Vec3::Zero();
     // The inner list: the pairs it leaves out are apart (NeighborList::buildInner).
-    for (std::size_t k = list_.innerBegin(i); k < list_.innerEnd(i); ++k) {
-      const std::size_t j = list_.innerPartner(k);
+    for (std::size_t k = inner.offset[i], end = inner.offset[i + 1]; k < end; ++k) {
+      const std::size_t j = inner.partner[k];
       const Vec3 r = xi - x[j];
       const double sumRadii = ai + radius[j];
       const double r2 = r.squaredNorm();
-      Vec3& ut = list_.history(list_.innerSlot(k));
+      Vec3& ut = inner.history[inner.slot[k]];
       if (r2 >= sumRadii * sumRadii) {
         // Not touching: the history ends with the contact. Most listed pairs are apart and
         // already zero; testing first spares the cache line a write every step.
         if (!ut.isZero(0.0)) ut.setZero();
         continue;
       }
+      // 1 / r^2 and |r| side by side, and 1 / |r| as their product: nothing waits for a
+      // division after the square root (ContactKinematics::branch).
       const double rlen = std::sqrt(r2);
+      const double invR2 = 1.0 / r2;
       contact::ContactKinematics c;
-      c.n = r / rlen;
+      c.branch = r;
+      c.invBranch2 = invR2;
+      c.n = r * (rlen * invR2);
       c.delta = sumRadii - rlen;  // Eq. 6.1
       c.d = sumRadii;
       const double aj = radius[j];
       const Vec3 vij = vi - v[j];
-      c.vn = vij.dot(c.n) * c.n;                                // Eq. 6.2
+      c.vn = c.alongNormal(vij);                                 // Eq. 6.2
       c.vt = vij - c.vn - (ai * wi + aj * omega[j]).cross(c.n);  // Eq. 6.3
       c.meff = 1.0 / (invMi + invMass[j]);
       const auto f = Law::evaluate(c, materials[static_cast<std::size_t>(si * ns + species[j])], dt, ut, H);
@@ -591,7 +599,7 @@ void Simulation::pairForces() {
       const Vec3 nxft = c.n.cross(ft);
       ti -= ai * nxft;
       torque[j] -= aj * nxft;
-      ++contactCount_;
+      ++contacts;
       if constexpr (Record) {
         auto& rc = recordedContacts_;
         rc.i.push_back(p_.id[i]);
@@ -610,6 +618,7 @@ void Simulation::pairForces() {
     force[i] += fi;
     torque[i] += ti;
   }
+  contactCount_ += contacts;
 }
 
 template <class Law, bool Record, contact::History H>
@@ -644,7 +653,7 @@ void Simulation::wallForces() {
         continue;
       }
       contact::ContactKinematics c;
-      c.n = n;
+      c.setUnitNormal(n);
       c.delta = ai - gap;
       c.d = 2.0 * ai;  // Hertz against a wall: d = 2 a_i
       const Vec3 vij = p_.v[i] - wallVelocity;

@@ -19,7 +19,10 @@ class DemStage final : public StageType {
   //    carries the contacts of its own state; inserted particles start at exactly the asked
   //    initial_temperature (the Maxwellian particle_gas uses, rescaled)
   // 6: frames carry their materials (core/data/Materials), which extract reads instead of params
-  [[nodiscard]] int implVersion() const override { return 6; }
+  // 7: the pair loop takes n, v_n and the history's projection from r_ij and 1 / r^2 (as LAMMPS),
+  //    and Eq. 6.4's rescale from a series for small turns: the same equations, rounded
+  //    differently in the last bits (a chaotic run then drifts from there)
+  [[nodiscard]] int implVersion() const override { return 7; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"final_coordination", "–"},
             {"final_contacts", "–"},

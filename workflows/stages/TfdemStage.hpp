@@ -18,7 +18,8 @@ class TfdemStage final : public StageType {
   [[nodiscard]] std::string name() const override { return "tfdem"; }
   // 5: each gas step closes the gas's continuity with its final fractions (engines/fluid
   //    SimpleStep closeGasContinuity), moving the gas by the size of a continuity residual.
-  [[nodiscard]] int implVersion() const override { return 5; }
+  // 6: the DEM pair loop of dem impl 7 (last bits)
+  [[nodiscard]] int implVersion() const override { return 6; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"coordination", "–"}, {"multi_contact_ratio", "–"}};
   }

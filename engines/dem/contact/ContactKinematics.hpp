@@ -8,11 +8,26 @@ namespace grainbridge::dem::contact {
 // Relative motion at one contact, all as seen by particle i (n points from j to i).
 struct ContactKinematics {
   Vec3 n;        // unit normal, from j towards i
+  // The normal before it was made a unit vector, and 1 / |branch|^2: a pair's r_ij and 1 / r^2.
+  // What is projected onto the normal is projected with them (as LAMMPS does): 1 / r^2 is ready
+  // a square root and a division sooner than n, which shortens the contact's longest dependency
+  // chain. A wall's contact, whose n is exact, has branch = n, invBranch2 = 1 (setUnitNormal).
+  Vec3 branch;
+  double invBranch2;
   double delta;  // overlap d - r_ij (Eq. 6.1), > 0
   double d;      // a_i + a_j (2 a_i for a wall): the length in f(delta/d)
   Vec3 vn;       // normal relative velocity (Eq. 6.2)
   Vec3 vt;       // tangential relative velocity of the contact surfaces (Eq. 6.3)
   double meff;   // m_i m_j / (m_i + m_j); the mobile partner's mass against a frozen one or a wall
+
+  // n, with branch and invBranch2 to match, from a unit vector.
+  void setUnitNormal(const Vec3& unit) {
+    n = unit;
+    branch = unit;
+    invBranch2 = 1.0;
+  }
+  // The part of u along n, (u.n) n, from the branch.
+  [[nodiscard]] Vec3 alongNormal(const Vec3& u) const { return (u.dot(branch) * invBranch2) * branch; }
 };
 
 // Force on particle i, split into its elastic (spring) and dissipative (dashpot) parts.

@@ -14,7 +14,7 @@ template <class Law>
 CollisionResponse integrateCollision(const PairMaterial& m, double meff, double d, double v0) {
   // Along n (from j to i): overlap delta grows at w = -v_n; meff delta'' = -F_n . n.
   ContactKinematics c;
-  c.n = Vec3::UnitX();
+  c.setUnitNormal(Vec3::UnitX());
   c.d = d;
   c.vt = Vec3::Zero();
   c.meff = meff;

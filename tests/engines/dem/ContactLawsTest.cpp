@@ -9,10 +9,12 @@
 //   impact speed, and a sticking tangential spring stores exactly the work done on it;
 // - history under rigid rotation: u_t stays in the tangent plane and keeps its length up to the
 //   projection's second-order loss;
-// - the set-up evaluation (History::Keep) leaves the history as it was.
+// - the set-up evaluation (History::Keep) leaves the history as it was;
+// - only the branch's direction counts, not its length (ContactKinematics::branch).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "engines/dem/contact/ContactModels.hpp"
 #include "engines/dem/contact/Conversions.hpp"
@@ -45,7 +47,7 @@ PairMaterial material(bool damped) {
 
 ContactKinematics someContact() {
   ContactKinematics c;
-  c.n = Vec3(1.0, 2.0, -2.0) / 3.0;
+  c.setUnitNormal(Vec3(1.0, 2.0, -2.0) / 3.0);
   c.d = 1.0;
   c.delta = 2e-3;
   c.meff = 0.26;
@@ -57,7 +59,7 @@ ContactKinematics someContact() {
 }
 
 ContactKinematics mirrored(ContactKinematics c) {
-  c.n = -c.n;
+  c.setUnitNormal(-c.n);
   c.vn = -c.vn;
   c.vt = -c.vt;
   return c;
@@ -172,12 +174,52 @@ TYPED_TEST(EveryContactLaw, KeepTheHistoryInTheTangentPlaneUnderRigidRotation) {
   const Eigen::AngleAxisd turn(2.0 * M_PI / perTurn, axis);
   const double lossBound = std::pow(std::cos(2.0 * M_PI / perTurn), perTurn * turns);
   for (int k = 0; k < perTurn * turns; ++k) {
-    c.n = turn * c.n;
+    c.setUnitNormal(turn * c.n);
     const auto f = Law::evaluate(c, m, 1e-4, u, History::Advance);
     ASSERT_LE(std::abs(u.dot(c.n)), 1e-12 * u0.norm()) << "step " << k;
     ASSERT_LE(std::abs(f.tangential().dot(c.n)), 1e-12 * f.tangential().norm()) << "step " << k;
     ASSERT_LE(u.norm(), u0.norm() * (1.0 + 1e-12));
     ASSERT_GE(u.norm(), u0.norm() * (lossBound - 1e-9));
+  }
+}
+
+TYPED_TEST(EveryContactLaw, SeeOnlyTheDirectionOfTheBranch) {
+  // A pair's contact carries its branch r_ij and 1 / r^2 beside n (ContactKinematics::branch);
+  // the law must give the force and history of the unit normal whatever the branch's length.
+  using Law = TypeParam;
+  for (const double mu : {0.5, 0.01}) {
+    PairMaterial m = material(true);
+    m.mu = mu;
+    const ContactKinematics unit = someContact();
+    const Vec3 u0 = inPlane(Vec3(1e-4, 3e-5, -2e-5), unit.n) + 1e-6 * unit.n;  // a little off the plane
+    for (const double length : {1e-3, 0.7, 3.1}) {
+      ContactKinematics c = unit;
+      c.branch = length * unit.n;
+      c.invBranch2 = 1.0 / (length * length);
+      Vec3 uUnit = u0;
+      Vec3 u = u0;
+      const auto fUnit = Law::evaluate(unit, m, 1e-4, uUnit, History::Advance);
+      const auto f = Law::evaluate(c, m, 1e-4, u, History::Advance);
+      EXPECT_LE((f.normal() - fUnit.normal()).norm(), 1e-14 * fUnit.normal().norm()) << length;
+      EXPECT_LE((f.tangential() - fUnit.tangential()).norm(), 1e-14 * fUnit.normal().norm()) << length;
+      EXPECT_LE((u - uUnit).norm(), 1e-14 * u0.norm()) << length;
+    }
+  }
+}
+
+TEST(LengthRestoringFactor, IsOneOverTheSineOfTheHistorysAngleToTheNormal) {
+  // Eq. 6.4's rescale |u| / |u - (u.n) n| = 1 / sqrt(1 - s), s = (u.n)^2 / |u|^2: a series
+  // below s = 1e-4, the direct form above. Both within two ulps of the exact value.
+  for (const double s : {1e-16, 1e-12, 3e-8, 1e-6, 9.99e-5, 1e-4, 0.01, 0.5}) {
+    const Vec3 n = Vec3(2.0, -1.0, 2.0) / 3.0;
+    const Vec3 t = Vec3(1.0, 2.0, 0.0) / std::sqrt(5.0);  // normal to n
+    const Vec3 u = 3e-5 * (std::sqrt(s) * n + std::sqrt(1.0 - s) * t);
+    const double before2 = u.squaredNorm();
+    const double along = u.dot(n);
+    const Vec3 projected = u - along * n;
+    const double exact = static_cast<double>(1.0L / std::sqrt(1.0L - static_cast<long double>(along) * along / before2));
+    const double factor = lengthRestoringFactor(before2, along * along, projected);
+    EXPECT_NEAR(factor, exact, 2.0 * std::numeric_limits<double>::epsilon() * exact) << "s " << s;
   }
 }
 
