@@ -573,14 +573,11 @@ void Simulation::pairForces() {
         if (!ut.isZero(0.0)) ut.setZero();
         continue;
       }
-      // 1 / r^2 and |r| side by side, and 1 / |r| as their product: nothing waits for a
-      // division after the square root (ContactKinematics::branch).
+      // 1 / r^2 beside |r|: nothing waits for a division after the square root
+      // (ContactKinematics::branch).
       const double rlen = std::sqrt(r2);
-      const double invR2 = 1.0 / r2;
       contact::ContactKinematics c;
-      c.branch = r;
-      c.invBranch2 = invR2;
-      c.n = r * (rlen * invR2);
+      c.setBranch(r, rlen, 1.0 / r2);
       c.delta = sumRadii - rlen;  // Eq. 6.1
       c.d = sumRadii;
       const double aj = radius[j];

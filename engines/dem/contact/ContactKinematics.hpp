@@ -11,7 +11,8 @@ struct ContactKinematics {
   // The normal before it was made a unit vector, and 1 / |branch|^2: a pair's r_ij and 1 / r^2.
   // What is projected onto the normal is projected with them (as LAMMPS does): 1 / r^2 is ready
   // a square root and a division sooner than n, which shortens the contact's longest dependency
-  // chain. A wall's contact, whose n is exact, has branch = n, invBranch2 = 1 (setUnitNormal).
+  // chain. Set all three with setBranch (a pair) or setUnitNormal (a wall: branch = n,
+  // invBranch2 = 1).
   Vec3 branch;
   double invBranch2;
   double delta;  // overlap d - r_ij (Eq. 6.1), > 0
@@ -20,7 +21,14 @@ struct ContactKinematics {
   Vec3 vt;       // tangential relative velocity of the contact surfaces (Eq. 6.3)
   double meff;   // m_i m_j / (m_i + m_j); the mobile partner's mass against a frozen one or a wall
 
-  // n, with branch and invBranch2 to match, from a unit vector.
+  // A pair's: n from the branch r_ij, its length |r| and 1 / r^2 (1 / |r| as |r| / r^2, so that
+  // no division waits for the square root).
+  void setBranch(const Vec3& r, double length, double inverseLength2) {
+    branch = r;
+    invBranch2 = inverseLength2;
+    n = r * (length * inverseLength2);
+  }
+  // n, with branch and invBranch2 to match, from a unit vector (a wall's).
   void setUnitNormal(const Vec3& unit) {
     n = unit;
     branch = unit;
