@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
@@ -14,6 +16,39 @@
 #include "workflows/report/BuildDescription.hpp"
 
 namespace gb = grainbridge;
+
+namespace {
+
+// CLI11 answers a mistyped command ("grainbridge runn") with "A subcommand is required": name the
+// word it did not know, the closest command and the list. Walks down known subcommands first, so
+// "db quer" is answered at the db level. Empty when every word names a command.
+std::string unknownCommandMessage(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* level = &app;
+  std::string path = "grainbridge";
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.empty() || word[0] == '-') continue;
+    std::vector<std::string> names;
+    const CLI::App* next = nullptr;
+    for (const auto* sub : level->get_subcommands([](const CLI::App*) { return true; })) {
+      names.push_back(sub->get_name());
+      if (sub->get_name() == word) next = sub;
+    }
+    if (names.empty()) return "";
+    if (next == nullptr) {
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      const auto hint = gb::core::json::closestMatch(word, names);
+      return path + ": unknown command \"" + word + "\"" + (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)") +
+             "; commands: " + list;
+    }
+    level = next;
+    path += " " + word;
+  }
+  return "";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   gb::core::parallel::initialize(&argc, &argv);
@@ -26,9 +61,10 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("-v,--verbose", verbose, "more log output (debug level)");
   app.add_flag("-q,--quiet", quiet, "warnings and errors only");
-  // What this binary is and what it was built with: the code version, then each library.
+  // What this binary is and what it was built with: the code version, each library, the engines.
   app.set_version_flag("--version", [] {
-    return gb::workflows::report::codeDescription() + "\n" + gb::workflows::report::librariesDescription();
+    return gb::workflows::report::codeDescription() + "\n" + gb::workflows::report::librariesDescription() + "\n" +
+           gb::workflows::report::enginesDescription();
   });
   gb::workflows::commands::CommandOptions opt;
 
@@ -48,6 +84,7 @@ int main(int argc, char** argv) {
   check->add_option("config", opt.config, "workflow config (JSON)")->required();
 
   auto* stages = app.add_subcommand("stages", "list stage types and their parameters");
+  stages->add_option("type", opt.stageType, "only this stage type (e.g. mfm)");
   stages->add_flag("--markdown", opt.markdown, "print the reference as Markdown (docs/stages.md)");
 
   auto* report =
@@ -76,6 +113,7 @@ int main(int argc, char** argv) {
       "show", "the full provenance of one run: config, parameters, code, artifacts, upstream runs");
   addDbSource(dbShow);
   dbShow->add_option("run", opt.runId, "run id (from db runs)")->required();
+  dbShow->add_flag("--files", opt.files, "list every artifact with its sha256 (default: one line per kind)");
   auto* dbIntegrity = dbCmd->add_subcommand("integrity", "run SQLite's integrity check");
   addDbSource(dbIntegrity);
   auto* dbQuery = dbCmd->add_subcommand(
@@ -112,6 +150,13 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    const bool noCommand = std::string(e.what()).find("subcommand") != std::string::npos ||
+                           dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr;
+    if (const auto unknown = noCommand ? unknownCommandMessage(app, argc, argv) : ""; !unknown.empty()) {
+      if (rank == 0) std::fprintf(stderr, "%s\n", unknown.c_str());
+      gb::core::parallel::finalize();
+      return 2;
+    }
     const int code = app.exit(e);  // prints help or the usage error
     gb::core::parallel::finalize();
     return code == 0 ? 0 : 2;

@@ -6,7 +6,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/install-deps.sh
-if [[ ! -f build-release/CMakeCache.txt ]]; then
+# Configure until a configure has succeeded: a failed one leaves build-release/CMakeCache.txt but no
+# Makefile, and a retry must configure again rather than ask make for a missing Makefile.
+if [[ ! -f build-release/Makefile ]]; then
   cmake --preset release >/dev/null
 fi
 cmake --build build-release -j"$(nproc)" --target grainbridge

@@ -8,7 +8,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/install-deps.sh --tests
-if [[ ! -f build/CMakeCache.txt ]]; then
+# Configure until a configure has succeeded: a failed one leaves build/CMakeCache.txt but no
+# Makefile, and a retry must configure again rather than ask make for a missing Makefile.
+if [[ ! -f build/Makefile ]]; then
   cmake --preset ci >/dev/null
 fi
 cmake --build build -j"$(nproc)"

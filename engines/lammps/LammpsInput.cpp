@@ -99,6 +99,18 @@ bool lammpsAvailable() {
 #endif
 }
 
+std::string lammpsBuildNote() {
+#if defined(GRAINBRIDGE_HAVE_LAMMPS) && defined(GRAINBRIDGE_LAMMPS_VERSION)
+  return std::string("LAMMPS ") + GRAINBRIDGE_LAMMPS_VERSION;
+#elif defined(GRAINBRIDGE_HAVE_LAMMPS)
+  return "LAMMPS";
+#elif defined(GRAINBRIDGE_LAMMPS_OFF_REASON)
+  return std::string("off: ") + GRAINBRIDGE_LAMMPS_OFF_REASON;
+#else
+  return "off";
+#endif
+}
+
 std::vector<core::engine::SetupProblem> lammpsProblems(const dem::SimulationSetup& s, const LammpsSpeciesRadii& radii) {
   std::vector<core::engine::SetupProblem> out;
   auto add = [&out](std::string pointer, std::string message) {

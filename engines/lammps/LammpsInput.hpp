@@ -69,6 +69,10 @@ double leesEdwardsInitialTilt(const dem::SimulationSetup& setup);
 // refused at check otherwise.
 bool lammpsAvailable();
 
+// One line for `grainbridge --version` and the check's refusal: "LAMMPS <version>" when the engine
+// was built, otherwise why it was left out (the reason CMake gave at configure).
+std::string lammpsBuildNote();
+
 // LAMMPS atom type of a particle of `species` (0-based), frozen or not.
 inline int lammpsType(int species, bool frozen, int speciesCount) { return species + 1 + (frozen ? speciesCount : 0); }
 

@@ -114,7 +114,7 @@ def main():
         print(f"{data} is missing (CI has ../shared beside the clone): skipped")
         return 77
     if not args.lmp or not pathlib.Path(args.lmp).exists():
-        print("no LAMMPS binary (Debian package lammps; scripts/install-deps.sh --tests installs it)")
+        print("no LAMMPS binary (Debian package lammps; scripts/install-deps.sh installs it)")
         return 1
     work = pathlib.Path(args.work)
     (work / "lammps").mkdir(parents=True, exist_ok=True)

@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "core/Version.hpp"
+#include "engines/lammps/LammpsInput.hpp"
 #include "tests/support/Cli.hpp"
 
 using namespace grainbridge::testing;
@@ -21,4 +22,31 @@ TEST(VersionCli, NamesTheCodeAndEveryLibrary) {
                               R"(MPI: \S+)"}) {
     EXPECT_TRUE(std::regex_search(r.output, std::regex(pattern))) << pattern << "\n" << r.output;
   }
+}
+
+// The engines built, and engine lammps's state: "LAMMPS <version>" where liblammps was usable,
+// else "off: <why>" (issue 54: a broken liblammps CMake package no longer stops the configure).
+TEST(VersionCli, ListsTheEnginesBuilt) {
+  TempDir work;
+  const auto r = runGrainbridge(work.path(), "--version");
+  EXPECT_NE(r.output.find("Engines: dem, mfm, tfdem; lammps: "), std::string::npos) << r.output;
+  if (grainbridge::lammps::lammpsAvailable()) {
+    EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(lammps: LAMMPS \d+)"))) << r.output;
+  } else {
+    EXPECT_NE(r.output.find("lammps: off: "), std::string::npos) << r.output;
+  }
+}
+
+// A mistyped command is named, with the closest one (CLI11 alone said "A subcommand is required").
+TEST(VersionCli, UnknownCommandsAreNamedWithASuggestion) {
+  TempDir work;
+  auto r = runGrainbridge(work.path(), "runn x.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("grainbridge: unknown command \"runn\" (did you mean \"run\"?); commands: run, status"),
+            std::string::npos)
+      << r.output;
+  r = runGrainbridge(work.path(), "db quer");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("grainbridge db: unknown command \"quer\" (did you mean \"query\"?)"), std::string::npos)
+      << r.output;
 }

@@ -3,6 +3,7 @@
 #include "core/BuildInfo.hpp"
 #include "core/Version.hpp"
 #include "db/Database.hpp"
+#include "engines/lammps/LammpsInput.hpp"
 
 namespace grainbridge::workflows::report {
 
@@ -14,6 +15,11 @@ std::string codeDescription() {
 std::string librariesDescription() {
   return "HDF5 " + core::hdf5Version() + ", SQLite " + db::sqliteVersion() + ", Eigen " + core::eigenVersion() +
          ", MPI: " + core::mpiVersion();
+}
+
+std::string enginesDescription() {
+  // dem, fluid (mfm) and tfdem are always built; engine lammps only where liblammps was usable.
+  return "Engines: dem, mfm, tfdem; lammps: " + lammps::lammpsBuildNote();
 }
 
 }  // namespace grainbridge::workflows::report

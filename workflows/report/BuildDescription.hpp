@@ -9,5 +9,7 @@ namespace grainbridge::workflows::report {
 std::string codeDescription();
 // "HDF5 1.10.8, SQLite 3.40.1, Eigen 3.4.0, MPI: Open MPI v4.1.4, ..."
 std::string librariesDescription();
+// "Engines: dem, mfm, tfdem; lammps: LAMMPS 20220106" (or "lammps: off: <why>")
+std::string enginesDescription();
 
 }  // namespace grainbridge::workflows::report

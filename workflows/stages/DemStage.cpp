@@ -137,7 +137,8 @@ DemStage::DemStage() {
       .add(ParamSpec::string("periodic").defaultValue("").doc("periodic axes, e.g. \"xy\""))
       .add(ParamSpec::quantityList("gravity", Dimension::acceleration(), 3)
                .defaultValue(json::array({0, 0, -9.81}))
-               .doc("gravitational acceleration"))
+               .doc("gravitational acceleration; default along -z, where a dem bed stands (mfm and tfdem: along "
+                    "-y, the vertical of their 2D x-y grids)"))
       .add(ParamSpec::quantity("dt", Dimension::timeDim())
                .required()
                .positive()
@@ -303,8 +304,9 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   }
   const bool onLammps = p.at("engine") == "lammps";
   if (onLammps && !lammps::lammpsAvailable()) {
-    d.add(ptr + "/engine", "this build has no LAMMPS: install Debian's liblammps-dev (scripts/install-deps.sh) and "
-                           "rebuild grainbridge");
+    d.add(ptr + "/engine", "this build has no engine lammps (" + lammps::lammpsBuildNote() +
+                               "): install Debian's liblammps-dev and lammps (scripts/install-deps.sh) and "
+                               "rebuild grainbridge");
   }
   if (onLammps && p.contains("preparation")) {
     d.add(ptr + "/preparation", "engine lammps: the two-step preparation (held species, shaken container) is "
@@ -362,8 +364,9 @@ void refuseOverlappingState(const StageContext& ctx, const dem::Simulation& sim)
 // The initial particles of a fresh run: inserted, or read from a file (lammps_data,
 // initial_frame).
 bool stateFromFile(const json& p) { return p.contains("lammps_data") || p.contains("initial_frame"); }
-dem::Particles particlesFromFile(const json& p, const DemSetup& setup) {
-  return p.contains("lammps_data") ? readLammpsParticles(p, setup) : readFrameParticles(p, setup);
+dem::Particles particlesFromFile(const StageContext& ctx, const DemSetup& setup) {
+  const json& p = ctx.params();
+  return p.contains("lammps_data") ? readLammpsParticles(p, setup, ctx.units()) : readFrameParticles(p, setup);
 }
 
 // grainbridge's engine of a fresh run.
@@ -373,7 +376,7 @@ std::unique_ptr<dem::DemEngine> freshEngine(StageContext& ctx, const DemSetup& s
   if (!stateFromFile(p)) {
     return std::make_unique<dem::DemEngine>(setup.engine, insertSpecies(ctx, p, setup), ctx.outputDir(), stamp);
   }
-  auto engine = std::make_unique<dem::DemEngine>(setup.engine, particlesFromFile(p, setup), ctx.outputDir(), stamp);
+  auto engine = std::make_unique<dem::DemEngine>(setup.engine, particlesFromFile(ctx, setup), ctx.outputDir(), stamp);
   refuseOverlappingState(ctx, engine->simulation());
   return engine;
 }
@@ -443,7 +446,7 @@ void runOnLammps(StageContext& ctx, const DemSetup& setup, driver::TimeLoopDrive
         if (!stateFromFile(p)) {
           particles = insertSpecies(ctx, p, setup);
         } else {
-          particles = particlesFromFile(p, setup);
+          particles = particlesFromFile(ctx, setup);
           refuseOverlappingState(ctx, dem::Simulation(setup.engine, particles));
         }
         return std::make_unique<lammps::LammpsEngine>(setup.engine, lammpsRadii(setup), particles, runSteps(p),
