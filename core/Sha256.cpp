@@ -6,7 +6,10 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <memory>
+#include <mutex>
+#include <tuple>
 
 #include "core/Error.hpp"
 
@@ -56,6 +59,25 @@ std::string sha256File(const std::filesystem::path& path) {
   while ((n = std::fread(buf.data(), 1, buf.size(), f.get())) > 0) h.update(buf.data(), n);
   if (std::ferror(f.get())) throw Error("error reading '" + path.string() + "' to hash it");
   return h.hex();
+}
+
+std::string sha256FileOncePerVersion(const std::filesystem::path& path) {
+  using Version = std::tuple<std::string, std::uintmax_t, std::filesystem::file_time_type::rep>;
+  static std::mutex mutex;
+  static std::map<Version, std::string> digests;
+  std::error_code ec;
+  const auto canonical = std::filesystem::canonical(path, ec);
+  if (ec) return sha256File(path);  // let the reader name the problem
+  const Version version{canonical.string(), std::filesystem::file_size(canonical, ec),
+                        std::filesystem::last_write_time(canonical, ec).time_since_epoch().count()};
+  if (ec) return sha256File(path);
+  {
+    const std::lock_guard lock(mutex);
+    if (const auto it = digests.find(version); it != digests.end()) return it->second;
+  }
+  std::string digest = sha256File(canonical);
+  const std::lock_guard lock(mutex);
+  return digests.emplace(version, std::move(digest)).first->second;
 }
 
 }  // namespace grainbridge::core

@@ -61,4 +61,15 @@ std::string humanText(const nlohmann::json& v, int significant) {
   return v.dump();
 }
 
+std::string humanBytes(std::uintmax_t bytes) {
+  const char* units[] = {"B", "kB", "MB", "GB", "TB"};
+  double v = static_cast<double>(bytes);
+  int u = 0;
+  while (v >= 1000.0 && u < 4) {
+    v /= 1000.0;
+    ++u;
+  }
+  return humanNumber(v, u == 0 ? 6 : 3) + " " + units[u];
+}
+
 }  // namespace grainbridge::core

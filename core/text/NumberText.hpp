@@ -5,6 +5,7 @@
 // digits, no trailing zeros, short exponents: 0.013782299999999999 reads 0.0137823, 1e-06 reads
 // 1e-6). Files a program reads back (CSV, JSON, the database) keep `roundTripText`, the
 // shortest text that parses to the same double.
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -24,5 +25,8 @@ std::string humanWithError(double mean, double error);
 // A JSON value for display: numbers through humanNumber, strings verbatim, a list as
 // "[a, b]" and a list of one repeated value as "a (×3)" (a cubic box's three equal sides).
 std::string humanText(const nlohmann::json& v, int significant = 6);
+
+// A size in bytes with a decimal unit: "512 B", "4.52 MB".
+std::string humanBytes(std::uintmax_t bytes);
 
 }  // namespace grainbridge::core

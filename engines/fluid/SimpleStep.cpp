@@ -13,7 +13,10 @@ namespace grainbridge::fluid {
 
 namespace {
 
-std::string phaseName(std::size_t m) { return m == 0 ? "gas" : "solids " + std::to_string(m); }
+std::string phaseName(const SimpleSettings& settings, std::size_t m) {
+  if (m < settings.phaseNames.size() && !settings.phaseNames[m].empty()) return settings.phaseNames[m];
+  return m == 0 ? "gas" : "solids " + std::to_string(m);
+}
 
 // A solids phase's faces carry no more out of a cell than it held at the step's start (MassFlux);
 // the gas fraction is what the solids leave.
@@ -120,7 +123,7 @@ std::string firstBadValue(const FlowState& state, const SimpleSettings& settings
         }
         for (std::size_t m = 0; m < state.phases.size(); ++m) {
           const double eps = state.phases[m].fraction[c];
-          if (!std::isfinite(eps)) return "the " + phaseName(m) + " fraction is not finite";
+          if (!std::isfinite(eps)) return "the " + phaseName(settings, m) + " fraction is not finite";
           // A solids phase may undershoot zero in a cell it is leaving (a step converges when each
           // cell's continuity is met to the tolerance, not exactly, though the faces preserve
           // positivity at convergence: MassFlux): down to the dilute threshold below zero, a
@@ -133,13 +136,13 @@ std::string firstBadValue(const FlowState& state, const SimpleSettings& settings
           const double undershoot = (m == 0 ? static_cast<double>(solidsPhases) : 1.0) *
                                     (state.phases.size() > 1 ? settings.diluteFraction : 1e-6);
           if (eps < -undershoot || eps > 1.0 + undershoot)
-            return "the " + phaseName(m) + " fraction is " + std::to_string(eps) + ", outside [0, 1]";
+            return "the " + phaseName(settings, m) + " fraction is " + std::to_string(eps) + ", outside [0, 1]";
           for (int a = 0; a < grid.dimensions(); ++a) {
             const double u = state.phases[m].velocity[static_cast<std::size_t>(a)][c];
-            if (!std::isfinite(u)) return "a " + phaseName(m) + " velocity is not finite";
+            if (!std::isfinite(u)) return "a " + phaseName(settings, m) + " velocity is not finite";
             if (std::abs(u) > bound) {
-              return "the " + phaseName(m) + " " + std::string(1, "xyz"[a]) + " velocity is " + std::to_string(u) +
-                     " m/s, beyond the divergence bound " + std::to_string(bound) +
+              return "the " + phaseName(settings, m) + " " + std::string(1, "xyz"[a]) + " velocity is " +
+                     std::to_string(u) + " m/s, beyond the divergence bound " + std::to_string(bound) +
                      " m/s (100 times the largest inflow speed)";
             }
           }
@@ -271,7 +274,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
         if (given[m] != 0) continue;
         FaceField& u = state.phases[m].velocity[static_cast<std::size_t>(a)];
         const auto r = systems[m].normalisedResidual(u.values(), speed[m]);
-        worst.offer(r.value, phaseName(m) + " " + std::string(1, "xyz"[a]) + " momentum", r.worst);
+        worst.offer(r.value, phaseName(settings, m) + " " + std::string(1, "xyz"[a]) + " momentum", r.worst);
         systems[m].solve(u, settings.momentumSolve);
       }
     }
@@ -309,7 +312,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       boundaries.apply(state, &props);
       PhaseFields& phase = state.phases[m];
       const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt), m);
-      offerContinuity(worst, phaseName(m), phase.fraction, old.phases[m].fraction, props.phases[m].density,
+      offerContinuity(worst, phaseName(settings, m), phase.fraction, old.phases[m].fraction, props.phases[m].density,
                       oldProps.phases[m].density, solidsFlux, dt);
       std::array<const FaceField*, 3> e{nullptr, nullptr, nullptr};
       for (int a = 0; a < dims; ++a)
@@ -338,7 +341,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       }
       if (inventory > 0.0) {
         worst.offer(withheld / inventory / settings.massTolerance * settings.tolerance,
-                    phaseName(m) + " packing relaxation", worst.cell);
+                    phaseName(settings, m) + " packing relaxation", worst.cell);
       }
       const CellField& slope = props.phases[m].solidsPressureSlope;
       for (int a = 0; a < dims; ++a) {

@@ -60,6 +60,8 @@ class FlowModel {
 };
 
 struct SimpleSettings {
+  // The phases' names for messages ("grain y momentum"), [0] the gas; empty or short: "solids m".
+  std::vector<std::string> phaseNames;
   Vec3 gravity = Vec3::Zero();
   double pressureRelaxation = 0.8;  // omega_P (MFiX UR_FAC(1))
   // alpha_u. MFiX's default is 0.5; 0.9 converges the grain bed in as many iterations per step

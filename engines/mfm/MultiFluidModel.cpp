@@ -369,10 +369,12 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
     in.oldDensity = &oldProps.phases[m].density;
     in.boundaries = &boundaries;
     in.dt = dt;
+    in.diluteFraction = params_.diluteFraction;
     const auto flux = fluid::massFluxes(phase, props.phases[m].density, boundaries, {}, m);
     const fluid::StencilSystem system = assembleGranularEnergy(in, m, flux, terms);
     const auto r = system.normalisedResidual(phase.granularTemperature.values(), scale);
-    residuals.push_back({r.value, "solids " + std::to_string(m) + " granular energy", r.worst});
+    const std::string& name = params_.solids[m - 1].name;
+    residuals.push_back({r.value, (name.empty() ? "solids " + std::to_string(m) : name) + " granular energy", r.worst});
     system.solve(phase.granularTemperature);
     // The solution of this M-matrix system is non-negative; round-off alone can leave -0.
     for (double& theta : phase.granularTemperature.values()) theta = std::max(theta, 0.0);

@@ -96,6 +96,9 @@ enum class PlasticTheta { Solved, Pinned };
 struct MultiFluidParams {
   GasPhase gas;
   std::vector<SolidsPhase> solids;
+  // The solver's dilute_fraction (fluid::SimpleSettings::diluteFraction): cells with less solids
+  // take the granular temperature of their neighbours instead of solving Eq. 3.34 (GranularEnergy).
+  double diluteFraction = 1e-4;
   // The solids pairs that exchange momentum by Eq. 3.18; with several solids phases, every pair
   // (the set-up fills an unlisted one with C_f 0 and the mean of the two restitutions).
   std::vector<SolidsPair> solidsPairs;

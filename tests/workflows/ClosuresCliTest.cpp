@@ -65,6 +65,11 @@ TEST(ClosuresCli, BadRequestsExitTwoWithTheReason) {
   r = closures("eval syamlal_obrien c=0.8 d=3 void_fraction=0.5 solid_fraction=0.5 diameter=0.001 slip=1");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.output, HasSubstr("Eq. 3.14"));
+  // The gas and the solids share the volume (issue 54: 0.6 + 0.7 was evaluated).
+  r = closures("eval syamlal_obrien void_fraction=0.6 solid_fraction=0.7 diameter=0.001 slip=1");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.output, HasSubstr("solid_fraction 0.7 + void_fraction 0.6 = 1.3: the volume fractions of one point add "
+                                  "up to at most 1"));
 }
 
 // docs/closures.md is generated from the catalog; it must not drift from it.

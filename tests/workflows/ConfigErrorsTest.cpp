@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 
 #include "tests/support/Cli.hpp"
 
@@ -114,5 +115,23 @@ TEST(StagesReference, DocsMatchTheDeclarations) {
   const std::string doc = readText(sourceDir() / "docs/stages.md");
   EXPECT_NE(doc.find(r.output), std::string::npos)
       << "docs/stages.md is out of date: regenerate its table part with `grainbridge stages --markdown`";
+  // Each parameter row has its six cells on GitHub: a `|` inside a cell is escaped.
+  std::istringstream lines(r.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("| `", 0) != 0) continue;
+    int bars = 0;
+    for (std::size_t i = 0; i < line.size(); ++i) bars += line[i] == '|' && (i == 0 || line[i - 1] != '\\');
+    EXPECT_EQ(bars, 7) << line;
+  }
+}
+
+TEST(StagesReference, OneTypeByName) {
+  auto r = runCommand(grainbridgeBinary() + " stages mfm");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.rfind("mfm (impl_version", 0), 0u) << r.output;
+  EXPECT_EQ(r.output.find("dem (impl_version"), std::string::npos);
+  r = runCommand(grainbridgeBinary() + " stages mfn");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("no stage type \"mfn\" (did you mean \"mfm\"?)"), std::string::npos) << r.output;
 }
 }  // namespace

@@ -74,13 +74,48 @@ TEST(DbQueryCli, UnknownColumnsAreAUsageErrorListingTheColumns) {
   const auto path = closureDatabase(dir);
   auto r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --where phi=0.1:0.2");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_THAT(r.output, HasSubstr("no column \"phi\" in closure_points (columns: id, run_id, family"));
+  EXPECT_THAT(r.output, HasSubstr("--where: no column \"phi\" in closure_points"));
+  EXPECT_THAT(r.output, HasSubstr("columns: id, run_id, family"));
   r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --where solid_fraction=a:0.2");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.output, HasSubstr("\"a\" is not a number"));
   r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --columns pressure,presure");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_THAT(r.output, HasSubstr("--columns: no column \"presure\""));
+  EXPECT_THAT(r.output, HasSubstr("--columns: no column \"presure\" in closure_points (did you mean \"pressure\"?)"));
+  r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --where restitutio=0.9");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.output, HasSubstr("(did you mean \"restitution\"?)"));
+}
+
+// A closure point stores the state measured in its run (the quickstart's phi 0.3 box holds
+// 0.300004), and a user selects it by the value the config and the report name (issue 54).
+TEST(DbQueryCli, MeasuredStatesMatchTheRoundValueWritten) {
+  TempDir dir;
+  const auto path = dir.path() / "gb.sqlite";
+  auto database = db::Database::open(path);
+  database.transaction([&](db::Database& d) {
+    db::ProvenanceStore provenance(d);
+    const auto invocation = provenance.insertInvocation(db::test::sampleInvocation());
+    const auto run = provenance.insertRun(db::test::sampleRun(invocation, "key-one"));
+    db::ClosureStore(d).insertRecords(
+        run, {{"closure_points", {point(0.0999998, 0.9, 10.0), point(0.2, 0.9, 20.0), point(0.300004, 0.9, 30.0)}}});
+  });
+  auto rows = [&](const std::string& where) {
+    const auto r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' " + where + " --format json");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return json::parse(r.output.substr(r.output.find('['))).size();
+  };
+  EXPECT_EQ(rows("--where solid_fraction=0.1:0.3"), 3u);
+  EXPECT_EQ(rows("--where solid_fraction=0.3"), 1u);
+  EXPECT_EQ(rows("--where solid_fraction=0.1"), 1u);
+  EXPECT_EQ(rows("--where solid_fraction=0.2:"), 2u);
+  // 0.1 % of the value written, no more: 0.301 is another state.
+  EXPECT_EQ(rows("--where solid_fraction=0.301"), 0u);
+  // No match says what the column holds.
+  const auto miss = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --where solid_fraction=0.35");
+  EXPECT_EQ(miss.exitCode, 0) << miss.output;
+  EXPECT_THAT(miss.output, HasSubstr("no row matches --where"));
+  EXPECT_THAT(miss.output, HasSubstr("solid_fraction has 0.0999998 0.2 0.300004"));
 }
 
 TEST(DbQueryCli, ExportWritesEveryTableAsJsonOrCsv) {

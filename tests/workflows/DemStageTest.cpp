@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -308,4 +309,50 @@ TEST(DemStage, PressureControlledBoxRecordsItsBoxAndStress) {
   // The step's p_yy, from the frame (stress_yy) and from the engine's own sum. Samples fall on
   // steps where the box was just adjusted: the frame is of the scaled state, hence 1 %, not 1e-12.
   EXPECT_NEAR(stressYY.back(), controlled.back(), 0.01 * std::abs(controlled.back()));
+}
+
+// A LAMMPS data file carries no units: a reduced config reads it in d0, m0 and t0 as it reads its
+// own bare numbers (issue 54: the positions were taken as metres and refused as outside the box).
+TEST(DemStage, LammpsDataIsReadInTheConfigsUnits) {
+  TempDir work;
+  writeText(work.path() / "one.data", R"(LAMMPS data file: one grain in reduced units
+
+1 atoms
+1 atom types
+
+0 8 xlo xhi
+0 8 ylo yhi
+0 8 zlo zhi
+
+Atoms
+
+1 1 1 1.909859317102744 4 4 4
+
+Velocities
+
+1 0.5 0 0 0 0 2
+)");
+  json cfg = json::parse(R"({
+    "name": "wf",
+    "units": {"system": "reduced", "d0": "2 mm", "m0": "1e-5 kg", "g": "9.81 m/s2"},
+    "stages": {"bed": {"type": "dem", "params": {
+      "box_lo": [0, 0, 0], "box_hi": [8, 8, 8], "gravity": [0, 0, 0],
+      "dt": 2e-4, "duration": 0.1, "frames": 1, "series_points": 2, "progress": false,
+      "species": [{"name": "grain", "diameter": 1, "density": 1.91}],
+      "lammps_data": "one.data", "lammps_types": [{"type": 1, "species": "grain"}],
+      "contact": {"kn": 2e5, "gamma_n": 40, "mu": 0.5}}}}
+  })");
+  writeText(work.path() / "wf.json", cfg.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const double d0 = 0.002, m0 = 1e-5, t0 = std::sqrt(d0 / 9.81);
+  const auto f = core::io::readParticleFrame(lastFrame(work.path()));
+  ASSERT_EQ(f.size(), 1u);
+  // Free flight for 0.1 t0 at 0.5 d0/t0 along x: 4.05 d0.
+  EXPECT_NEAR(f.position[0][0], 4.05 * d0, 1e-9 * d0);
+  EXPECT_NEAR(f.position[0][1], 4.0 * d0, 1e-12);
+  EXPECT_NEAR(f.radius[0], 0.5 * d0, 1e-15);
+  EXPECT_NEAR(f.mass[0], m0, 1e-12 * m0);  // 1.91 m0/d0^3 x pi/6 d0^3
+  EXPECT_NEAR(f.velocity[0][0], 0.5 * d0 / t0, 1e-9 * d0 / t0);
+  EXPECT_NEAR(f.angularVelocity[0][2], 2.0 / t0, 1e-9 / t0);
 }

@@ -521,3 +521,32 @@ TEST(MfmStage, TsujiJetSmokeRunsOnTheSolverDefaultsAndPlotsThePressureDrop) {
   ASSERT_EQ(findings.at("rows").size(), 1u);
   EXPECT_NE(findings.at("headline").get<std::string>().find("mean particle height"), std::string::npos);
 }
+
+// average_to closes the window before the end of the run, as tfdem's does (issue 54): the window
+// holds the samples from average_from to average_to, the summary's means are theirs.
+TEST(MfmStage, AverageToEndsTheWindowBeforeTheRun) {
+  TempDir work;
+  json bed = json::parse(readText(sourceDir() / "configs/grain-fluidization-smoke.json"))["stages"]["bed"];
+  bed.erase("sweep");
+  auto& p = bed["params"];
+  p["boundaries"][0]["gas_inflow"] = "0.5 m/s";
+  p["duration"] = "0.05 s";
+  p["output_interval"] = "0.01 s";
+  p["average_from"] = "0.01 s";
+  p["average_to"] = "0.03 s";
+  p["frames"] = 1;
+  const json wf = {{"name", "wf"}, {"stages", {{"bed", bed}}}};
+  writeText(work.path() / "wf.json", wf.dump());
+  const auto r = runGrainbridge(work.path(), "run wf.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const fs::path out = onlyInstance(work.path() / "results/wf/bed");
+  const json summary = json::parse(readText(out / "manifest.json")).at("summary");
+  EXPECT_EQ(summary.at("window_samples").get<int>(), 3);  // t = 0.01, 0.02, 0.03 s
+  // And at check: the window must lie in the run.
+  p["average_to"] = "0.06 s";
+  writeText(work.path() / "bad.json", json({{"name", "bad"}, {"stages", {{"bed", bed}}}}).dump());
+  const auto c = runGrainbridge(work.path(), "check bad.json");
+  EXPECT_EQ(c.exitCode, 2);
+  EXPECT_NE(c.output.find("/stages/bed/params/average_to: is after the end of the run (duration)"), std::string::npos)
+      << c.output;
+}

@@ -64,6 +64,30 @@ TEST(Plot, DrawsSvgAndPngWithLabelsPrintedLiterally) {
   EXPECT_EQ(readText(dir.path() / again.png), readText(dir.path() / drawn.png));
 }
 
+// A tall narrow bed's map (the 15 x 90 cm jet) labels its x axis at the ends only: three labels
+// overlapped in its narrow panel (issue 54). A square one keeps the middle label.
+TEST(Plot, NarrowMapsLabelOnlyTheirEnds) {
+  TempDir dir;
+  auto map = [](int columns, int rows, double dx, double dy) {
+    report::FieldMap m;
+    m.title = "run";
+    m.columns = columns;
+    m.rows = rows;
+    m.dx = dx;
+    m.dy = dy;
+    m.values.assign(static_cast<std::size_t>(columns * rows), 0.3);
+    return m;
+  };
+  const report::Axis x{"x", "m"}, y{"height", "m"}, colour{"solids fraction", "–"};
+  const auto narrow = report::drawFieldMaps({map(15, 45, 0.01, 0.02), map(15, 45, 0.01, 0.02)}, x, y, colour, 0.0,
+                                            0.6, dir.path(), "narrow");
+  const std::string narrowSvg = readText(dir.path() / narrow.svg);
+  EXPECT_EQ(narrowSvg.find(">0.075<"), std::string::npos);
+  EXPECT_NE(narrowSvg.find(">0.15<"), std::string::npos);
+  const auto square = report::drawFieldMaps({map(15, 15, 0.01, 0.01)}, x, y, colour, 0.0, 0.6, dir.path(), "square");
+  EXPECT_NE(readText(dir.path() / square.svg).find(">0.075<"), std::string::npos);
+}
+
 TEST(Plot, RefusesAnAxisWithoutUnitAndRaggedSeries) {
   TempDir dir;
   auto fig = twoModelFigure();

@@ -113,6 +113,58 @@ TEST_F(WorkflowRun, PhysicsParameterChangeRerunsOnlyDownstream) {
   EXPECT_EQ(countStage(rs, "other"), 1);  // independent: cached
 }
 
+// A sweep point that never ran says so; it is not compared with a sibling point's run (issue 54:
+// "key changed since run 2 ... restitution 0.8 -> 0.9" for a point that had never run).
+TEST_F(WorkflowRun, WhyNamesANeverRunSweepPointAsNeverRun) {
+  json cfg = smallWorkflow();
+  write(cfg);
+  ASSERT_EQ(run().exitCode, 0);
+  cfg["stages"]["gas"]["sweep"]["solid_fraction"] = {0.05, 0.1, 0.15};
+  write(cfg);
+  const auto st = runGrainbridge(work.path(), "status wf.json --why gas");
+  EXPECT_NE(st.output.find("gas[solid_fraction=0.15]: never run"), std::string::npos) << st.output;
+  EXPECT_NE(st.output.find("gas[solid_fraction=0.05]: up to date"), std::string::npos) << st.output;
+  EXPECT_EQ(st.output.find("key changed"), std::string::npos) << st.output;
+}
+
+// Results are found from the current folder (or --workdir); from another folder the commands say
+// where they are instead of "never run" (issue 54).
+TEST_F(WorkflowRun, ResultsBesideTheConfigAreNamedFromAnotherFolder) {
+  write(smallWorkflow());
+  ASSERT_EQ(run().exitCode, 0);
+  TempDir elsewhere;
+  const std::string config = (work.path() / "wf.json").string();
+  auto st = runGrainbridge(elsewhere.path(), "status '" + config + "'");
+  EXPECT_NE(st.output.find("results are found from the current folder (or --workdir), not from the config's"),
+            std::string::npos)
+      << st.output;
+  EXPECT_NE(st.output.find("--workdir " + work.path().string()), std::string::npos) << st.output;
+  const auto q = runGrainbridge(elsewhere.path(), "db runs --config '" + config + "'");
+  EXPECT_EQ(q.exitCode, 2) << q.output;
+  EXPECT_NE(q.output.find("exists; run from " + work.path().string()), std::string::npos) << q.output;
+  st = runGrainbridge(elsewhere.path(), "status '" + config + "' --workdir '" + work.path().string() + "'");
+  EXPECT_EQ(st.output.find("not from the config's"), std::string::npos) << st.output;
+  EXPECT_NE(st.output.find("done"), std::string::npos) << st.output;
+}
+
+// `db show RUN`: the provenance with one artifacts line per kind; --files lists each file with its
+// sha256 (issue 54: a DEM run's show was 945 lines of frame hashes).
+TEST_F(WorkflowRun, DbShowSummarisesArtifactsAndListsThemWithFiles) {
+  write(smallWorkflow());
+  ASSERT_EQ(run().exitCode, 0);
+  const auto rs = runs(work.path());
+  const auto& gas = *std::find_if(rs.begin(), rs.end(), [](const auto& r) { return r.stage == "gas"; });
+  const auto brief = runGrainbridge(work.path(), "db show " + std::to_string(gas.id) + " --config wf.json");
+  ASSERT_EQ(brief.exitCode, 0) << brief.output;
+  EXPECT_NE(brief.output.find("  artifacts  "), std::string::npos) << brief.output;
+  EXPECT_NE(brief.output.find("(--files lists each file with its sha256)"), std::string::npos) << brief.output;
+  EXPECT_EQ(brief.output.find("sha256 "), std::string::npos) << brief.output;
+  const auto files = runGrainbridge(work.path(), "db show " + std::to_string(gas.id) + " --config wf.json --files");
+  ASSERT_EQ(files.exitCode, 0) << files.output;
+  EXPECT_NE(files.output.find("  artifact   "), std::string::npos) << files.output;
+  EXPECT_NE(files.output.find("sha256 "), std::string::npos) << files.output;
+}
+
 TEST_F(WorkflowRun, MovedProjectStaysCached) {
   write(smallWorkflow());
   ASSERT_EQ(run().exitCode, 0);

@@ -7,6 +7,7 @@
 
 #include "core/json/Diagnostics.hpp"
 #include "core/json/StrictParse.hpp"
+#include "core/text/NumberText.hpp"
 #include "workflows/closures/ClosureCatalog.hpp"
 #include "workflows/commands/Commands.hpp"
 
@@ -89,6 +90,26 @@ int commandClosures(const CommandOptions& opt) {
   return 0;
 }
 
+namespace {
+// The volume fractions of one point (the gas's and each solids phase's) share the volume: each is
+// in [0, 1] by its declaration, and together they may not exceed 1. Empty when they do not.
+std::string fractionsAboveOne(const json& inputs) {
+  double total = 0.0;
+  std::string terms;
+  for (const auto& [key, value] : inputs.items()) {
+    const bool fraction = key == "void_fraction" || key.rfind("solid_fraction", 0) == 0;
+    if (!fraction) continue;
+    for (const auto& v : value.is_array() ? value : json::array({value})) {
+      if (!v.is_number()) continue;
+      total += v.get<double>();
+      terms += (terms.empty() ? "" : " + ") + key + " " + core::humanText(v);
+    }
+  }
+  if (total <= 1.0 + 1e-12) return "";
+  return terms + " = " + core::humanText(json(total)) + ": the volume fractions of one point add up to at most 1";
+}
+}  // namespace
+
 int commandClosuresEval(const CommandOptions& opt) {
   const ClosureEntry& entry = entryNamed(opt.closureName);
   // key=value: a JSON value where it parses as one (0.97, [0.3, 0.2]), else a string ("2.5 mm").
@@ -122,6 +143,7 @@ int commandClosuresEval(const CommandOptions& opt) {
   const json in = entry.inputs->resolve(inputs, {}, units, "inputs", d);
   if (!d.empty()) throw core::json::InputError("closures eval " + entry.name, d);
   if (const auto problem = entry.checkParams(p); !problem.empty()) throw UsageError(entry.name + ": " + problem);
+  if (const auto problem = fractionsAboveOne(in); !problem.empty()) throw UsageError(entry.name + ": " + problem);
   std::vector<closures::ClosureOutput> outputs;
   try {
     outputs = entry.evaluate(p, in);

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <cstdio>
@@ -11,6 +12,8 @@
 #include <set>
 
 #include "core/Log.hpp"
+#include "core/json/Diagnostics.hpp"
+#include "core/text/NumberText.hpp"
 #include "core/parallel/Communicator.hpp"
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
@@ -103,6 +106,7 @@ int commandStatus(const CommandOptions& opt) {
     for (const auto& line : status::explainStage(cfg, plan, opt.why, opt.workDir)) std::printf("%s\n", line.c_str());
     return 0;
   }
+  if (const auto hint = resultsElsewhereHint(cfg, opt.workDir); !hint.empty()) std::fprintf(stderr, "%s\n", hint.c_str());
   std::map<std::string, int> counts;
   for (const auto& s : status::workflowStatus(cfg, plan, opt.workDir, std::chrono::seconds(120))) {
     ++counts[s.state];
@@ -116,14 +120,26 @@ int commandStatus(const CommandOptions& opt) {
 }
 
 namespace {
+// A Markdown table cell: a `|` inside one ("one of grainbridge|lammps") would end the cell on
+// GitHub, so it is escaped.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
 // One line per parameter; nested objects list their fields as parent.field or parent[].field.
 void printParams(const params::ParamSchema& schema, const std::string& prefix, bool markdown) {
   for (const auto& p : schema.specs()) {
     const std::string name = prefix + p.name();
     const std::string def = p.isRequired() ? "required" : p.defaultJson() ? p.defaultJson()->dump() : "-";
     if (markdown) {
-      std::printf("| `%s` | %s | %s | %s | %s | %s |\n", name.c_str(), p.typeDescription().c_str(), def.c_str(),
-                  p.rangeDescription().c_str(), p.affectsResults() ? "yes" : "no", p.docText().c_str());
+      std::printf("| `%s` | %s | %s | %s | %s | %s |\n", name.c_str(), cell(p.typeDescription()).c_str(),
+                  cell(def).c_str(), cell(p.rangeDescription()).c_str(), p.affectsResults() ? "yes" : "no",
+                  cell(p.docText()).c_str());
     } else {
       std::printf("  %-30s %-28s %-14s %-18s %s%s\n", name.c_str(), p.typeDescription().c_str(), def.c_str(),
                   p.rangeDescription().c_str(), p.docText().c_str(),
@@ -155,7 +171,19 @@ void printRules(const params::ParamSchema& schema, bool markdown) {
 }  // namespace
 
 int commandStages(const CommandOptions& opt) {
+  if (!opt.stageType.empty() && registry().find(opt.stageType) == nullptr) {
+    std::vector<std::string> names;
+    std::string list;
+    for (const auto& type : registry().all()) {
+      names.push_back(type->name());
+      list += (list.empty() ? "" : ", ") + type->name();
+    }
+    const auto hint = core::json::closestMatch(opt.stageType, names);
+    throw UsageError("no stage type \"" + opt.stageType + "\"" + (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)") +
+                     "; stage types: " + list);
+  }
   for (const auto& type : registry().all()) {
+    if (!opt.stageType.empty() && type->name() != opt.stageType) continue;
     if (opt.markdown) {
       std::printf(
           "## `%s` (impl_version %d)\n\n%s.\n\n| parameter | type | default | range | affects key | description "
@@ -212,6 +240,7 @@ int commandReport(const CommandOptions& opt) {
   if (opt.config.empty()) throw UsageError("report: give a workflow config, or `report validation`");
   const auto cfg = load(opt);
   const auto plan = planOf(cfg, opt);
+  if (const auto hint = resultsElsewhereHint(cfg, opt.workDir); !hint.empty()) throw UsageError(hint);
   auto database = openExisting(exec::databasePath(cfg, opt.workDir));
   const fs::path root = fs::absolute(exec::resultsRoot(opt.workDir)).lexically_normal();
   std::vector<stages::UpstreamInstance> done;
@@ -286,6 +315,38 @@ int commandDbRuns(const CommandOptions& opt) {
   return 0;
 }
 
+namespace {
+// A run's artifacts: with --files each with its sha256; else one line per kind (a DEM run has a
+// frame file per output, hundreds of lines), with the first file and the total size.
+void printArtifacts(const std::vector<db::ArtifactRecord>& artifacts, bool eachFile) {
+  if (eachFile) {
+    for (const auto& a : artifacts) {
+      std::printf("  artifact   %-14s %s  sha256 %s  %lld bytes\n", a.kind.c_str(), a.path.c_str(), a.sha256.c_str(),
+                  static_cast<long long>(a.bytes));
+    }
+    return;
+  }
+  struct Kind {
+    std::size_t files = 0;
+    std::uintmax_t bytes = 0;
+    std::string first;
+  };
+  std::vector<std::pair<std::string, Kind>> kinds;  // in the order recorded
+  for (const auto& a : artifacts) {
+    auto it = std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return k.first == a.kind; });
+    if (it == kinds.end()) it = kinds.insert(kinds.end(), {a.kind, Kind{0, 0, a.path}});
+    ++it->second.files;
+    it->second.bytes += static_cast<std::uintmax_t>(a.bytes);
+  }
+  for (const auto& [kind, k] : kinds) {
+    std::printf("  artifacts  %-14s %s%s, %s\n", kind.c_str(), k.first.c_str(),
+                k.files > 1 ? (" and " + std::to_string(k.files - 1) + " more").c_str() : "",
+                core::humanBytes(k.bytes).c_str());
+  }
+  if (!artifacts.empty()) std::printf("             (--files lists each file with its sha256)\n");
+}
+}  // namespace
+
 int commandDbShow(const CommandOptions& opt) {
   auto database = openExisting(databaseOf(opt));
   db::ProvenanceStore store(database);
@@ -312,10 +373,7 @@ int commandDbShow(const CommandOptions& opt) {
                 run->paramsJson.c_str());
     if (!run->summaryJson.empty()) std::printf("  summary    %s\n", run->summaryJson.c_str());
     if (!run->error.empty()) std::printf("  error      %s\n", run->error.c_str());
-    for (const auto& a : store.artifactsOfRun(run->id)) {
-      std::printf("  artifact   %-14s %s  sha256 %s  %lld bytes\n", a.kind.c_str(), a.path.c_str(), a.sha256.c_str(),
-                  static_cast<long long>(a.bytes));
-    }
+    printArtifacts(store.artifactsOfRun(run->id), opt.files);
     {
       // What this run put in the closure database (db query --run shows the rows).
       db::ClosureStore closures(database);

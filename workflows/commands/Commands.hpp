@@ -15,6 +15,8 @@ struct CommandOptions {
   bool keepGoing = false;
   std::string why;
   bool markdown = false;
+  std::string stageType;  // `stages TYPE`: only that type
+  bool files = false;     // `db show --files`: every artifact with its sha256
   bool open = false;  // report --open
   std::string database;
   std::string workflowFilter;

@@ -2,12 +2,14 @@
 // family, state ranges and run, printed as a table, CSV or JSON; and everything in it written
 // out for other tools. Values are SI; each row names the run that produced it, and
 // `db show RUN` follows that run's provenance chain.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "core/Files.hpp"
+#include "core/json/Diagnostics.hpp"
 #include "core/text/NumberText.hpp"
 #include "db/ClosureStore.hpp"
 #include "db/ProvenanceStore.hpp"
@@ -21,7 +23,19 @@ using nlohmann::json;
 
 namespace {
 
-// "solid_fraction=0.1:0.3", "restitution=0.9" (that value, to 1e-9 relative), "shear_rate=:5".
+// How close a stored value must be to a value written in --where to match it, relative to the
+// value written. A closure point stores the state measured in the run, which sits beside the round
+// state the config asked for: the quickstart's phi 0.3 box (10.9390 mm, 500 grains) holds 0.300004,
+// which the report labels "phi 0.3". 0.1 % keeps those and is far finer than the step between any
+// two states of the shipped sweeps.
+constexpr double kWhereRelativeTolerance = 1e-3;
+
+double whereTolerance(double written) {
+  return written == 0.0 ? 1e-12 : kWhereRelativeTolerance * std::abs(written);
+}
+
+// "solid_fraction=0.1:0.3", "restitution=0.9", "shear_rate=:5"; each bound widened by
+// kWhereRelativeTolerance of itself, so `solid_fraction=0.3` and `0.1:0.3` take 0.300004.
 db::ColumnRange parseRange(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0) {
@@ -46,12 +60,13 @@ db::ColumnRange parseRange(const std::string& text) {
   if (colon == std::string::npos) {
     const auto v = number(value);
     if (!v) throw UsageError("--where \"" + text + "\": no value");
-    const double tol = 1e-9 * std::max(1.0, std::abs(*v));
-    r.lo = *v - tol;
-    r.hi = *v + tol;
+    r.lo = *v - whereTolerance(*v);
+    r.hi = *v + whereTolerance(*v);
   } else {
     r.lo = number(value.substr(0, colon));
     r.hi = number(value.substr(colon + 1));
+    if (r.lo) *r.lo -= whereTolerance(*r.lo);
+    if (r.hi) *r.hi += whereTolerance(*r.hi);
   }
   return r;
 }
@@ -62,23 +77,38 @@ std::string cell(const json& v) {
   return core::humanText(v);
 }
 
+// A column named on the command line must exist: the error names the closest one and lists all.
+void requireColumn(const std::string& option, const std::string& column, const std::vector<std::string>& known,
+                   const std::string& table) {
+  if (std::find(known.begin(), known.end(), column) != known.end()) return;
+  std::string list;
+  for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+  const auto hint = core::json::closestMatch(column, known);
+  throw UsageError(option + ": no column \"" + column + "\" in " + table +
+                   (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)") + "; columns: " + list);
+}
+
+// A table for people leaves out extra_json (a JSON object per row, hundreds of characters wide)
+// unless asked for by --columns; CSV and JSON keep it.
+bool leaveOut(const std::string& column, const std::string& format) {
+  return format == "table" && column == "extra_json";
+}
+
 // Columns to show: the requested ones (checked), else every column that is set in some row.
 std::vector<std::string> shownColumns(const json& rows, const std::string& requested,
-                                      const std::vector<std::string>& known) {
+                                      const std::vector<std::string>& known, const std::string& table,
+                                      const std::string& format) {
   std::vector<std::string> out;
   if (!requested.empty()) {
     std::istringstream in(requested);
     for (std::string c; std::getline(in, c, ',');) {
-      if (std::find(known.begin(), known.end(), c) == known.end()) {
-        std::string list;
-        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-        throw UsageError("--columns: no column \"" + c + "\" (columns: " + list + ")");
-      }
+      requireColumn("--columns", c, known, table);
       out.push_back(c);
     }
     return out;
   }
   for (const auto& k : known) {
+    if (leaveOut(k, format)) continue;
     for (const auto& row : rows) {
       if (row.contains(k) && !row[k].is_null()) {
         out.push_back(k);
@@ -139,6 +169,34 @@ db::ClosureQuery queryOf(const CommandOptions& opt) {
   return q;
 }
 
+// Nothing matched the --where ranges: say what each ranged column holds without them, so a user
+// who wrote 0.35 where the points are at 0.3 sees it.
+std::string whereMissHint(db::ClosureStore& store, const db::ClosureQuery& query) {
+  db::ClosureQuery unranged = query;
+  unranged.ranges.clear();
+  const json all = store.query(unranged);
+  std::string out = "no row matches --where (values match to " + core::humanText(json(kWhereRelativeTolerance * 100)) +
+                    " % of the value written)";
+  if (all.empty()) return out + "; nothing is stored for this table and filter\n";
+  for (const auto& range : query.ranges) {
+    std::vector<double> values;
+    for (const auto& row : all) {
+      if (row.contains(range.column) && row[range.column].is_number()) values.push_back(row[range.column].get<double>());
+    }
+    std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+    out += "; " + range.column + " has ";
+    if (values.empty()) {
+      out += "no values";
+      continue;
+    }
+    const std::size_t shown = std::min<std::size_t>(values.size(), 8);
+    for (std::size_t i = 0; i < shown; ++i) out += (i ? " " : "") + core::humanText(json(values[i]));
+    if (values.size() > shown) out += " ... (" + std::to_string(values.size()) + " values)";
+  }
+  return out + "\n";
+}
+
 }  // namespace
 
 int commandDbQuery(const CommandOptions& opt) {
@@ -151,18 +209,23 @@ int commandDbQuery(const CommandOptions& opt) {
       // The tables node by node, each value with its standard error.
       rows = store.tableNodes(queryOf(opt));
       known = db::ClosureStore::tableNodeColumns();
-      std::fputs(formatRows(rows, shownColumns(rows, opt.columns, known), opt.format).c_str(), stdout);
+      const auto columns = shownColumns(rows, opt.columns, known, opt.table, opt.format);
+      std::fputs(formatRows(rows, columns, opt.format).c_str(), stdout);
       return 0;
     }
-    rows = store.query(queryOf(opt));
     known = store.columns(opt.table);
+    const auto query = queryOf(opt);
+    for (const auto& range : query.ranges) requireColumn("--where", range.column, known, opt.table);
+    rows = store.query(query);
+    if (rows.empty() && !query.ranges.empty()) std::fputs(whereMissHint(store, query).c_str(), stderr);
   } catch (const UsageError&) {
     throw;
   } catch (const Error& e) {
-    throw UsageError(e.what());  // an unknown table or column is the user's to fix
+    throw UsageError(e.what());  // an unknown table is the user's to fix
   }
   known.insert(known.end(), {"workflow", "stage", "run_key"});
-  std::fputs(formatRows(rows, shownColumns(rows, opt.columns, known), opt.format).c_str(), stdout);
+  const auto columns = shownColumns(rows, opt.columns, known, opt.table, opt.format);
+  std::fputs(formatRows(rows, columns, opt.format).c_str(), stdout);
   return 0;
 }
 

@@ -267,7 +267,7 @@ std::optional<json> ParamSchema::resolveValue(const ParamSpec& spec, const json&
         return std::nullopt;
       }
       try {
-        return json{{"path", path}, {"sha256", core::sha256File(path)}};
+        return json{{"path", path}, {"sha256", core::sha256FileOncePerVersion(path)}};
       } catch (const Error& e) {
         diagnostics.add(pointer, e.what());
         return std::nullopt;

@@ -42,17 +42,6 @@ const char* const kStyle =
     ".figures figure{margin:0}.figures img{width:100%;height:auto;display:block}"
     "footer{margin-top:2em;border-top:1px solid #ccc;padding-top:.4em;color:#666;font-size:12px}";
 
-std::string humanBytes(std::uintmax_t bytes) {
-  const char* units[] = {"B", "kB", "MB", "GB", "TB"};
-  double v = static_cast<double>(bytes);
-  int u = 0;
-  while (v >= 1000.0 && u < 4) {
-    v /= 1000.0;
-    ++u;
-  }
-  return core::humanNumber(v, u == 0 ? 6 : 3) + " " + units[u];
-}
-
 // A column heading: a closure form's symbol (p*, τ*), else the summary key as written.
 std::string heading(const std::string& key, const std::string& unit) {
   std::string name = key;
@@ -160,7 +149,7 @@ std::string outputsCell(const contract::UpstreamInstance& inst, const fs::path& 
     if (xmf.empty() && a.path.ends_with(".xmf")) xmf = a.path;
   }
   std::string cell = std::to_string(artifacts.size()) + " file" + (artifacts.size() == 1 ? "" : "s") + ", " +
-                     humanBytes(bytes) + " · <a href=\"" + esc(link.generic_string() + "/") + "\">folder</a>";
+                     core::humanBytes(bytes) + " · <a href=\"" + esc(link.generic_string() + "/") + "\">folder</a>";
   if (!xmf.empty()) {
     cell += " · <a href=\"" + esc((link / xmf).generic_string()) + "\" title=\"open in ParaView\">" + esc(xmf) + "</a>";
   }

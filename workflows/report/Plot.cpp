@@ -219,10 +219,18 @@ DrawnFigure drawFieldMaps(const std::vector<FieldMap>& maps, const Axis& x, cons
          << "set multiplot layout 1," << maps.size() << " margins 0.075,0.88,0.1,0.85 spacing 0.05,0\n";
   for (std::size_t b = 0; b < maps.size(); ++b) {
     const FieldMap& m = maps[b];
+    // A tall narrow bed's panel is drawn at its aspect ratio (size ratio -1): about 390 px high in
+    // the SVG, so width = 390 Lx / Ly px at most (230 px a panel). Three labels of up to n digits
+    // (about 8 px each at 13 pt) fit when the panel is wider than 3 (8 n + 12) px; else only its
+    // ends are labelled (the labels of a 15 x 90 cm jet overlapped).
+    const double lx = m.columns * m.dx, ly = m.rows * m.dy;
+    const double panelWidth = std::min(230.0 * 0.8, 390.0 * lx / ly);
+    const std::string lo = core::roundTripText(m.x0), mid = core::roundTripText(m.x0 + 0.5 * lx),
+                      hi = core::roundTripText(m.x0 + lx);
+    const double label = 8.0 * static_cast<double>(std::max({lo.size(), mid.size(), hi.size()})) + 12.0;
+    const std::string ticks = panelWidth >= 3.0 * label ? lo + ", " + mid + ", " + hi : lo + ", " + hi;
     panels << (b + 1 == maps.size() ? "set colorbox\n" : "unset colorbox\n") << "set title "
-           << gnuplotLines(m.title) << "\nset xtics (" << core::roundTripText(m.x0) << ", "
-           << core::roundTripText(m.x0 + 0.5 * m.columns * m.dx) << ", " << core::roundTripText(m.x0 + m.columns * m.dx)
-           << ")\nset xrange [" << core::roundTripText(m.x0) << ':'
+           << gnuplotLines(m.title) << "\nset xtics (" << ticks << ")\nset xrange [" << core::roundTripText(m.x0) << ':'
            << core::roundTripText(m.x0 + m.columns * m.dx) << "]\nset yrange [" << core::roundTripText(m.y0) << ':'
            << core::roundTripText(m.y0 + m.rows * m.dy) << "]\nplot $m" << b << " using 1:2:3 with image pixels notitle\n";
   }

@@ -255,8 +255,11 @@ ValidationSummary writeValidationReport(const ValidationSources& sources, const 
        << ".FAIL{background:#fcc}.report{background:#eef}</style></head><body>\n"
        << "<h1>grainbridge validation</h1>\n<p>" << summary.checks << " figures of VALIDATION.md: " << summary.passed
        << " pass, " << summary.failed << " fail, " << summary.reported
-       << " reported (figures to show, not to assert). Sources: physics-test records in "
-       << esc(sources.recordsDir.string()) << " and " << sources.databases.size() << " database(s).</p>\n";
+       << " reported (figures to show, not to assert). Sources: "
+       << (fs::is_directory(sources.recordsDir) ? "physics-test records in " + esc(sources.recordsDir.string())
+                                                : "no physics-test records (no folder " +
+                                                      esc(sources.recordsDir.string()) + ")")
+       << " and " << sources.databases.size() << " database(s).</p>\n";
   csv << "section,id,check,reference,reference_value,ours,deviation,tolerance,status,note\n";
   std::string section;
   for (const auto& r : rows) {

@@ -22,7 +22,7 @@ class BedCompareStage final : public StageType {
   // 5: closure samples (issue 31) join their nominal run: beds.csv gains closure_samples and each
   //    output's spread from the DEM closures with each table quantity's share; the findings lead
   //    with it and the heights figure draws it beside the block-averaging error.
-  [[nodiscard]] int implVersion() const override { return 5; }
+  [[nodiscard]] int implVersion() const override { return 6; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "bed runs (mfm, tfdem) side by side: heights and pressure drops against references, solid-fraction maps";

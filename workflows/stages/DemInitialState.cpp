@@ -101,10 +101,20 @@ dem::Particles insertSpecies(const StageContext& ctx, const json& p, const DemSe
 }
 
 // Particles from a LAMMPS data file (atom_style sphere): per-atom diameter, density, velocity
-// and angular velocity as written, each type mapped to a species (and frozen if asked).
-dem::Particles readLammpsParticles(const json& p, const DemSetup& setup) {
+// and angular velocity as written, each type mapped to a species (and frozen if asked). A data
+// file carries no units: its numbers are read as the config's bare numbers are, so a reduced
+// config's file is in d0, m0/d0^3, d0/t0 and 1/t0 like its box (issue 54; it was read as SI).
+dem::Particles readLammpsParticles(const json& p, const DemSetup& setup, const core::units::UnitSystem& units) {
   const std::string path = p.at("lammps_data").at("path");
-  const auto data = core::io::readLammpsData(path);
+  auto data = core::io::readLammpsData(path);
+  const double length = units.d0(), time = units.t0(), density = units.m0() / (length * length * length);
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    data.position[i] *= length;
+    data.diameter[i] *= length;
+    data.density[i] *= density;
+    data.velocity[i] *= length / time;
+    data.angularVelocity[i] /= time;
+  }
   std::map<int, std::pair<int, bool>> typeMap;
   for (const auto& t : p.at("lammps_types")) {
     int species = -1;

@@ -14,8 +14,10 @@ namespace grainbridge::workflows::stages {
 // Every species at random without overlap, placed particles first (ids 0..), by the `dem` params
 // `p` (insert_lo/hi, place, insertion, seed, initial_temperature); a stop asked of `ctx` ends it.
 dem::Particles insertSpecies(const StageContext& ctx, const nlohmann::json& p, const DemSetup& setup);
-// Atoms of a LAMMPS data file, types mapped to species by lammps_types.
-dem::Particles readLammpsParticles(const nlohmann::json& params, const DemSetup& setup);
+// Atoms of a LAMMPS data file, types mapped to species by lammps_types. The file's numbers are in
+// the config's unit system, as its bare numbers are (SI, or d0, m0, t0 when reduced).
+dem::Particles readLammpsParticles(const nlohmann::json& params, const DemSetup& setup,
+                                   const core::units::UnitSystem& units);
 // Particles of a saved frame, species by index.
 dem::Particles readFrameParticles(const nlohmann::json& params, const DemSetup& setup);
 // Section 6.2's two-step preparation as phases of the time loop before the run proper: the

@@ -16,7 +16,8 @@ void addGasGridParams(ParamSchema& s) {
                .doc("domain size along x, y, z (z of a 2D grid: its depth)"))
       .add(ParamSpec::quantityList("gravity", Dimension::acceleration(), 3)
                .defaultValue(json::array({0, -9.81, 0}))
-               .doc("gravitational acceleration"))
+               .doc("gravitational acceleration; default along -y, the vertical of a 2D x-y grid (the dem "
+                    "stage's is along -z)"))
       .add(ParamSpec::quantity("gas_density", Dimension::density())
                .defaultValue("1.2 kg/m3")
                .positive()

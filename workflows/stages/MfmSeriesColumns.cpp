@@ -113,8 +113,9 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
     lastRetries_ = stats.retries;
     nextLog_ = state.time + 0.1 * setup_.duration;
   }
-  // The window: from average_from on (to round-off in the sampling times).
-  if (state.time >= setup_.averageFrom - 1e-9 * setup_.engine.interval) {
+  // The window: from average_from to average_to (to round-off in the sampling times).
+  const double slack = 1e-9 * setup_.engine.interval;
+  if (state.time >= setup_.averageFrom - slack && state.time <= setup_.averageTo + slack) {
     for (std::size_t k = 0; k < names_.size(); ++k) window_[names_[k]].push_back(values[k]);
     fields_.add(engine_.frame());
   }

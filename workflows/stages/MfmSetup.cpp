@@ -226,6 +226,8 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
 
   // The solver.
   auto& settings = s.engine.settings;
+  settings.phaseNames = {"gas"};
+  for (const auto& solids : model.solids) settings.phaseNames.push_back(solids.name);
   settings.gravity = core::json::vec3FromJson(p.at("gravity"));
   settings.packedFraction = packed;
   settings.tolerance = p.at("tolerance");
@@ -234,6 +236,7 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   settings.pressureRelaxation = p.at("pressure_relaxation");
   settings.fractionRelaxation = p.at("fraction_relaxation");
   settings.diluteFraction = p.at("dilute_fraction");
+  model.diluteFraction = settings.diluteFraction;  // the granular energy's dilute cells too
   // The linear solves: the band LU by default; iterative ones for 3D grids (StencilSystem.hpp).
   settings.momentumSolve = readLinearSolve(p, "momentum");
   settings.pressureSolve = readLinearSolve(p, "pressure");
@@ -241,7 +244,10 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   s.engine.interval = p.at("output_interval");
   s.duration = p.at("duration");
   s.averageFrom = p.at("average_from");
+  s.averageTo = p.contains("average_to") ? p.at("average_to").get<double>() : s.duration;
   if (s.averageFrom >= s.duration) problem("/average_from", "must be before the end of the run (duration)");
+  if (s.averageTo > s.duration * (1.0 + 1e-12)) problem("/average_to", "is after the end of the run (duration)");
+  if (s.averageTo <= s.averageFrom) problem("/average_to", "must be after average_from");
   if (s.engine.interval > s.duration) problem("/output_interval", "is longer than the run (duration)");
 
   // Boundaries (sides, jets on cell faces, inflow states, a fixed step's CFL limit) and the time
@@ -252,10 +258,15 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   s.initial = p.get<mfm::InitialState>();
   addProblems(s, s.initial.problems(s.engine.geometry, M, packed));
 
-  // Pressure taps, heights along gravity.
+  // Pressure taps, heights along gravity. A 2D grid's vertical lies in x-y: gravity out of the
+  // plane would act on no solved velocity, and would make the grid's depth the taps' "height".
   const fluid::VerticalAxis vertical = fluid::verticalAxis(settings.gravity);
-  const double height = fluidSetup.lengths[vertical.axis];
-  s.taps = readTaps(p, height, s.problems);
+  if (fluidSetup.twoD() && settings.gravity.z() != 0.0) {
+    problem("/gravity/2", "a 2D grid (cells z 1) lies in x-y: gravity must have no z part, found " +
+                              core::humanNumber(settings.gravity.z()) + " m/s2");
+  } else {
+    s.taps = readTaps(p, fluidSetup.lengths[vertical.axis], s.problems);
+  }
 
   // The segregation percentage of a binary bed (Eqs. 5.23-5.25), x_small from the initial regions.
   if (p.contains("segregation")) {

@@ -31,6 +31,7 @@ struct MfmSetup {
   std::vector<PressureTap> taps;
   double duration = 0.0;
   double averageFrom = 0.0;
+  double averageTo = 0.0;  // average_to, default the duration
   std::optional<Segregation> segregation;
   // (pointer below /params, message): empty when the run may start.
   std::vector<std::pair<std::string, std::string>> problems;

@@ -1,5 +1,6 @@
 #include "workflows/stages/ParticleSchema.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -122,18 +123,30 @@ std::shared_ptr<ParamSchema> pairContactSchema() {
 }
 
 void checkContactTimes(const DemSetup& setup, double dt, const std::string& ptr, core::json::Diagnostics& d) {
+  // A dt too large for one pair is usually too large for many (every species pair and wall):
+  // one message for dt, led by the shortest contact, instead of one per pair.
+  std::vector<const PairTiming*> tooShort;
   for (const auto& t : setup.timings) {
     if (!std::isfinite(t.contactTime)) {
       d.add(ptr + t.pointer, "pair " + t.pair +
                                  " is overdamped (gamma_n^2/4 >= k_n/m_eff): no rebound and no contact time (Eq. "
                                  "6.10); lower gamma_n or raise k_n");
     } else if (dt > t.contactTime / 10.0) {
-      std::ostringstream msg;
-      msg << "dt = " << dt << " s is above t_c/10 = " << t.contactTime / 10.0 << " s of pair " << t.pair
-          << " (t_c from Eq. 6.10); the reference recommends about t_c/50";
-      d.add(ptr + "/dt", msg.str());
+      tooShort.push_back(&t);
     }
   }
+  if (tooShort.empty()) return;
+  std::sort(tooShort.begin(), tooShort.end(), [](auto* a, auto* b) { return a->contactTime < b->contactTime; });
+  std::ostringstream msg;
+  msg << "dt = " << dt << " s is above t_c/10 = " << tooShort.front()->contactTime / 10.0 << " s of pair "
+      << tooShort.front()->pair << " (t_c from Eq. 6.10)";
+  if (tooShort.size() > 1) {
+    msg << ", and above t_c/10 of " << tooShort.size() - 1 << " more pair" << (tooShort.size() > 2 ? "s" : "") << " (";
+    for (std::size_t i = 1; i < tooShort.size() && i <= 3; ++i) msg << (i > 1 ? ", " : "") << tooShort[i]->pair;
+    msg << (tooShort.size() > 4 ? ", ..." : "") << ")";
+  }
+  msg << "; the reference recommends about t_c/50";
+  d.add(ptr + "/dt", msg.str());
 }
 
 }  // namespace grainbridge::workflows::stages

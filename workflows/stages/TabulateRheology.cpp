@@ -134,9 +134,13 @@ TabulatedRheology tabulateRheology(const std::vector<json>& points, const std::s
                     {"fitted_points", fitted.size()}};
       const std::size_t needed = relation.kind == st::RheologyRelation::MuOfI ? 4 : 3;
       if (fitted.size() < needed) {
-        spdlog::info("tabulate {}: {} at restitution {}: {} points with I <= {}, too few to fit (needs {})", name,
-                     st::relationName(relation.kind), eText.empty() ? "-" : eText, fitted.size(),
-                     core::humanNumber(fitMax), needed);
+        // Expected on a dilute sweep (the quickstart's), so not a line per relation and restitution
+        // in every run's log: the summary says it, the log at -v.
+        const std::string why = std::to_string(fitted.size()) + " points with I <= " + core::humanNumber(fitMax) +
+                                ", too few to fit (needs " + std::to_string(needed) + ")";
+        spdlog::debug("tabulate {}: {} at restitution {}: {}", name, st::relationName(relation.kind),
+                      eText.empty() ? "-" : eText, why);
+        brief["fit"] = "none: " + why;
       } else if (const auto [fit, why] = fitOrExplain(relation.kind, fitted); !fit) {
         // Points that do not determine the law (mu not rising with I, I_0 outside the points'
         // range) are still a table; the fit's absence is said, not turned into a failed stage.

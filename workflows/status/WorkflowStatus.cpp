@@ -112,7 +112,9 @@ std::vector<std::string> explainStage(const config::WorkflowConfig& config, cons
       lines.push_back(inst.label() + ": up to date (key " + inst.key.substr(0, 12) + ")");
       continue;
     }
-    // Compare with the newest run of this stage at the same sweep point, else the newest run.
+    // Compare with the newest run of this stage at the same sweep point. A sweep point without
+    // one has never run: its siblings' runs are other instances, not its history (comparing with
+    // one reported the sweep value as a change).
     const db::RunRecord* previous = nullptr;
     for (auto it = history.rbegin(); it != history.rend() && previous == nullptr; ++it) {
       const json old = json::parse(it->paramsJson);
@@ -120,9 +122,9 @@ std::vector<std::string> explainStage(const config::WorkflowConfig& config, cons
       for (const auto& [k, v] : inst.sweepPoint.items()) samePoint = samePoint && old.contains(k) && old[k] == v;
       if (samePoint) previous = &*it;
     }
-    if (previous == nullptr && !history.empty()) previous = &history.back();
     if (previous == nullptr) {
-      lines.push_back(inst.label() + ": never run");
+      lines.push_back(inst.label() + ": never run" +
+                      (history.empty() ? "" : " (other sweep points of " + stage + " have run, none at this one)"));
       continue;
     }
     if (previous->key == inst.key) {
