@@ -329,6 +329,10 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   const auto inserted = fromFile ? std::nullopt : std::optional<std::int64_t>(particleCount);
   for (const auto& problem : setup.engine.problems(maxDiameter, inserted))
     d.add(ptr + problem.pointer, problem.message);
+  // Spheres that cannot all be inserted at random fail the run at its start, after the stages
+  // before it ran: refused here from their volume.
+  if (const auto problem = randomInsertionProblem(p, setup))
+    d.add(ptr + problem->pointer, problem->message + "; or use insertion \"fcc_lattice\" for a denser start");
   checkContactTimes(setup, p.at("dt"), ptr, d);
 }
 

@@ -7,6 +7,7 @@
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/FluidSetup.hpp"
+#include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/FluidSchema.hpp"
 #include "workflows/stages/ParticleSchema.hpp"
 
@@ -251,6 +252,8 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   for (auto& t : s.dem.timings) t.pointer = tfdemPointer(t.pointer, p);
   for (const auto& problem : s.dem.engine.problems(dMax, count))
     problems.add(tfdemPointer(problem.pointer, p), problem.message);
+  // TF-DEM inserts its particles at random: a count that cannot fit fails the run at its start.
+  if (const auto problem = randomInsertionProblem(s.demParams, s.dem)) problems.add(problem->pointer, problem->message);
   checkContactTimes(s.dem, dt, "", problems);
   e.particles = s.dem.engine;
   e.materials = s.dem.materials;
