@@ -221,6 +221,14 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     if (c != 'x' && c != 'y' && c != 'z')
       d.add(ptr + "/periodic", "expected letters from \"xyz\", found \"" + periodic + "\"");
   }
+  // The run proper's steps; the preparation writes no frame.
+  const std::int64_t steps = runSteps(p);
+  if (const auto why = driver::framesProblem(p.at("frames").get<std::int64_t>(), steps,
+                                             std::to_string(steps) + " steps (duration " +
+                                                 core::humanNumber(p.at("duration").get<double>()) + " s / dt " +
+                                                 core::humanNumber(p.at("dt").get<double>()) + " s)");
+      !why.empty())
+    d.add(ptr + "/frames", why);
   if ((p.contains("lammps_data") || p.contains("initial_frame")) && p.at("initial_temperature").get<double>() > 0.0) {
     d.add(ptr + "/initial_temperature",
           "applies to inserted particles; a state from lammps_data or initial_frame keeps its own velocities");

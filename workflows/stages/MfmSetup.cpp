@@ -17,6 +17,7 @@
 #include "engines/fluid/FluidSetup.hpp"
 #include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/SolidsPairs.hpp"
+#include "workflows/driver/Phase.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -243,6 +244,14 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   s.averageFrom = p.at("average_from");
   if (s.averageFrom >= s.duration) problem("/average_from", "must be before the end of the run (duration)");
   if (s.engine.interval > s.duration) problem("/output_interval", "is longer than the run (duration)");
+  // One engine step is one output interval, and frames fall on steps.
+  const std::int64_t outputs = mfmSteps(p);
+  if (const auto why = driver::framesProblem(p.at("frames").get<std::int64_t>(), outputs,
+                                             std::to_string(outputs) + " output intervals (duration " +
+                                                 core::humanNumber(s.duration) + " s / output_interval " +
+                                                 core::humanNumber(s.engine.interval) + " s)");
+      !why.empty())
+    problem("/frames", why);
 
   // Boundaries (sides, jets on cell faces, inflow states, a fixed step's CFL limit) and the time
   // step, checked by the fluid set-up; then the initial regions, by mfm's initial state.

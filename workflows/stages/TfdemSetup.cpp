@@ -7,6 +7,7 @@
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/FluidSetup.hpp"
+#include "workflows/driver/Phase.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/FluidSchema.hpp"
 #include "workflows/stages/ParticleSchema.hpp"
@@ -174,6 +175,13 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   s.steps = std::max<std::int64_t>(1, std::llround(s.duration / fluidDt));
   s.seriesRows = std::max<std::int64_t>(1, std::llround(s.duration / s.outputInterval));
   s.settleSteps = std::llround(s.settleDuration / fluidDt);
+  // Frames fall on gas steps (the run phase's steps), not on series rows.
+  if (const auto why = driver::framesProblem(p.at("frames").get<std::int64_t>(), s.steps,
+                                             std::to_string(s.steps) + " gas steps (duration " +
+                                                 core::humanNumber(s.duration) + " s / fluid_dt " +
+                                                 core::humanNumber(fluidDt) + " s)");
+      !why.empty())
+    problems.add("/frames", why);
 
   // The particles: species, contacts and walls through the `dem` stage's set-up.
   std::set<std::string> names;
