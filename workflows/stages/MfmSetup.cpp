@@ -112,6 +112,27 @@ void setPlasticViscosity(const json& p, const std::vector<core::LoadedRheology>*
   }
 }
 
+// s_p (Eqs. 5.23-5.25) counts the small phase's excess low in the bed as positive: with small and
+// large swapped it comes out with the wrong sign and no error. Refused when `small` names the
+// larger diameter; equal diameters make the roles a matter of naming only, warned.
+void checkSegregationRoles(const std::vector<mfm::SolidsPhase>& solids, const std::array<std::size_t, 2>& index,
+                           MfmSetup& s) {
+  const mfm::SolidsPhase& small = solids[index[0]];
+  const mfm::SolidsPhase& large = solids[index[1]];
+  if (small.diameter > large.diameter) {
+    s.problems.emplace_back("/segregation/small",
+                            "names \"" + small.name + "\" (diameter " + core::humanNumber(small.diameter) +
+                                " m), larger than large \"" + large.name + "\" (" +
+                                core::humanNumber(large.diameter) +
+                                " m): s_p (Eqs. 5.23-5.25) would have the wrong sign; swap small and large");
+  } else if (small.diameter == large.diameter) {
+    s.warnings.emplace_back("/segregation", "small \"" + small.name + "\" and large \"" + large.name +
+                                                "\" have the same diameter " + core::humanNumber(small.diameter) +
+                                                " m: s_p (Eqs. 5.23-5.25) measures the separation of two equal "
+                                                "grains, its sign set by the names alone");
+  }
+}
+
 }  // namespace
 
 MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>* closureTables,
@@ -282,6 +303,7 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
     }
     if (index[0] < M && index[0] == index[1])
       problem("/segregation/large", "is the small phase too; name the two phases of the bed");
+    if (index[0] < M && index[1] < M && index[0] != index[1]) checkSegregationRoles(model.solids, index, s);
     if (s.problems.empty()) {
       const auto volumes = mfm::initialInventory(s.engine, s.initial).solidsVolume;
       const double total = volumes[0] + volumes[1];
