@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
 #include "core/Error.hpp"
+#include "core/text/NumberText.hpp"
 
 namespace grainbridge::dem {
 
@@ -93,11 +95,21 @@ std::vector<Vec3> insertRandomly(const InsertionRequest& rq, std::mt19937_64& rn
     if (!placed) {
       throw Error("could not insert sphere " + std::to_string(k + 1) + " of " + std::to_string(n) + " (radius " +
                   std::to_string(a) + " m) without overlap after " + std::to_string(rq.maxAttempts) +
-                  " attempts: the region is too full for random insertion (it jams near solid fraction 0.38); "
-                  "enlarge the insertion region or insert fewer particles");
+                  " attempts: the region is too full for random insertion (it jams near solid fraction " +
+                  core::humanNumber(kRandomInsertionJamming) + "); enlarge the insertion region or insert fewer particles");
     }
   }
   return centre;
+}
+
+double requestedSolidFraction(const InsertionRequest& rq) {
+  double spheres = 0.0;
+  for (const double a : rq.radii) spheres += 4.0 / 3.0 * M_PI * a * a * a;
+  const Vec3 extent = rq.hi - rq.lo;
+  double crossSection = extent[0] * extent[1];
+  if (rq.insideCylinder) crossSection = std::min(crossSection, M_PI * rq.cylinderRadius * rq.cylinderRadius);
+  const double volume = crossSection * extent[2];
+  return volume > 0.0 ? spheres / volume : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace grainbridge::dem

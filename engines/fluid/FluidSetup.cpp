@@ -145,8 +145,20 @@ std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, double 
       if (b.solidsTemperature[m] < 0.0)
         add(at + "/solids_temperature/" + std::to_string(m), "is negative: a granular temperature is >= 0");
     }
+    // An inlet's gas speed is into the domain (inflow() turns it inward): a negative one would
+    // pull gas out at a fixed speed whatever the pressure, with the inflow's fractions; gas
+    // leaves through an outlet, which holds the pressure beyond it.
+    if (*kind == BoundaryKind::VelocityInlet && b.gasInflow < 0.0) {
+      add(at + "/gas_inflow", "is " + core::humanNumber(b.gasInflow) +
+                                  " m/s: a velocity_inlet's gas speed is into the domain, not negative (gas leaves "
+                                  "through a pressure_outlet)");
+    }
     // A wall lets nothing through: its phases would be dropped without a word.
     const bool wall = *kind == BoundaryKind::NoSlipWall || *kind == BoundaryKind::FreeSlipWall;
+    if (wall && b.gasInflow != 0.0) {
+      add(at + "/gas_inflow", "is " + core::humanNumber(b.gasInflow) + " m/s, but a " + b.kind +
+                                  " lets no gas through: blow it in through a velocity_inlet");
+    }
     if (wall && !b.solidsFractions.empty())
       add(at + "/solids_fractions", "a " + b.kind + " lets no solids in: feed them through a velocity_inlet");
     if (wall && !b.solidsInflow.empty())

@@ -1,5 +1,6 @@
 #include "engines/mfm/InitialRegions.hpp"
 
+#include <optional>
 #include <random>
 #include <string>
 
@@ -85,6 +86,47 @@ void initialise(MultiFluidEngine& engine, const InitialState& init) {
   }
 }
 
+namespace {
+
+// Why region `r` (at pointer `at`) sets no cell, or nothing: applyRegions sets the cells whose
+// centres lie in [lo, hi) along every axis the grid resolves, so lo above hi, lo = hi, or a box
+// between two centres leaves the region empty without a word. A 2D grid does not test z (its
+// depth), where only a reversed box is refused.
+std::optional<core::engine::SetupProblem> emptyRegionProblem(const InitialRegion& r, const std::string& at,
+                                                             const core::data::GridGeometry& domain) {
+  const bool twoD = domain.cells[2] == 1;
+  for (int a = 0; a < 3; ++a) {
+    const bool resolved = !(twoD && a == 2);
+    const std::string axis(1, "xyz"[a]);
+    const std::string lo = core::humanNumber(r.lo[a]), hi = core::humanNumber(r.hi[a]);
+    if (r.lo[a] > r.hi[a]) {
+      return core::engine::SetupProblem{at + "/lo", "lo along " + axis + " is " + lo + " m, above hi " + hi + " m" +
+                                                        (resolved ? ": the region holds no cell" : "") +
+                                                        "; give the lower corner in lo"};
+    }
+    if (!resolved) continue;
+    if (r.lo[a] == r.hi[a]) {
+      return core::engine::SetupProblem{
+          at + "/hi", "lo and hi along " + axis + " are both " + lo +
+                          " m: the region holds no cell (a cell is in it when its centre is in [lo, hi))"};
+    }
+    bool centre = false;
+    for (int i = 0; i < domain.cells[static_cast<std::size_t>(a)] && !centre; ++i) {
+      const double x = domain.origin[a] + (i + 0.5) * domain.spacing[a];  // StaggeredGrid::cellCentre
+      centre = x >= r.lo[a] && x < r.hi[a];
+    }
+    if (!centre) {
+      return core::engine::SetupProblem{
+          at + "/hi", "[" + lo + ", " + hi + ") m along " + axis +
+                          " holds no cell centre (cells of " + core::humanNumber(domain.spacing[a]) +
+                          " m): the region holds no cell; widen it over the centres of the cells it means"};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::vector<core::engine::SetupProblem> InitialState::problems(const core::data::GridGeometry& domain,
                                                                std::size_t solidsPhases, double packedFraction) const {
   std::vector<core::engine::SetupProblem> out;
@@ -115,6 +157,7 @@ std::vector<core::engine::SetupProblem> InitialState::problems(const core::data:
       if (r.lo[a] < low - slack) out.push_back({at + "/lo", "lo" + along + core::humanNumber(r.lo[a]) + domainText});
       if (r.hi[a] > high + slack) out.push_back({at + "/hi", "hi" + along + core::humanNumber(r.hi[a]) + domainText});
     }
+    if (auto empty = emptyRegionProblem(r, at, domain)) out.push_back(std::move(*empty));
   }
   return out;
 }

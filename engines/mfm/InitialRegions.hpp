@@ -33,7 +33,8 @@ struct InitialState {
 
   // Every reason these regions cannot start `solidsPhases` solids phases in `domain`, each at the
   // JSON pointer of its key ("/regions/1/hi"): a fraction count other than the phases', solids
-  // above the packed fraction, a box partly outside the domain (a 2D grid's z against its depth).
+  // above the packed fraction, a box partly outside the domain (a 2D grid's z against its depth),
+  // a box that holds no cell centre (lo above hi, lo = hi, or between two centres).
   // Empty when the run can start.
   [[nodiscard]] std::vector<core::engine::SetupProblem> problems(const core::data::GridGeometry& domain,
                                                                  std::size_t solidsPhases, double packedFraction) const;

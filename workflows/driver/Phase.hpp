@@ -13,6 +13,8 @@
 #include <functional>
 #include <string>
 
+#include "core/text/NumberText.hpp"
+
 namespace grainbridge::workflows::driver {
 
 struct Phase {
@@ -23,5 +25,15 @@ struct Phase {
   std::function<void()> configure;
   std::function<void()> leave;
 };
+
+// Why `frames` frames after the initial one cannot be spread over an output phase of `steps`
+// steps, or "": the schedule writes at most one frame a step, so asking for more would give
+// fewer, silently. `steps` is worded as the stage counts them: "30 output intervals (duration
+// 0.3 s / output_interval 0.01 s)".
+inline std::string framesProblem(std::int64_t frames, std::int64_t steps, const std::string& stepsAre) {
+  if (frames <= steps) return {};
+  return "asks for " + std::to_string(frames) + " frames after the initial one, but the run has " + stepsAre +
+         " and writes at most one frame on each: ask for at most " + std::to_string(steps);
+}
 
 }  // namespace grainbridge::workflows::driver

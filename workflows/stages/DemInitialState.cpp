@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <random>
 
 #include "core/Error.hpp"
@@ -17,10 +18,22 @@ namespace grainbridge::workflows::stages {
 
 using nlohmann::json;
 
-// Every species at random, without overlap, in the insertion region (inside a cylinder wall
-// if there is one).
-dem::Particles insertSpecies(const StageContext& ctx, const json& p, const DemSetup& setup) {
+namespace {
+
+// What insertSpecies inserts: the region and spheres of the request, the species of each sphere
+// to insert (speciesOf, as request.radii) and of each placed one (placedSpecies, as
+// request.fixedCentres).
+struct SpeciesInsertion {
   dem::InsertionRequest request;
+  std::vector<int> placedSpecies;
+  std::vector<int> speciesOf;
+};
+
+// The insertion region (insert_lo/hi, default the box; inside a cylinder wall if there is one),
+// the placed particles as fixed spheres, and the rest of each species' count to insert.
+SpeciesInsertion speciesInsertion(const json& p, const DemSetup& setup) {
+  SpeciesInsertion out;
+  dem::InsertionRequest& request = out.request;
   request.lo =
       p.contains("insert_lo") ? Vec3(p["insert_lo"][0], p["insert_lo"][1], p["insert_lo"][2]) : setup.engine.lo;
   request.hi =
@@ -40,7 +53,7 @@ dem::Particles insertSpecies(const StageContext& ctx, const json& p, const DemSe
     throw Error("no species named " + name);  // checked at load
   };
   // Placed particles come first (ids 0..), then the rest of each species at random.
-  std::vector<int> placedSpecies;
+  std::vector<int>& placedSpecies = out.placedSpecies;
   std::vector<std::int64_t> remaining;
   for (const auto& s : setup.species) remaining.push_back(s.count);
   if (p.contains("place")) {
@@ -52,13 +65,53 @@ dem::Particles insertSpecies(const StageContext& ctx, const json& p, const DemSe
       request.fixedRadii.push_back(setup.species[static_cast<std::size_t>(s)].radius);
     }
   }
-  std::vector<int> speciesOf;
   for (std::size_t s = 0; s < setup.species.size(); ++s) {
     for (std::int64_t k = 0; k < remaining[s]; ++k) {
       request.radii.push_back(setup.species[s].radius);
-      speciesOf.push_back(static_cast<int>(s));
+      out.speciesOf.push_back(static_cast<int>(s));
     }
   }
+  return out;
+}
+
+}  // namespace
+
+std::optional<core::engine::SetupProblem> randomInsertionProblem(const json& p, const DemSetup& setup) {
+  if (p.contains("lammps_data") || p.contains("initial_frame") || p.value("insertion", "random") != "random")
+    return std::nullopt;  // a state read from a file or a lattice: nothing is inserted at random
+  const SpeciesInsertion insertion = speciesInsertion(p, setup);
+  const double fraction = dem::requestedSolidFraction(insertion.request);
+  if (!(fraction > dem::kRandomInsertionJamming)) return std::nullopt;
+  // Every species shares the one region: name each one inserted, and point at the count when
+  // one species alone fills it.
+  std::vector<std::int64_t> inserted(setup.species.size(), 0);
+  for (const int s : insertion.speciesOf) ++inserted[static_cast<std::size_t>(s)];
+  std::string counts;
+  std::size_t contributing = 0, last = 0;
+  for (std::size_t s = 0; s < inserted.size(); ++s) {
+    if (inserted[s] == 0) continue;
+    counts += (counts.empty() ? "" : ", ") + setup.species[s].name + " " + std::to_string(inserted[s]);
+    ++contributing;
+    last = s;
+  }
+  const Vec3 extent = insertion.request.hi - insertion.request.lo;
+  return core::engine::SetupProblem{
+      contributing == 1 ? "/species/" + std::to_string(last) + "/count" : "/species",
+      std::to_string(insertion.speciesOf.size()) + " spheres to insert at random (" + counts + ") would fill " +
+          core::humanNumber(fraction, 3) + " of the insertion region (" + core::humanNumber(extent[0]) + " x " +
+          core::humanNumber(extent[1]) + " x " + core::humanNumber(extent[2]) + " m" +
+          (insertion.request.insideCylinder ? ", inside the cylinder wall" : "") +
+          "), above the solid fraction " + core::humanNumber(dem::kRandomInsertionJamming) +
+          " near which random insertion jams: enlarge the insertion region or insert fewer particles"};
+}
+
+// Every species at random, without overlap, in the insertion region (inside a cylinder wall
+// if there is one).
+dem::Particles insertSpecies(const StageContext& ctx, const json& p, const DemSetup& setup) {
+  SpeciesInsertion insertion = speciesInsertion(p, setup);
+  dem::InsertionRequest& request = insertion.request;
+  const std::vector<int>& placedSpecies = insertion.placedSpecies;
+  const std::vector<int>& speciesOf = insertion.speciesOf;
   request.progress = [&](std::size_t) {
     if (ctx.stopRequested()) throw StageInterrupted{};
   };

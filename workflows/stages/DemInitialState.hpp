@@ -2,8 +2,10 @@
 // The initial state of a `dem` run and its preparation: random insertion (after placed
 // particles), a LAMMPS data file or a saved frame, and Section 6.2's two-step preparation.
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
+#include "core/engine/SetupProblem.hpp"
 #include "engines/dem/DemEngine.hpp"
 #include "workflows/driver/Phase.hpp"
 #include "workflows/stages/DemSetup.hpp"
@@ -14,6 +16,12 @@ namespace grainbridge::workflows::stages {
 // Every species at random without overlap, placed particles first (ids 0..), by the `dem` params
 // `p` (insert_lo/hi, place, insertion, seed, initial_temperature); a stop asked of `ctx` ends it.
 dem::Particles insertSpecies(const StageContext& ctx, const nlohmann::json& p, const DemSetup& setup);
+// Why the species' counts cannot be inserted at random into their region, or nothing: the
+// spheres to insert (placed ones aside) would fill more of it than the solid fraction near which
+// random insertion jams (dem::kRandomInsertionJamming), summed over every species since all share
+// the region. Nothing for a state read from a file or an fcc lattice. The run would otherwise
+// fail at its insertion, after the stages before it ran.
+std::optional<core::engine::SetupProblem> randomInsertionProblem(const nlohmann::json& p, const DemSetup& setup);
 // Atoms of a LAMMPS data file, types mapped to species by lammps_types. The file's numbers are in
 // the config's unit system, as its bare numbers are (SI, or d0, m0, t0 when reduced).
 dem::Particles readLammpsParticles(const nlohmann::json& params, const DemSetup& setup,

@@ -222,6 +222,14 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     if (c != 'x' && c != 'y' && c != 'z')
       d.add(ptr + "/periodic", "expected letters from \"xyz\", found \"" + periodic + "\"");
   }
+  // The run proper's steps; the preparation writes no frame.
+  const std::int64_t steps = runSteps(p);
+  if (const auto why = driver::framesProblem(p.at("frames").get<std::int64_t>(), steps,
+                                             std::to_string(steps) + " steps (duration " +
+                                                 core::humanNumber(p.at("duration").get<double>()) + " s / dt " +
+                                                 core::humanNumber(p.at("dt").get<double>()) + " s)");
+      !why.empty())
+    d.add(ptr + "/frames", why);
   if ((p.contains("lammps_data") || p.contains("initial_frame")) && p.at("initial_temperature").get<double>() > 0.0) {
     d.add(ptr + "/initial_temperature",
           "applies to inserted particles; a state from lammps_data or initial_frame keeps its own velocities");
@@ -331,6 +339,10 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   const auto inserted = fromFile ? std::nullopt : std::optional<std::int64_t>(particleCount);
   for (const auto& problem : setup.engine.problems(maxDiameter, inserted))
     d.add(ptr + problem.pointer, problem.message);
+  // Spheres that cannot all be inserted at random fail the run at its start, after the stages
+  // before it ran: refused here from their volume.
+  if (const auto problem = randomInsertionProblem(p, setup))
+    d.add(ptr + problem->pointer, problem->message + "; or use insertion \"fcc_lattice\" for a denser start");
   checkContactTimes(setup, p.at("dt"), ptr, d);
 }
 

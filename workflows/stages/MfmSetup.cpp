@@ -17,6 +17,7 @@
 #include "engines/fluid/FluidSetup.hpp"
 #include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/SolidsPairs.hpp"
+#include "workflows/driver/Phase.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -108,6 +109,27 @@ void setPlasticViscosity(const json& p, const std::vector<core::LoadedRheology>*
     }
   } catch (const Error& e) {
     problem("/rheology", "the mu(I) rheology \"" + name + "\": " + e.what());
+  }
+}
+
+// s_p (Eqs. 5.23-5.25) counts the small phase's excess low in the bed as positive: with small and
+// large swapped it comes out with the wrong sign and no error. Refused when `small` names the
+// larger diameter; equal diameters make the roles a matter of naming only, warned.
+void checkSegregationRoles(const std::vector<mfm::SolidsPhase>& solids, const std::array<std::size_t, 2>& index,
+                           MfmSetup& s) {
+  const mfm::SolidsPhase& small = solids[index[0]];
+  const mfm::SolidsPhase& large = solids[index[1]];
+  if (small.diameter > large.diameter) {
+    s.problems.emplace_back("/segregation/small",
+                            "names \"" + small.name + "\" (diameter " + core::humanNumber(small.diameter) +
+                                " m), larger than large \"" + large.name + "\" (" +
+                                core::humanNumber(large.diameter) +
+                                " m): s_p (Eqs. 5.23-5.25) would have the wrong sign; swap small and large");
+  } else if (small.diameter == large.diameter) {
+    s.warnings.emplace_back("/segregation", "small \"" + small.name + "\" and large \"" + large.name +
+                                                "\" have the same diameter " + core::humanNumber(small.diameter) +
+                                                " m: s_p (Eqs. 5.23-5.25) measures the separation of two equal "
+                                                "grains, its sign set by the names alone");
   }
 }
 
@@ -249,6 +271,14 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   if (s.averageTo > s.duration * (1.0 + 1e-12)) problem("/average_to", "is after the end of the run (duration)");
   if (s.averageTo <= s.averageFrom) problem("/average_to", "must be after average_from");
   if (s.engine.interval > s.duration) problem("/output_interval", "is longer than the run (duration)");
+  // One engine step is one output interval, and frames fall on steps.
+  const std::int64_t outputs = mfmSteps(p);
+  if (const auto why = driver::framesProblem(p.at("frames").get<std::int64_t>(), outputs,
+                                             std::to_string(outputs) + " output intervals (duration " +
+                                                 core::humanNumber(s.duration) + " s / output_interval " +
+                                                 core::humanNumber(s.engine.interval) + " s)");
+      !why.empty())
+    problem("/frames", why);
 
   // Boundaries (sides, jets on cell faces, inflow states, a fixed step's CFL limit) and the time
   // step, checked by the fluid set-up; then the initial regions, by mfm's initial state.
@@ -284,6 +314,7 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
     }
     if (index[0] < M && index[0] == index[1])
       problem("/segregation/large", "is the small phase too; name the two phases of the bed");
+    if (index[0] < M && index[1] < M && index[0] != index[1]) checkSegregationRoles(model.solids, index, s);
     if (s.problems.empty()) {
       const auto volumes = mfm::initialInventory(s.engine, s.initial).solidsVolume;
       const double total = volumes[0] + volumes[1];

@@ -35,6 +35,9 @@ struct MfmSetup {
   std::optional<Segregation> segregation;
   // (pointer below /params, message): empty when the run may start.
   std::vector<std::pair<std::string, std::string>> problems;
+  // (pointer below /params, message): what may run but is likely not what was meant; the
+  // config check logs them as warnings.
+  std::vector<std::pair<std::string, std::string>> warnings;
 };
 
 // Assumes individually valid parameters (the schema's checks passed). `closureTables` are the

@@ -280,7 +280,10 @@ MfmStage::MfmStage() {
 }
 
 void MfmStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
-  for (const auto& [where, what] : makeMfmSetup(p).problems) d.add(ptr + where, what);
+  const MfmSetup setup = makeMfmSetup(p);
+  for (const auto& [where, what] : setup.problems) d.add(ptr + where, what);
+  // No diagnostics channel carries warnings: they go to the log while the config is checked.
+  for (const auto& [where, what] : setup.warnings) spdlog::warn("{}{}: {}", ptr, where, what);
   if (asksForClosureSamples(p) && p.at("closure").get<std::string>() != "table") {
     d.add(ptr + tableErrorsNeededBy(p),
           "closure samples draw DEM closure tables within their errors: they need "

@@ -7,6 +7,8 @@
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/FluidSetup.hpp"
+#include "workflows/driver/Phase.hpp"
+#include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/FluidSchema.hpp"
 #include "workflows/stages/ParticleSchema.hpp"
 
@@ -174,6 +176,13 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   s.steps = std::max<std::int64_t>(1, std::llround(s.duration / fluidDt));
   s.seriesRows = std::max<std::int64_t>(1, std::llround(s.duration / s.outputInterval));
   s.settleSteps = std::llround(s.settleDuration / fluidDt);
+  // Frames fall on gas steps (the run phase's steps), not on series rows.
+  if (const auto why = driver::framesProblem(p.at("frames").get<std::int64_t>(), s.steps,
+                                             std::to_string(s.steps) + " gas steps (duration " +
+                                                 core::humanNumber(s.duration) + " s / fluid_dt " +
+                                                 core::humanNumber(fluidDt) + " s)");
+      !why.empty())
+    problems.add("/frames", why);
 
   // The particles: species, contacts and walls through the `dem` stage's set-up.
   std::set<std::string> names;
@@ -252,6 +261,8 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   for (auto& t : s.dem.timings) t.pointer = tfdemPointer(t.pointer, p);
   for (const auto& problem : s.dem.engine.problems(dMax, count))
     problems.add(tfdemPointer(problem.pointer, p), problem.message);
+  // TF-DEM inserts its particles at random: a count that cannot fit fails the run at its start.
+  if (const auto problem = randomInsertionProblem(s.demParams, s.dem)) problems.add(problem->pointer, problem->message);
   checkContactTimes(s.dem, dt, "", problems);
   e.particles = s.dem.engine;
   e.materials = s.dem.materials;
