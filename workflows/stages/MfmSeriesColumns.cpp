@@ -116,6 +116,7 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
   // The window: from average_from on (to round-off in the sampling times).
   if (state.time >= setup_.averageFrom - 1e-9 * setup_.engine.interval) {
     for (std::size_t k = 0; k < names_.size(); ++k) window_[names_[k]].push_back(values[k]);
+    windowTimes_.push_back(state.time);
     fields_.add(engine_.frame());
   }
 }
