@@ -17,6 +17,7 @@
 #include "engines/fluid/FluidSetup.hpp"
 #include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/SolidsPairs.hpp"
+#include "workflows/stages/OutputSchedule.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -243,6 +244,9 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   s.averageFrom = p.at("average_from");
   if (s.averageFrom >= s.duration) problem("/average_from", "must be before the end of the run (duration)");
   if (s.engine.interval > s.duration) problem("/output_interval", "is longer than the run (duration)");
+  // A row every interval and the run ending on one (the engine's steps land on each multiple).
+  if (const auto why = outputIntervalProblem(s.engine.interval, s.duration); !why.empty())
+    problem("/output_interval", why);
 
   // Boundaries (sides, jets on cell faces, inflow states, a fixed step's CFL limit) and the time
   // step, checked by the fluid set-up; then the initial regions, by mfm's initial state.

@@ -221,7 +221,7 @@ MfmStage::MfmStage() {
       .add(ParamSpec::quantity("output_interval", Dimension::timeDim())
                .defaultValue("0.01 s")
                .positive()
-               .doc("series rows (and the frames' grid of times)"))
+               .doc("series rows (and the frames' grid of times): a divisor of duration"))
       .add(
           ParamSpec::integer("frames").defaultValue(10).min(0).doc("field frames after the initial one, evenly spaced"))
       .add(ParamSpec::quantity("average_from", Dimension::timeDim())

@@ -133,7 +133,7 @@ TfdemStage::TfdemStage() {
       .add(ParamSpec::quantity("output_interval", Dimension::timeDim())
                .defaultValue("0.01 s")
                .positive()
-               .doc("series rows: a whole number of gas steps"))
+               .doc("series rows: a whole number of gas steps that divides duration"))
       .add(ParamSpec::integer("frames").defaultValue(10).min(0).doc(
           "particle and gas frames after the initial one, evenly spaced"))
       .add(ParamSpec::quantity("average_from", Dimension::timeDim())
