@@ -40,7 +40,12 @@ config = json.load(open(source))
 config["stages"] = {"bed": config["stages"]["bed"]}  # the bed alone: no extraction timed
 params = config["stages"]["bed"]["params"]
 params["settle_duration"] = f"{settle} s"
-params["duration"] = f"{duration} s"
+# A whole number of the config's output intervals (the stage refuses any other duration): the
+# nearest to the one asked, written where the timing below reads it.
+interval = float(params.get("output_interval", "0.01 s").split()[0])
+duration = max(1, round(duration / interval)) * interval
+params["duration"] = f"{duration:.12g} s"
+open(target + ".duration", "w").write(f"{duration:.12g}")
 params["average_from"] = "0 s"
 params.pop("average_to", None)
 params["frames"] = 0
@@ -52,20 +57,23 @@ PY
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores; pinned to core $core"
 echo "grainbridge: $("$gb" --version 2>/dev/null | head -1) ($(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo '?'))"
 echo "config: $(realpath --relative-to="$repo" "$config"), settled ${settle} s (not timed)"
+duration=$(cat "$work/bench.json.duration")
 (cd "$work" && taskset -c "$core" "$gb" run bench.json > run.log 2>&1) || { cat "$work/run.log" >&2; exit 1; }
-# The run phase's line: "bed: <gas steps> steps of <particle sub-steps> particles in <T> s: <rate> ..."
+# The run phase's line: "bed: <DEM steps> DEM steps of <particles> particles in <T> s: <rate> ...",
+# and the stage's "bed: gas step <s> s = <n> DEM steps".
 python3 - "$work/run.log" "$duration" "$work/bench.json" <<'PY'
 import json, re, sys
 log, duration = open(sys.argv[1]).read(), float(sys.argv[2])
-species = json.load(open(sys.argv[3]))["stages"]["bed"]["params"]["species"]
-particles = sum(int(s["count"]) for s in species)
-m = re.search(r"bed: (\d+) steps of (\d+) particles in ([0-9.]+) s: ([0-9.e+]+) particle-steps/s, ([0-9.]+) gas iterations", log)
-if not m:
+m = re.search(r"bed: (\d+) DEM steps of (\d+) particles in ([0-9.]+) s: ([0-9.e+]+) particle-steps/s, ([0-9.]+) gas iterations", log)
+g = re.search(r"bed: gas step \S+ s = (\d+) DEM steps", log)
+if not m or not g:
     sys.exit("no run-phase timing line in the log:\n" + log)
-steps, items, seconds, iterations = int(m.group(1)), int(m.group(2)), float(m.group(3)), float(m.group(5))
-print(f"simulated: {duration:g} s; {steps} gas steps of {items // particles} DEM steps of {particles} particles; "
+dem_steps, particles, seconds, iterations = int(m.group(1)), int(m.group(2)), float(m.group(3)), float(m.group(5))
+substeps = int(g.group(1))
+steps = dem_steps // substeps
+print(f"simulated: {duration:g} s; {steps} gas steps of {substeps} DEM steps of {particles} particles; "
       f"{iterations:g} gas iterations per gas step")
-print(f"particle-steps per second: {steps * items / seconds:.4g}")
+print(f"particle-steps per second: {dem_steps * particles / seconds:.4g}")
 print(f"gas steps per second: {steps / seconds:.4g}")
 print(f"wall_seconds_per_simulated_second = {seconds / duration:.2f}")
 PY

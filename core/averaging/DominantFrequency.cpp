@@ -37,4 +37,30 @@ std::optional<Spectrum> dominantFrequency(const std::vector<double>& samples, do
   return s;
 }
 
+std::optional<Spectrum> dominantFrequency(const std::vector<double>& times, const std::vector<double>& samples) {
+  const std::size_t n = samples.size();
+  if (n < 8 || times.size() != n) return std::nullopt;
+  const double span = times.back() - times.front();
+  const double dt = span / static_cast<double>(n - 1);
+  if (!(dt > 0.0)) return std::nullopt;
+  bool even = true;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double step = times[i] - times[i - 1];
+    if (!(step > 0.0)) return std::nullopt;
+    if (std::abs(step - dt) > 1e-6 * dt) even = false;
+  }
+  if (even) return dominantFrequency(samples, dt);
+  // Linear interpolation onto the even grid t_0 + i dt: its error is second order in the spacing,
+  // far below the one-bin resolution for a signal sampled several times per period.
+  std::vector<double> resampled(n);
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = i + 1 == n ? times.back() : times.front() + static_cast<double>(i) * dt;
+    while (j + 2 < n && times[j + 1] < t) ++j;
+    const double w = (t - times[j]) / (times[j + 1] - times[j]);
+    resampled[i] = (1.0 - w) * samples[j] + w * samples[j + 1];
+  }
+  return dominantFrequency(resampled, dt);
+}
+
 }  // namespace grainbridge::core::averaging

@@ -42,6 +42,13 @@ class SteppedEngine {
   // particle-steps/s; a grid engine counts cells.
   [[nodiscard]] virtual std::string workItem() const = 0;
   [[nodiscard]] virtual std::int64_t workItems() const = 0;
+  // The throughput's steps: the engine's own time steps taken so far, each over all workItems()
+  // (the log counts the difference over a phase). One per advance() by default; an engine whose
+  // advance() is several steps counts those: the multi-fluid solver's adaptive steps up to the
+  // next output time, TF-DEM's DEM sub-steps of a gas step.
+  [[nodiscard]] virtual std::int64_t workSteps() const { return step(); }
+  // What one of them is called in the log ("solver step", "DEM step"; "step" by default).
+  [[nodiscard]] virtual std::string workStep() const { return "step"; }
   // Appended to the throughput line ("4.07 contacts per particle").
   [[nodiscard]] virtual std::string throughputNote() const { return {}; }
 };

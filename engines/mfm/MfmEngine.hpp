@@ -51,6 +51,9 @@ class MfmEngine final : public core::engine::SteppedEngine {
   bool writeFramesIfUsable() override;
   [[nodiscard]] std::string workItem() const override { return "cell"; }
   [[nodiscard]] std::int64_t workItems() const override;
+  // The solver's adaptive steps (retried ones not counted), not the driver's output intervals.
+  [[nodiscard]] std::int64_t workSteps() const override { return engine_->statistics().steps; }
+  [[nodiscard]] std::string workStep() const override { return "solver step"; }
   [[nodiscard]] std::string throughputNote() const override;
 
   [[nodiscard]] const MultiFluidEngine& engine() const { return *engine_; }

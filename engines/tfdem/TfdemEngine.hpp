@@ -72,9 +72,10 @@ class TfdemEngine final : public core::engine::SteppedEngine {
   void writeFrames() override;
   bool writeFramesIfUsable() override;
   [[nodiscard]] std::string workItem() const override { return "particle"; }
-  [[nodiscard]] std::int64_t workItems() const override {
-    return static_cast<std::int64_t>(setup_.substeps) * static_cast<std::int64_t>(sim_.particles().nOwned);
-  }
+  [[nodiscard]] std::int64_t workItems() const override { return static_cast<std::int64_t>(sim_.particles().nOwned); }
+  // Each gas step is `substeps` DEM steps of every particle.
+  [[nodiscard]] std::int64_t workSteps() const override { return step_ * setup_.substeps; }
+  [[nodiscard]] std::string workStep() const override { return "DEM step"; }
   [[nodiscard]] std::string throughputNote() const override;
 
   // A phase without the gas (settling the bed before the gas is turned on): advance() runs the

@@ -21,6 +21,7 @@
 #include "tests/support/CsvLine.hpp"
 #include "tests/support/TinyShear.hpp"
 #include "tests/support/WorkflowResults.hpp"
+#include "workflows/report/NumericCsv.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge::testing;
@@ -43,6 +44,15 @@ TEST(MfmStage, GrainSmokeWritesFramesMeanFieldsSeriesAndAFluidizationCurve) {
               "time,step,dp_bed,mean_height_grain,solids_volume_grain,dt,solver_steps,iterations,residual,"
               "mass_gas,mass_in_gas,mass_out_gas,mass_out_gas_y_high,mass_grain,mass_in_grain,mass_out_grain,"
               "mass_out_grain_y_high");
+    // A row every output_interval (0.01 s: the solver's adaptive steps land on each), and the
+    // throughput counts the solver's steps, not the rows (issue 54).
+    const auto columns = grainbridge::workflows::report::readNumericCsv(bed / "series.csv");
+    const auto& times = columns.at("time");
+    for (std::size_t k = 0; k < times.size(); ++k)
+      EXPECT_NEAR(times[k], 0.01 * static_cast<double>(k + 1), 1e-12) << "row " << k;
+    const auto solverSteps = static_cast<std::int64_t>(columns.at("solver_steps").back());
+    EXPECT_GT(solverSteps, static_cast<std::int64_t>(times.size()));
+    EXPECT_NE(r.output.find(": " + std::to_string(solverSteps) + " solver steps of "), std::string::npos) << r.output;
     const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
     // Short runs: a sanity bound on the drop (below the 664 Pa weight at low inflow, not far
     // above it at high), an error that is a number, and the inventory kept.

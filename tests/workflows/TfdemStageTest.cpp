@@ -14,6 +14,7 @@
 #include "engines/closures/SyamlalOBrien.hpp"
 #include "tests/support/Cli.hpp"
 #include "tests/support/WorkflowResults.hpp"
+#include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/TfdemSetup.hpp"
 #include "workflows/stages/TfdemStage.hpp"
 
@@ -77,6 +78,18 @@ TEST_F(TfdemStage, WritesParticleAndGasFramesSeriesAndSummary) {
             "time,step,dp_bed,mean_height,mean_height_fields,contacts,coordination,multi_contact_ratio,"
             "gas_iterations");
   EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 21);  // header and 0.06 / 0.003 rows
+  // A row every output_interval: every 20 gas steps (0.003 s / 1.5e-4 s), at 0.003 k s to round-off
+  // in the gas steps' time sum (issue 54: rows spread evenly over the run fell at other spacings).
+  const auto columns = workflows::report::readNumericCsv(bed / "series.csv");
+  const auto& times = columns.at("time");
+  const auto& steps = columns.at("step");
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    EXPECT_EQ(steps[k], 20.0 * static_cast<double>(k + 1)) << "row " << k;
+    EXPECT_NEAR(times[k], 0.003 * static_cast<double>(k + 1), 1e-12) << "row " << k;
+  }
+  // The throughput counts DEM steps of each particle: 400 gas steps of 10 DEM steps, 60 particles
+  // (not the gas steps of 600 "particles").
+  EXPECT_NE(r.output.find("bed: 4000 DEM steps of 60 particles in "), std::string::npos) << r.output;
   const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
   EXPECT_EQ(summary.at("particles").get<int>(), 60);
   // The clock restarted after settling: the settled bed lies on the floor, a layer or two of

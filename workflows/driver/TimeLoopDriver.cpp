@@ -85,6 +85,7 @@ void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t i
                      "steps", 10.0, static_cast<double>(firstStep));
   }
   const auto loopStart = std::chrono::steady_clock::now();
+  const std::int64_t workStart = engine.workSteps();
   for (std::int64_t s = firstStep + 1; s <= phase.steps; ++s) {
     const bool frameStep = phase.output && onSchedule(s, options_.frames, phase.steps);
     const bool seriesStep = phase.output && (onSchedule(s, options_.seriesRows, phase.steps) || s == phase.steps);
@@ -122,11 +123,14 @@ void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t i
   if (progress) progress->finish();
   if (phase.output) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
-    const auto steps = phase.steps - firstStep;
+    // The engine's own steps, each over all its work items: a multi-fluid output interval is many
+    // solver steps, a TF-DEM gas step `substeps` DEM steps of every particle.
+    const std::int64_t steps = engine.workSteps() - workStart;
     const double rate = static_cast<double>(steps) * static_cast<double>(engine.workItems()) / seconds;
     const std::string note = engine.throughputNote();
-    spdlog::info("{}: {} steps of {} {}s in {:.3f} s: {} {}-steps/s{}", ctx_.stage(), steps, engine.workItems(),
-                 engine.workItem(), seconds, core::humanNumber(rate, 4), engine.workItem(), note.empty() ? "" : ", " + note);
+    spdlog::info("{}: {} {}s of {} {}s in {:.3f} s: {} {}-steps/s{}", ctx_.stage(), steps, engine.workStep(),
+                 engine.workItems(), engine.workItem(), seconds, core::humanNumber(rate, 4), engine.workItem(),
+                 note.empty() ? "" : ", " + note);
   }
   if (phase.leave) phase.leave();
 }

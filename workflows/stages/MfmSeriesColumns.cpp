@@ -117,6 +117,7 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
   const double slack = 1e-9 * setup_.engine.interval;
   if (state.time >= setup_.averageFrom - slack && state.time <= setup_.averageTo + slack) {
     for (std::size_t k = 0; k < names_.size(); ++k) window_[names_[k]].push_back(values[k]);
+    windowTimes_.push_back(state.time);
     fields_.add(engine_.frame());
   }
 }

@@ -32,6 +32,8 @@ class MfmSeriesColumns final : public driver::SeriesColumns {
 
   // The samples of each column taken at or after the window's start, in time order.
   [[nodiscard]] const std::map<std::string, std::vector<double>>& windowSamples() const { return window_; }
+  // The times of those samples.
+  [[nodiscard]] const std::vector<double>& windowTimes() const { return windowTimes_; }
   [[nodiscard]] const core::averaging::FieldTimeAverage& fieldAverage() const { return fields_; }
 
  private:
@@ -43,6 +45,7 @@ class MfmSeriesColumns final : public driver::SeriesColumns {
   long lastSteps_ = 0, lastIterations_ = 0, lastRetries_ = 0;
   double nextLog_ = 0.0;
   std::map<std::string, std::vector<double>> window_;
+  std::vector<double> windowTimes_;
   core::averaging::FieldTimeAverage fields_;
 };
 

@@ -18,6 +18,7 @@
 #include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/SolidsPairs.hpp"
 #include "workflows/driver/Phase.hpp"
+#include "workflows/stages/OutputSchedule.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -279,6 +280,9 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
                                                  core::humanNumber(s.engine.interval) + " s)");
       !why.empty())
     problem("/frames", why);
+  // A row every interval and the run ending on one (the engine's steps land on each multiple).
+  if (const auto why = outputIntervalProblem(s.engine.interval, s.duration); !why.empty())
+    problem("/output_interval", why);
 
   // Boundaries (sides, jets on cell faces, inflow states, a fixed step's CFL limit) and the time
   // step, checked by the fluid set-up; then the initial regions, by mfm's initial state.

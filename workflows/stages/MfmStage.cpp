@@ -221,7 +221,7 @@ MfmStage::MfmStage() {
       .add(ParamSpec::quantity("output_interval", Dimension::timeDim())
                .defaultValue("0.01 s")
                .positive()
-               .doc("series rows (and the frames' grid of times)"))
+               .doc("series rows (and the frames' grid of times): a divisor of duration"))
       .add(
           ParamSpec::integer("frames").defaultValue(10).min(0).doc("field frames after the initial one, evenly spaced"))
       .add(ParamSpec::quantity("average_from", Dimension::timeDim())
@@ -407,8 +407,9 @@ void MfmStage::run(StageContext& ctx) const {
     const std::string column = "dp_" + setup.taps[k].name;
     addAverage(summary, column, window.at(column));
     if (k == 0) addAverage(summary, "pressure_drop", window.at(column));
-    // The fluctuation's dominant frequency and amplitude over the window (Fig. 7.3).
-    if (const auto spectrum = core::averaging::dominantFrequency(window.at(column), setup.engine.interval)) {
+    // The fluctuation's dominant frequency and amplitude over the window (Fig. 7.3), at the
+    // rows' own times.
+    if (const auto spectrum = core::averaging::dominantFrequency(observed.windowTimes(), window.at(column))) {
       summary[column + "_frequency"] = spectrum->frequency;
       summary[column + "_amplitude"] = spectrum->amplitude;
     }

@@ -10,6 +10,7 @@
 #include "workflows/driver/Phase.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/FluidSchema.hpp"
+#include "workflows/stages/OutputSchedule.hpp"
 #include "workflows/stages/ParticleSchema.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -169,12 +170,17 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
                                          core::humanNumber(fluidDt) + " s");
   }
   if (s.outputInterval > s.duration) problems.add("/output_interval", "is longer than the run (duration)");
+  if (const auto why = outputIntervalProblem(s.outputInterval, s.duration, fluidDt, "gas steps fluid_dt");
+      !why.empty())
+    problems.add("/output_interval", why);
   s.averageTo = p.contains("average_to") ? p.at("average_to").get<double>() : s.duration;
   if (s.averageFrom >= s.duration) problems.add("/average_from", "must be before the end of the run (duration)");
   if (s.averageTo > s.duration * (1.0 + 1e-12)) problems.add("/average_to", "is after the end of the run (duration)");
   if (s.averageTo <= s.averageFrom) problems.add("/average_to", "must be after average_from");
-  s.steps = std::max<std::int64_t>(1, std::llround(s.duration / fluidDt));
+  // A row every output_interval: the run is a whole number of rows of a whole number of gas steps
+  // each (both checked above), so the driver's evenly spaced rows fall on exactly those steps.
   s.seriesRows = std::max<std::int64_t>(1, std::llround(s.duration / s.outputInterval));
+  s.steps = s.seriesRows * std::max<std::int64_t>(1, std::llround(s.outputInterval / fluidDt));
   s.settleSteps = std::llround(s.settleDuration / fluidDt);
   // Frames fall on gas steps (the run phase's steps), not on series rows.
   if (const auto why = driver::framesProblem(p.at("frames").get<std::int64_t>(), s.steps,

@@ -133,7 +133,7 @@ TfdemStage::TfdemStage() {
       .add(ParamSpec::quantity("output_interval", Dimension::timeDim())
                .defaultValue("0.01 s")
                .positive()
-               .doc("series rows: a whole number of gas steps"))
+               .doc("series rows: a whole number of gas steps that divides duration"))
       .add(ParamSpec::integer("frames").defaultValue(10).min(0).doc(
           "particle and gas frames after the initial one, evenly spaced"))
       .add(ParamSpec::quantity("average_from", Dimension::timeDim())
@@ -247,8 +247,9 @@ void TfdemStage::run(StageContext& ctx) const {
     const std::string column = "dp_" + setup.taps[k].name;
     addAverage(summary, column, window.at(column));
     if (k == 0) addAverage(summary, "pressure_drop", window.at(column));
-    // The fluctuation's dominant frequency and amplitude over the window (Fig. 7.3).
-    if (const auto spectrum = core::averaging::dominantFrequency(window.at(column), setup.outputInterval)) {
+    // The fluctuation's dominant frequency and amplitude over the window (Fig. 7.3), at the
+    // rows' own times.
+    if (const auto spectrum = core::averaging::dominantFrequency(window.at("time"), window.at(column))) {
       summary[column + "_frequency"] = spectrum->frequency;
       summary[column + "_amplitude"] = spectrum->amplitude;
     }
