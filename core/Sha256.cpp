@@ -65,12 +65,14 @@ std::string sha256FileOncePerVersion(const std::filesystem::path& path) {
   using Version = std::tuple<std::string, std::uintmax_t, std::filesystem::file_time_type::rep>;
   static std::mutex mutex;
   static std::map<Version, std::string> digests;
-  std::error_code ec;
-  const auto canonical = std::filesystem::canonical(path, ec);
-  if (ec) return sha256File(path);  // let the reader name the problem
-  const Version version{canonical.string(), std::filesystem::file_size(canonical, ec),
-                        std::filesystem::last_write_time(canonical, ec).time_since_epoch().count()};
-  if (ec) return sha256File(path);
+  // Any error reading the version: hash without the memo and let the reader name the problem.
+  std::error_code pathError, sizeError, timeError;
+  const auto canonical = std::filesystem::canonical(path, pathError);
+  if (pathError) return sha256File(path);
+  const auto size = std::filesystem::file_size(canonical, sizeError);
+  const auto written = std::filesystem::last_write_time(canonical, timeError);
+  if (sizeError || timeError) return sha256File(path);
+  const Version version{canonical.string(), size, written.time_since_epoch().count()};
   {
     const std::lock_guard lock(mutex);
     if (const auto it = digests.find(version); it != digests.end()) return it->second;

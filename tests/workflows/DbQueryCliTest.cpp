@@ -25,20 +25,26 @@ json point(double solidFraction, double restitution, double pressure) {
           {"pressure", pressure},       {"pressure_err", 0.5}};
 }
 
-// A database with two runs: points at solid fraction 0.1, 0.2 (e 0.9) and 0.3 (e 0.7).
-std::filesystem::path closureDatabase(const TempDir& dir) {
+// A database with one run per entry of `runs` (keys key-one, key-two, ...), each holding its points.
+std::filesystem::path closureDatabase(const TempDir& dir, const std::vector<json>& runs) {
   const auto path = dir.path() / "gb.sqlite";
   auto database = db::Database::open(path);
   database.transaction([&](db::Database& d) {
     db::ProvenanceStore provenance(d);
     const auto invocation = provenance.insertInvocation(db::test::sampleInvocation());
-    const auto run1 = provenance.insertRun(db::test::sampleRun(invocation, "key-one"));
-    const auto run2 = provenance.insertRun(db::test::sampleRun(invocation, "key-two"));
-    db::ClosureStore store(d);
-    store.insertRecords(run1, {{"closure_points", {point(0.1, 0.9, 10.0), point(0.2, 0.9, 20.0)}}});
-    store.insertRecords(run2, {{"closure_points", {point(0.3, 0.7, 30.0)}}});
+    const char* keys[] = {"key-one", "key-two", "key-three"};
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const auto run = provenance.insertRun(db::test::sampleRun(invocation, keys[k]));
+      db::ClosureStore(d).insertRecords(run, {{"closure_points", runs[k]}});
+    }
   });
   return path;
+}
+
+// Two runs: points at solid fraction 0.1, 0.2 (e 0.9) and 0.3 (e 0.7).
+std::filesystem::path closureDatabase(const TempDir& dir) {
+  return closureDatabase(dir, {json::array({point(0.1, 0.9, 10.0), point(0.2, 0.9, 20.0)}),
+                               json::array({point(0.3, 0.7, 30.0)})});
 }
 
 }  // namespace
@@ -91,15 +97,8 @@ TEST(DbQueryCli, UnknownColumnsAreAUsageErrorListingTheColumns) {
 // 0.300004), and a user selects it by the value the config and the report name (issue 54).
 TEST(DbQueryCli, MeasuredStatesMatchTheRoundValueWritten) {
   TempDir dir;
-  const auto path = dir.path() / "gb.sqlite";
-  auto database = db::Database::open(path);
-  database.transaction([&](db::Database& d) {
-    db::ProvenanceStore provenance(d);
-    const auto invocation = provenance.insertInvocation(db::test::sampleInvocation());
-    const auto run = provenance.insertRun(db::test::sampleRun(invocation, "key-one"));
-    db::ClosureStore(d).insertRecords(
-        run, {{"closure_points", {point(0.0999998, 0.9, 10.0), point(0.2, 0.9, 20.0), point(0.300004, 0.9, 30.0)}}});
-  });
+  const auto path = closureDatabase(
+      dir, {json::array({point(0.0999998, 0.9, 10.0), point(0.2, 0.9, 20.0), point(0.300004, 0.9, 30.0)})});
   auto rows = [&](const std::string& where) {
     const auto r = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' " + where + " --format json");
     EXPECT_EQ(r.exitCode, 0) << r.output;
