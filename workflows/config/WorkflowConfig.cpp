@@ -8,6 +8,7 @@
 
 #include "core/json/StrictParse.hpp"
 #include "core/units/Quantity.hpp"
+#include "workflows/config/WrittenValue.hpp"
 
 namespace grainbridge::workflows::config {
 
@@ -245,7 +246,9 @@ void checkAgainstUpstreams(const WorkflowConfig& cfg, const std::set<std::string
       cj::Diagnostics local;
       sc.type->checkAgainstUpstream(withSweepPoint(sc.params, point), ptr, upstream, local);
       for (const auto& item : local.items()) {
-        if (seen.insert(item.where + item.message).second) d.add(atSweepPoint(item.where, point), item.message);
+        if (seen.insert(item.where + item.message).second)
+          d.add(atSweepPoint(item.where, point),
+                item.message + writtenNote(cfg.document, item.where, item.message, cfg.units));
       }
     }
   }
@@ -389,7 +392,9 @@ WorkflowConfig parseWorkflow(const json& doc, const std::string& sourceName, con
                             std::to_string(sc.ranksPerInstance));
             }
             for (const auto& item : local.items()) {
-              if (seen.insert(item.where + item.message).second) d.add(atSweepPoint(item.where, point), item.message);
+              if (seen.insert(item.where + item.message).second)
+                d.add(atSweepPoint(item.where, point),
+                      item.message + writtenNote(cfg.document, item.where, item.message, cfg.units));
             }
           }
         }

@@ -9,10 +9,10 @@
 #include "core/Log.hpp"
 #include "core/io/LammpsDataReader.hpp"
 #include "core/io/ParticleFrameReader.hpp"
+#include "core/text/NumberText.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "engines/dem/LatticeInsertion.hpp"
 #include "engines/dem/MaxwellianVelocities.hpp"
-#include "core/text/NumberText.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -95,13 +95,16 @@ std::optional<core::engine::SetupProblem> randomInsertionProblem(const json& p, 
     last = s;
   }
   const Vec3 extent = insertion.request.hi - insertion.request.lo;
+  // The region's keys as the user wrote them: the numbers below are SI.
+  const std::string region =
+      p.contains("insert_lo") || p.contains("insert_hi") ? "insert_lo/insert_hi" : "box_lo/box_hi";
   return core::engine::SetupProblem{
       contributing == 1 ? "/species/" + std::to_string(last) + "/count" : "/species",
       std::to_string(insertion.speciesOf.size()) + " spheres to insert at random (" + counts + ") would fill " +
-          core::humanNumber(fraction, 3) + " of the insertion region (" + core::humanNumber(extent[0]) + " x " +
-          core::humanNumber(extent[1]) + " x " + core::humanNumber(extent[2]) + " m" +
-          (insertion.request.insideCylinder ? ", inside the cylinder wall" : "") +
-          "), above the solid fraction " + core::humanNumber(dem::kRandomInsertionJamming) +
+          core::humanNumber(fraction, 3) + " of the insertion region (" + region + ", " + core::humanNumber(extent[0]) +
+          " x " + core::humanNumber(extent[1]) + " x " + core::humanNumber(extent[2]) + " m" +
+          (insertion.request.insideCylinder ? ", inside the cylinder wall" : "") + "), above the solid fraction " +
+          core::humanNumber(dem::kRandomInsertionJamming) +
           " near which random insertion jams: enlarge the insertion region or insert fewer particles"};
 }
 
