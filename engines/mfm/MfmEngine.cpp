@@ -40,8 +40,9 @@ std::string MfmEngine::throughputNote() const {
   const auto& s = engine_->statistics();
   std::ostringstream out;
   out.precision(3);
-  out << s.steps << " solver steps, " << (s.steps > 0 ? static_cast<double>(s.iterations) / s.steps : 0.0)
-      << " iterations per step, " << s.retries << " retried, last dt " << s.lastDt << " s";
+  // The driver's line already counts the solver steps (workSteps).
+  out << (s.steps > 0 ? static_cast<double>(s.iterations) / s.steps : 0.0) << " iterations per step, " << s.retries
+      << " retried, last dt " << s.lastDt << " s";
   return out.str();
 }
 
