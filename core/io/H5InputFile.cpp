@@ -149,6 +149,14 @@ std::vector<std::int32_t> H5InputFile::readInt32s(const std::string& dataset, co
   return out;
 }
 
+std::vector<std::uint8_t> H5InputFile::readBytes(const std::string& dataset) const {
+  std::size_t count = 0;
+  const H5Handle dset = openChecked(dataset, {std::nullopt}, H5T_INTEGER, count);
+  std::vector<std::uint8_t> out(count);
+  readInto(dataset, dset, H5T_NATIVE_UINT8, out.data(), count);
+  return out;
+}
+
 std::vector<Vec3> H5InputFile::readVec3s(const std::string& dataset, Shape leading) const {
   leading.emplace_back(3);
   std::size_t count = 0;

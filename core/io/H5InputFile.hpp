@@ -34,6 +34,8 @@ class H5InputFile {
   [[nodiscard]] std::vector<double> readDoubles(const std::string& dataset, const Shape& expectedShape) const;
   [[nodiscard]] std::vector<std::int64_t> readInt64s(const std::string& dataset, const Shape& expectedShape) const;
   [[nodiscard]] std::vector<std::int32_t> readInt32s(const std::string& dataset, const Shape& expectedShape) const;
+  // A 1-D dataset of opaque bytes (H5OutputFile::writeBytes).
+  [[nodiscard]] std::vector<std::uint8_t> readBytes(const std::string& dataset) const;
   // Shape `leading` + [3], returned as one Vec3 per leading element.
   [[nodiscard]] std::vector<Vec3> readVec3s(const std::string& dataset, Shape leading) const;
 

@@ -96,6 +96,9 @@ void H5OutputFile::writeDataset(const std::string& path, std::span<const std::in
                                 const std::vector<hsize_t>& dims) {
   writeRaw(path, H5T_NATIVE_INT32, H5T_STD_I32LE, data.data(), data.size(), dims);
 }
+void H5OutputFile::writeBytes(const std::string& path, std::span<const std::uint8_t> data) {
+  writeRaw(path, H5T_NATIVE_UINT8, H5T_STD_U8LE, data.data(), data.size(), {data.size()});
+}
 void H5OutputFile::writeDataset(const std::string& path, const std::vector<double>& data) {
   writeDataset(path, std::span<const double>(data), {data.size()});
 }

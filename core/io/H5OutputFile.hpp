@@ -31,6 +31,8 @@ class H5OutputFile {
   void writeDataset(const std::string& path, std::span<const double> data, const std::vector<hsize_t>& dims);
   void writeDataset(const std::string& path, std::span<const std::int64_t> data, const std::vector<hsize_t>& dims);
   void writeDataset(const std::string& path, std::span<const std::int32_t> data, const std::vector<hsize_t>& dims);
+  // Opaque bytes (another program's file carried inside ours, e.g. a LAMMPS restart), 1-D.
+  void writeBytes(const std::string& path, std::span<const std::uint8_t> data);
   // Shapes [n] and [n, 3].
   void writeDataset(const std::string& path, const std::vector<double>& data);
   void writeDataset(const std::string& path, const std::vector<std::int64_t>& data);

@@ -10,7 +10,7 @@
 #include "core/data/Materials.hpp"
 #include "core/data/ParticleFrame.hpp"
 #include "core/engine/SteppedEngine.hpp"
-#include "engines/dem/Simulation.hpp"
+#include "engines/dem/Energies.hpp"
 
 namespace grainbridge::dem {
 

@@ -12,6 +12,7 @@
 #include "core/Types.hpp"
 #include "core/data/ParticleFrame.hpp"
 #include "engines/dem/BodyForces.hpp"
+#include "engines/dem/Energies.hpp"
 #include "engines/dem/NeighborList.hpp"
 #include "engines/dem/Particles.hpp"
 #include "engines/dem/SimulationSetup.hpp"
@@ -39,12 +40,6 @@ struct EngineState {
   double shearOffsetTime = 0.0;
   double normalStressSum = 0.0;
   std::int64_t normalStressSamples = 0;
-};
-
-struct Energies {
-  double translational = 0.0;  // sum 1/2 m v^2 over mobile particles
-  double rotational = 0.0;     // sum 1/2 I omega^2
-  [[nodiscard]] double kinetic() const { return translational + rotational; }
 };
 
 class Simulation {
@@ -185,7 +180,7 @@ class Simulation {
   std::vector<Vec3> wallHistory_;
   std::vector<Vec3> wallForce_;
   std::vector<std::vector<std::size_t>> wallCandidates_;  // per wall, increasing particle index
-  bool contactsCurrent_ = false;  // recordedContacts_ belong to the current state
+  bool contactsCurrent_ = false;                          // recordedContacts_ belong to the current state
   core::data::ContactList recordedContacts_;
   core::data::WallContactList recordedWallContacts_;
 };

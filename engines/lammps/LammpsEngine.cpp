@@ -1,4 +1,5 @@
 #include "engines/lammps/LammpsEngine.hpp"
+#include "engines/lammps/LammpsEngineFactory.hpp"
 
 // LAMMPS's library interface declares lammps_open(..., MPI_Comm, ...) only with this defined.
 #define LAMMPS_LIB_MPI 1
@@ -14,10 +15,9 @@
 #include <sstream>
 #include <unordered_map>
 
-#include <nlohmann/json.hpp>
-
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/io/CheckpointFile.hpp"
 
 namespace grainbridge::lammps {
 
@@ -148,34 +148,23 @@ std::unique_ptr<LammpsEngine> LammpsEngine::restore(const dem::SimulationSetup& 
                                                     const std::string& fingerprint, MPI_Comm comm,
                                                     const std::filesystem::path& outputDir,
                                                     core::io::ArtifactStamp stamp) {
-  std::ifstream in(stateFile, std::ios::binary);
-  std::string headerLine;
-  if (!in || !std::getline(in, headerLine)) throw Error(stateFile.string() + ": cannot read the LAMMPS state");
-  nlohmann::json header;
-  try {
-    header = nlohmann::json::parse(headerLine);
-  } catch (const std::exception& e) {
-    throw Error(stateFile.string() + ": not a LAMMPS engine state (" + e.what() + ")");
-  }
-  if (header.value("fingerprint", "") != fingerprint) {
-    throw Error(stateFile.string() + ": the state of another configuration (fingerprint " +
-                header.value("fingerprint", "") + ", expected " + fingerprint + ")");
-  }
-  const auto bytes = header.at("bytes").get<std::uint64_t>();
-  std::string restart(bytes, '\0');
-  in.read(restart.data(), static_cast<std::streamsize>(bytes));
-  const auto forceValues = header.at("force_values").get<std::uint64_t>();
-  std::vector<double> forces(forceValues);
-  in.read(reinterpret_cast<char*>(forces.data()), static_cast<std::streamsize>(forceValues * sizeof(double)));
-  if (!in) throw Error(stateFile.string() + ": the LAMMPS restart or the forces in it are cut short");
+  // The shared checkpoint header refuses another layout or another configuration's state.
+  const auto file = core::io::openCheckpointFile(stateFile, {kCheckpointFormatVersion, fingerprint});
+  const std::vector<std::uint8_t> restart = file.readBytes("/lammps_restart");
+  std::vector<double> forces = file.readDoubles("/forces", {std::nullopt});
+  const std::int64_t step = file.readIntAttribute("/", "step");
+  const double time = file.readDoubleAttribute("/", "time");
+  const bool frozenAtoms = file.readIntAttribute("/", "frozen_atoms") != 0;
 
   std::unique_ptr<LammpsEngine> engine(
-      new LammpsEngine(setup, radii, header.value("frozen_atoms", true), lastStep, comm, outputDir, std::move(stamp)));
+      new LammpsEngine(setup, radii, frozenAtoms, lastStep, comm, outputDir, std::move(stamp)));
   // LAMMPS reads a restart from a file of its own, beside the state, written once (its first rank
   // reads it and sends the atoms to the others).
   const auto restartFile = std::filesystem::path(stateFile.string() + ".lammps-restart");
-  if (engine->leader())
-    std::ofstream(restartFile, std::ios::binary).write(restart.data(), static_cast<std::streamsize>(bytes));
+  if (engine->leader()) {
+    std::ofstream(restartFile, std::ios::binary)
+        .write(reinterpret_cast<const char*>(restart.data()), static_cast<std::streamsize>(restart.size()));
+  }
   if (comm != MPI_COMM_NULL) MPI_Barrier(comm);
   engine->command("atom_modify map array");
   engine->command("read_restart " + restartFile.string());
@@ -185,13 +174,13 @@ std::unique_ptr<LammpsEngine> LammpsEngine::restore(const dem::SimulationSetup& 
     if (line.rfind("pair_", 0) == 0) continue;
     engine->command(line);
   }
-  engine->makeWalls(header.at("step").get<std::int64_t>());
+  engine->makeWalls(step);
   if (comm != MPI_COMM_NULL) MPI_Barrier(comm);
   if (engine->leader()) std::filesystem::remove(restartFile);
   engine->restoredForces_ = std::move(forces);
   engine->forcesPending_ = true;
-  engine->step_ = header.at("step").get<std::int64_t>();
-  engine->time_ = header.at("time").get<double>();
+  engine->step_ = step;
+  engine->time_ = time;
   engine->atoms_ = static_cast<std::int64_t>(lammps_get_natoms(engine->lmp_));
   return engine;
 }
@@ -346,20 +335,16 @@ void LammpsEngine::saveState(const std::filesystem::path& file, const std::strin
   setUp_ = false;
   if (!leader()) return;
   std::ifstream in(restartFile, std::ios::binary);
-  const std::string restart((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const nlohmann::json header = {{"fingerprint", fingerprint},
-                                 {"step", step_},
-                                 {"time", time_},
-                                 {"bytes", restart.size()},
-                                 {"force_values", forces.size()},
-                                 {"frozen_atoms", frozenAtoms_},
-                                 {"engine", "lammps"}};
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out << header.dump() << '\n';
-  out.write(restart.data(), static_cast<std::streamsize>(restart.size()));
-  out.write(reinterpret_cast<const char*>(forces.data()), static_cast<std::streamsize>(forces.size() * sizeof(double)));
-  out.close();
-  if (!out) throw Error(file.string() + ": could not write the LAMMPS engine state");
+  const std::vector<std::uint8_t> restart((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.eof() && !in) throw Error(restartFile.string() + ": cannot read LAMMPS's restart file");
+  // The shared checkpoint file (header, temporary, rename): LAMMPS's restart carried as bytes.
+  core::io::writeCheckpointFile(file, {kCheckpointFormatVersion, fingerprint}, [&](core::io::H5OutputFile& f) {
+    f.writeAttribute("/", "step", step_);
+    f.writeAttribute("/", "time", time_);
+    f.writeAttribute("/", "frozen_atoms", static_cast<std::int32_t>(frozenAtoms_ ? 1 : 0));
+    f.writeBytes("/lammps_restart", restart);
+    f.writeDataset("/forces", forces);
+  });
   std::filesystem::remove(restartFile);
 }
 
@@ -625,6 +610,19 @@ bool LammpsEngine::writeFramesIfUsable() {
 
 std::string LammpsEngine::throughputNote() const {
   return "on LAMMPS " + std::to_string(lammps_version(lmp_)) + " (GRANULAR)";
+}
+
+std::unique_ptr<dem::ParticleEngine> startLammpsEngine(const dem::ParticleEngineStart& start,
+                                                       dem::Particles particles) {
+  return std::make_unique<LammpsEngine>(start.setup, LammpsSpeciesRadii{start.speciesRadii}, particles, start.lastStep,
+                                        start.comm, start.outputDir, start.stamp);
+}
+
+std::unique_ptr<dem::ParticleEngine> restoreLammpsEngine(const dem::ParticleEngineStart& start,
+                                                         const std::filesystem::path& state,
+                                                         const std::string& fingerprint) {
+  return LammpsEngine::restore(start.setup, LammpsSpeciesRadii{start.speciesRadii}, start.lastStep, state, fingerprint,
+                               start.comm, start.outputDir, start.stamp);
 }
 
 }  // namespace grainbridge::lammps

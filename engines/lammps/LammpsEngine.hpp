@@ -25,6 +25,10 @@
 
 namespace grainbridge::lammps {
 
+// The layout of saveState's checkpoint (core/io/CheckpointFile): LAMMPS's restart file as bytes,
+// the last step's forces and torques, step, time and whether any atom is frozen.
+inline constexpr int kCheckpointFormatVersion = 1;
+
 class LammpsEngine final : public dem::ParticleEngine {
  public:
   // `comm`: the instance's communicator, or MPI_COMM_NULL for a serial run (LAMMPS then
@@ -98,9 +102,9 @@ class LammpsEngine final : public dem::ParticleEngine {
   // A step has run since the setup: the forces held are a step's, evaluated at half-step
   // velocities (the setup's are at the state's own).
   mutable bool halfStep_ = false;
-  mutable bool forcesPending_ = false;     // restoredForces_ still to be put back
-  mutable std::int64_t setupStep_ = 0;     // the step of LAMMPS's last setup (fix deform's origin)
-  std::int64_t lastStep_ = 0;              // the run's last step
+  mutable bool forcesPending_ = false;  // restoredForces_ still to be put back
+  mutable std::int64_t setupStep_ = 0;  // the step of LAMMPS's last setup (fix deform's origin)
+  std::int64_t lastStep_ = 0;           // the run's last step
   std::int64_t step_ = 0;
   double time_ = 0.0;
   mutable std::int64_t atoms_ = 0;

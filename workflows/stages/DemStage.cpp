@@ -16,10 +16,7 @@
 #include "core/text/NumberText.hpp"
 #include "engines/dem/DemEngine.hpp"
 #include "engines/dem/contact/Conversions.hpp"
-#include "engines/lammps/LammpsInput.hpp"
-#ifdef GRAINBRIDGE_HAVE_LAMMPS
-#include "engines/lammps/LammpsEngine.hpp"
-#endif
+#include "engines/particle_engines/ParticleEngines.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DemSeriesColumns.hpp"
@@ -123,9 +120,9 @@ std::shared_ptr<ParamSchema> lammpsTypeSchema() {
   return s;
 }
 
-lammps::LammpsSpeciesRadii lammpsRadii(const DemSetup& setup) {
-  lammps::LammpsSpeciesRadii radii;
-  for (const auto& s : setup.species) radii.radius.push_back(s.radius);
+std::vector<double> speciesRadii(const DemSetup& setup) {
+  std::vector<double> radii;
+  for (const auto& s : setup.species) radii.push_back(s.radius);
   return radii;
 }
 
@@ -150,11 +147,12 @@ DemStage::DemStage() {
       .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"))
       .add(ParamSpec::string("engine")
                .defaultValue("grainbridge")
-               .options({"grainbridge", "lammps"})
+               .options(particle_engines::particleEngineNames())
                .doc("who runs the steps: grainbridge's own engine, or LAMMPS's GRANULAR package through "
                     "liblammps on the instance's ranks (docs/dem.md lists what it refuses)"));
   addContactModelParams(schema_);
-  schema_.add(ParamSpec::quantity("shear_rate", Dimension::frequency())
+  schema_
+      .add(ParamSpec::quantity("shear_rate", Dimension::frequency())
                .defaultValue(0.0)
                .doc("Lees-Edwards simple shear rate: u_x = shear_rate (y - y_mid), needs periodic \"xy\""))
       .add(ParamSpec::object("pressure_control", pressureControlSchema())
@@ -310,25 +308,20 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
         d.add(where + "/radius", "a cylinder needs a positive radius");
     }
   }
-  const bool onLammps = p.at("engine") == "lammps";
-  if (onLammps && !lammps::lammpsAvailable()) {
-    d.add(ptr + "/engine", "this build has no engine lammps (" + lammps::lammpsBuildNote() +
-                               "): install Debian's liblammps-dev and lammps (scripts/install-deps.sh) and "
-                               "rebuild grainbridge");
-  }
-  if (onLammps && p.contains("preparation")) {
-    d.add(ptr + "/preparation", "engine lammps: the two-step preparation (held species, shaken container) is "
-                                "grainbridge's own; prepare the state with engine grainbridge and start from its "
-                                "frame (initial_frame)");
+  const auto& engine = particle_engines::particleEngine(p.at("engine").get<std::string>());
+  if (const std::string why = engine.unavailable(); !why.empty()) d.add(ptr + "/engine", why);
+  if (!engine.preparation && p.contains("preparation")) {
+    d.add(ptr + "/preparation", "engine " + engine.name +
+                                    ": the two-step preparation (held species, shaken container) is "
+                                    "grainbridge's own; prepare the state with engine grainbridge and start from "
+                                    "its frame (initial_frame)");
   }
   if (!d.empty()) return;
   const DemSetup setup = makeDemSetup(p);
-  if (onLammps) {
-    for (const auto& problem : lammps::lammpsProblems(setup.engine, lammpsRadii(setup))) {
-      // Pair coefficients come from `contact` unless pair_contacts overrides some.
-      const bool fromContact = problem.pointer == "/pair_contacts" && !p.contains("pair_contacts");
-      d.add(ptr + (fromContact ? "/contact" : problem.pointer), problem.message);
-    }
+  for (const auto& problem : engine.problems(setup.engine, speciesRadii(setup))) {
+    // Pair coefficients come from `contact` unless pair_contacts overrides some.
+    const bool fromContact = problem.pointer == "/pair_contacts" && !p.contains("pair_contacts");
+    d.add(ptr + (fromContact ? "/contact" : problem.pointer), problem.message);
   }
   // The engine's own rules (box, periodic lengths, shear, neighbour grid, a run without
   // particles), written once in dem::SimulationSetup, at the pointers of the keys the engine setup
@@ -374,28 +367,20 @@ void refuseOverlappingState(const StageContext& ctx, const dem::Simulation& sim)
 }
 
 // The initial particles of a fresh run: inserted, or read from a file (lammps_data,
-// initial_frame).
+// initial_frame); a state from a file whose particles overlap too much is refused before any
+// engine starts.
 bool stateFromFile(const json& p) { return p.contains("lammps_data") || p.contains("initial_frame"); }
-dem::Particles particlesFromFile(const StageContext& ctx, const DemSetup& setup) {
+dem::Particles initialParticles(const StageContext& ctx, const DemSetup& setup) {
   const json& p = ctx.params();
-  return p.contains("lammps_data") ? readLammpsParticles(p, setup, ctx.units()) : readFrameParticles(p, setup);
-}
-
-// grainbridge's engine of a fresh run.
-std::unique_ptr<dem::DemEngine> freshEngine(StageContext& ctx, const DemSetup& setup) {
-  const json& p = ctx.params();
-  const core::io::ArtifactStamp stamp{ctx.key()};
-  if (!stateFromFile(p)) {
-    return std::make_unique<dem::DemEngine>(setup.engine, insertSpecies(ctx, p, setup), ctx.outputDir(), stamp);
-  }
-  auto engine = std::make_unique<dem::DemEngine>(setup.engine, particlesFromFile(ctx, setup), ctx.outputDir(), stamp);
-  refuseOverlappingState(ctx, engine->simulation());
-  return engine;
+  if (!stateFromFile(p)) return insertSpecies(ctx, p, setup);
+  dem::Particles particles =
+      p.contains("lammps_data") ? readLammpsParticles(p, setup, ctx.units()) : readFrameParticles(p, setup);
+  refuseOverlappingState(ctx, dem::Simulation(setup.engine, particles));
+  return particles;
 }
 
 // A state from a file brings its own ids: the tracked ones must be among them.
-void checkTrackedIds(StageContext& ctx, const DemSetup& setup, dem::ParticleEngine& engine,
-                     const dem::DemEngine* own) {
+void checkTrackedIds(StageContext& ctx, const DemSetup& setup, dem::ParticleEngine& engine, const dem::DemEngine* own) {
   // On several ranks (engine lammps) the frame is gathered on the first.
   if (setup.trackedIds.empty() || ctx.comm().rank() != 0) return;
   auto has = [&](std::int64_t id) {
@@ -445,34 +430,6 @@ void runLoop(StageContext& ctx, const DemSetup& setup, driver::TimeLoopDriver& l
   ctx.setSummary(std::move(summary));
 }
 
-#ifdef GRAINBRIDGE_HAVE_LAMMPS
-// engine lammps: the same initial particles as grainbridge's engine would start from, handed to
-// LAMMPS on the instance's communicator.
-void runOnLammps(StageContext& ctx, const DemSetup& setup, driver::TimeLoopDriver& loop) {
-  const json& p = ctx.params();
-  const MPI_Comm comm = ctx.comm().isMpi() ? ctx.comm().raw() : MPI_COMM_NULL;
-  const core::io::ArtifactStamp stamp{ctx.key()};
-  auto engine = loop.start<lammps::LammpsEngine>(
-      [&] {
-        dem::Particles particles;
-        if (!stateFromFile(p)) {
-          particles = insertSpecies(ctx, p, setup);
-        } else {
-          particles = particlesFromFile(ctx, setup);
-          refuseOverlappingState(ctx, dem::Simulation(setup.engine, particles));
-        }
-        return std::make_unique<lammps::LammpsEngine>(setup.engine, lammpsRadii(setup), particles, runSteps(p),
-                                                      comm, ctx.outputDir(), stamp);
-      },
-      [&](const std::filesystem::path& state) {
-        return lammps::LammpsEngine::restore(setup.engine, lammpsRadii(setup), runSteps(p), state, ctx.key(), comm,
-                                             ctx.outputDir(), stamp);
-      });
-  engine->setMaterials(setup.materials);
-  runLoop(ctx, setup, loop, *engine, nullptr);
-}
-#endif
-
 }  // namespace
 
 void DemStage::run(StageContext& ctx) const {
@@ -486,26 +443,19 @@ void DemStage::run(StageContext& ctx) const {
   options.checkpointEvery = std::chrono::duration<double>(p.at("checkpoint_interval").get<double>());
   options.progress = p.at("progress");
   driver::TimeLoopDriver loop(ctx, options);
-  if (p.at("engine") == "lammps") {
-#ifdef GRAINBRIDGE_HAVE_LAMMPS
-    runOnLammps(ctx, setup, loop);
-    return;
-#else
-    throw Error("/stages/" + ctx.stage() + "/params/engine: this build has no LAMMPS (install liblammps-dev)");
-#endif
-  }
+  // The engine the params name (checked at load), on the instance's ranks.
+  const auto& kind = particle_engines::particleEngine(p.at("engine").get<std::string>());
+  const dem::ParticleEngineStart start{setup.engine,    speciesRadii(setup),
+                                       runSteps(p),     ctx.comm().isMpi() ? ctx.comm().raw() : MPI_COMM_NULL,
+                                       ctx.outputDir(), core::io::ArtifactStamp{ctx.key()}};
+  auto engine = loop.start<dem::ParticleEngine>(
+      [&] { return kind.fresh(start, initialParticles(ctx, setup)); },
+      [&](const std::filesystem::path& state) { return kind.restore(start, state, ctx.key()); });
   // Every frame carries the materials its readers need (core/data/Materials), fresh or resumed.
-  auto withMaterials = [&](std::unique_ptr<dem::DemEngine> engine) {
-    engine->setMaterials(setup.materials);
-    return engine;
-  };
-  auto engine = loop.start<dem::DemEngine>(
-      [&] { return withMaterials(freshEngine(ctx, setup)); },
-      [&](const std::filesystem::path& state) {
-        return withMaterials(dem::DemEngine::restore(setup.engine, state, ctx.key(), ctx.outputDir(),
-                                                     core::io::ArtifactStamp{ctx.key()}));
-      });
-  runLoop(ctx, setup, loop, *engine, engine.get());
+  engine->setMaterials(setup.materials);
+  // grainbridge's own engine offers more than a ParticleEngine: the preparation phases and the
+  // lookup of tracked ids run on it.
+  runLoop(ctx, setup, loop, *engine, dynamic_cast<dem::DemEngine*>(engine.get()));
 }
 
 // Frames at t = 0 (the initial state, after any preparation) and, with frames > 0, evenly up to

@@ -3,6 +3,7 @@
 // at random without overlap and evolve under gravity, contacts and walls; particle + contact
 // frames (HDF5 + XDMF) and a per-step series (energies, contacts, coordination, whole-domain
 // stress, wall forces, species centres of mass) are written for the extraction layer.
+#include "engines/particle_engines/ParticleEngines.hpp"
 #include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -41,7 +42,7 @@ class DemStage final : public StageType {
   [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override;
   // LAMMPS divides the box over the instance's ranks; grainbridge's engine runs on one.
   [[nodiscard]] bool runsOnSeveralRanks(const nlohmann::json& resolved) const override {
-    return resolved.at("engine") == "lammps";
+    return particle_engines::particleEngine(resolved.at("engine").get<std::string>()).severalRanks;
   }
 
  private:
