@@ -13,8 +13,12 @@
 // (`gidaspow`): n = -2.65, C_D,Newton = 0.44. Neither law is continuous: beta jumps at
 // eps_g = 0.8 (Ergun against Wen-Yu, by construction) and C_D at Re = 1000 (0.4383 from the
 // Schiller-Naumann branch against 0.43 or 0.44). A blended law would be another named variant.
-#include <string_view>
+//
+// ErgunWenYu is the shared code; the two named laws of GasSolidsDrag.hpp's list,
+// ErgunWenYuAsPrinted and Gidaspow, are it with their own name, line of doc and defaults.
+#include <array>
 
+#include "engines/closures/DragLawTraits.hpp"
 #include "engines/closures/DragState.hpp"
 
 namespace grainbridge::closures {
@@ -33,12 +37,40 @@ struct ErgunWenYu {
   static constexpr double kErgunVoidFraction = 0.8;
   static constexpr double kNewtonReynolds = 1000.0;
 
-  [[nodiscard]] static constexpr std::string_view name() { return "ergun_wen_yu"; }
+  // Shared by both named forms (their catalog entries cite the same sources).
+  static constexpr const char* equations = "Eqs. 7.29-7.31, 7.33-7.34";
+  static constexpr const char* source =
+      "Ergun 1952, Wen and Yu 1966, Tsuji et al. 1993; Gidaspow 1994 (MFIX DRAG_TYPE GIDASPOW)";
+  // Neither is a stage key: the stages run each form with its published constants.
+  static constexpr std::array<DragParameter<Params>, 2> parameters{{
+      {"voidage_exponent", &Params::voidageExponent, false, "n of eps_g^n in the Wen-Yu branch of Eq. 7.30"},
+      {"newton_drag_coefficient", &Params::newtonDragCoefficient, true, "C_D above Re 1000 (Eq. 7.31)"},
+  }};
+
   Params params;
   // Validates the state (validate(DragState)).
   [[nodiscard]] DragCoefficients evaluate(const DragState& state) const;
   // C_D of Eq. 7.31 at Reynolds number `re` (> 0).
   [[nodiscard]] double dragCoefficient(double re) const;
+};
+
+// `ergun_wen_yu`: Eqs. 7.30-7.31 as printed (n -2.7, C_D,Newton 0.43).
+struct ErgunWenYuAsPrinted : ErgunWenYu {
+  static constexpr const char* name = "ergun_wen_yu";
+  static constexpr const char* doc = "Ergun / Wen-Yu drag as printed (-2.7, C_D 0.43), the TF-DEM default";
+  // Eq. 7.30 at eps_g 0.8, Ergun (189.6 kg/(m^3 s)) against Wen-Yu (100.8) at the reference
+  // state (python3): the law jumps by construction, as printed.
+  static constexpr std::array<DragSwitch, 1> switches{{{kErgunVoidFraction, -0.46815755}}};
+  ErgunWenYuAsPrinted() : ErgunWenYu(asPrinted()) {}
+};
+
+// `gidaspow`: Gidaspow's published form (n -2.65, C_D,Newton 0.44).
+struct Gidaspow : ErgunWenYu {
+  static constexpr const char* name = "gidaspow";
+  static constexpr const char* doc = "Ergun / Wen-Yu drag in Gidaspow's published form (-2.65, C_D 0.44)";
+  // As ergun_wen_yu's, the Wen-Yu side 0.8^0.05 lower (99.72 against 189.6, python3).
+  static constexpr std::array<DragSwitch, 1> switches{{{kErgunVoidFraction, -0.47405844}}};
+  Gidaspow() : ErgunWenYu(gidaspow()) {}
 };
 
 }  // namespace grainbridge::closures

@@ -4,15 +4,10 @@
 
 namespace grainbridge::closures {
 
-std::vector<std::string> GasSolidsDrag::names() { return {"syamlal_obrien", "ergun_wen_yu", "gidaspow"}; }
-
-GasSolidsDrag GasSolidsDrag::byName(std::string_view name) {
-  if (name == "syamlal_obrien") return {std::string(name), SyamlalOBrien{}};
-  if (name == "ergun_wen_yu") return {std::string(name), ErgunWenYu::asPrinted()};
-  if (name == "gidaspow") return {std::string(name), ErgunWenYu::gidaspow()};
-  std::string known;
-  for (const auto& n : names()) known += (known.empty() ? "" : ", ") + n;
-  throw Error("unknown gas-solids drag law \"" + std::string(name) + "\" (known: " + known + ")");
+void throwUnknownDragLaw(std::string_view name, const std::vector<std::string>& known) {
+  std::string list;
+  for (const auto& n : known) list += (list.empty() ? "" : ", ") + n;
+  throw Error("unknown gas-solids drag law \"" + std::string(name) + "\" (known: " + list + ")");
 }
 
 }  // namespace grainbridge::closures

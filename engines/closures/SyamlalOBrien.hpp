@@ -14,9 +14,10 @@
 // Written as beta = 3 eps_s eps_g mu_g (0.63 sqrt(Re) + 4.8 sqrt(V_r))^2 / (4 V_r^2 d^2), the
 // same expression multiplied out, which stays finite at zero slip (Re = 0, V_r = A): the Stokes
 // limit 3 x 23.04 eps_s eps_g mu_g / (4 A d^2).
+#include <array>
 #include <string>
-#include <string_view>
 
+#include "engines/closures/DragLawTraits.hpp"
 #include "engines/closures/DragState.hpp"
 
 namespace grainbridge::closures {
@@ -34,7 +35,23 @@ struct SyamlalOBrien {
   };
   static constexpr double kContinuityTolerance = 0.01;
 
-  [[nodiscard]] static constexpr std::string_view name() { return "syamlal_obrien"; }
+  // What the catalog, the stages and the generic drag tests read (GasSolidsDrag.hpp's list).
+  static constexpr const char* name = "syamlal_obrien";
+  static constexpr const char* doc = "gas-solids drag of Syamlal and O'Brien, the multi-fluid default";
+  static constexpr const char* equations = "Eqs. 3.10-3.16";
+  static constexpr const char* source = "Syamlal and O'Brien 1987; MFIX DRAG_TYPE SYAM_OBRIEN";
+  // The stages have always called C and D drag_c and drag_d.
+  static constexpr std::array<DragParameter<Params>, 2> parameters{{
+      {"c", &Params::c, true, "C of Eq. 3.13 (eps_g <= 0.85; Table 4.3)", "drag_c"},
+      {"d", &Params::d, true, "D of Eq. 3.13 (eps_g > 0.85; Table 4.3); C and D must satisfy Eq. 3.14 within 1 %",
+       "drag_d"},
+  }};
+  // Eq. 3.13 at eps_g 0.85: the defaults miss Eq. 3.14 by -0.05 %, so beta steps down by
+  // 0.078 % there (python3); with Eq. 3.14 exact it is continuous.
+  static constexpr std::array<DragSwitch, 1> switches{{{0.85, -7.7757e-4}}};
+  // Eq. 3.14, reported against D: the message names the D that satisfies it for this C.
+  [[nodiscard]] static DragParamsProblem check(const Params& p) { return {"d", p.continuityProblem()}; }
+
   Params params;
   // Validates the state (validate(DragState)).
   [[nodiscard]] DragCoefficients evaluate(const DragState& state) const;

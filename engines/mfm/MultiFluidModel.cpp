@@ -164,6 +164,11 @@ void MultiFluidModel::evaluateSolidsDrag(const fluid::FlowState& state, fluid::F
 }
 
 void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowProperties& p) const {
+  params_.drag.visit([&](const auto& drag) { evaluateCells(drag, state, p); });
+}
+
+template <class Drag>
+void MultiFluidModel::evaluateCells(const Drag& drag, const fluid::FlowState& state, fluid::FlowProperties& p) const {
   const fluid::StaggeredGrid& grid = state.grid();
   const fluid::PhaseFields& gas = state.phases[0];
   for (std::size_t m = 1; m < state.phases.size(); ++m) p.phases[m].partialSlipWalls = params_.wall.has_value();
@@ -184,7 +189,7 @@ void MultiFluidModel::evaluate(const fluid::FlowState& state, fluid::FlowPropert
           const double slip = slipSpeed(gas, state.phases[m], c);
           const closures::DragState ds{epsG, closureSolidFraction(state, m, c), solids.diameter,
                                        rhoG,  params_.gas.viscosity,            slip};
-          p.dragCoefficient[m][c] = params_.drag.evaluate(ds).beta;
+          p.dragCoefficient[m][c] = drag.evaluate(ds).beta;
           if (params_.granularEnergy == GranularEnergyForm::Algebraic) {
             evaluateAlgebraic(state, p, m, c, epsG);
           } else {

@@ -159,6 +159,10 @@ class MultiFluidModel final : public fluid::FlowModel {
                           closures::KineticState& ks) const;
   // F_sml of every solids pair at cell c (Eq. 3.18, g0_lm of the mixture).
   void evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& properties, std::size_t c) const;
+  // evaluate()'s sweep over the cells with the drag law chosen once (params_.drag visited
+  // outside the loop), so the loop calls the law directly.
+  template <class Drag>
+  void evaluateCells(const Drag& drag, const fluid::FlowState& state, fluid::FlowProperties& p) const;
   [[nodiscard]] KineticCell kineticCell(const fluid::FlowState& state, const fluid::FlowProperties& properties,
                                         std::size_t m, std::size_t c) const;
   [[nodiscard]] closures::JohnsonJackson wallFor(std::size_t m) const;

@@ -15,9 +15,13 @@ std::vector<Vec3> cellDragPerSolidsVolume(const fluid::FlowState& state, const P
   return drag;
 }
 
-void setParticleForces(dem::Particles& p, const fluid::FlowState& state, const ParticleDeposit& deposit,
-                       const std::vector<Vec3>& cellDrag, const closures::GasSolidsDrag& law,
-                       const ParticleForceSettings& settings) {
+namespace {
+
+// setParticleForces for the law chosen once per call: Eq. 7.29 is evaluated per particle.
+template <class Law>
+void setParticleForcesWith(const Law& law, dem::Particles& p, const fluid::FlowState& state,
+                           const ParticleDeposit& deposit, const std::vector<Vec3>& cellDrag,
+                           const ParticleForceSettings& settings) {
   const fluid::StaggeredGrid& grid = state.grid();
   const fluid::PhaseFields& gas = state.phases[0];
   // Per cell with particles, once: the pressure gradient and the gas velocity at the centre.
@@ -67,6 +71,14 @@ void setParticleForces(dem::Particles& p, const fluid::FlowState& state, const P
     p.couplingB[i] = epsG * law.evaluate(s).particle;  // eps_g f_d of Eq. 7.28
     p.couplingU[i] = u;
   }
+}
+
+}  // namespace
+
+void setParticleForces(dem::Particles& p, const fluid::FlowState& state, const ParticleDeposit& deposit,
+                       const std::vector<Vec3>& cellDrag, const closures::GasSolidsDrag& law,
+                       const ParticleForceSettings& settings) {
+  law.visit([&](const auto& l) { setParticleForcesWith(l, p, state, deposit, cellDrag, settings); });
 }
 
 }  // namespace grainbridge::tfdem

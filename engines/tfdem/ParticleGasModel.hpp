@@ -39,8 +39,14 @@ class ParticleGasModel final : public fluid::FlowModel {
 
   // Eq. 7.34's beta in cell c at the state's gas velocity [kg/(m^3 s)]; 0 without particles.
   [[nodiscard]] double cellBeta(const fluid::FlowState& state, std::size_t c) const;
+  // cellBeta of every interior cell, 0 in the padding: one sweep, the law chosen once.
+  [[nodiscard]] std::vector<double> cellBetas(const fluid::FlowState& state) const;
 
  private:
+  // evaluate()'s sweep with the drag law chosen once, outside the loop over cells.
+  template <class Law>
+  void evaluateWith(const Law& law, const fluid::FlowState& state, fluid::FlowProperties& properties) const;
+
   Gas gas_;
   closures::GasSolidsDrag law_;
   GasReaction reaction_;

@@ -156,10 +156,8 @@ void TfdemEngine::advance(bool observed) {
   const bool summed = setup_.gasReaction == GasReaction::Summed;
   const bool cellAverage = setup_.forces.transfer == DragTransfer::CellAverage;
   const double V = grid_.cellVolume();
-  std::vector<double> beta(grid_.paddedCount(), 0.0);
-  for (std::size_t c = 0; c < grid_.paddedCount(); ++c) {
-    if (grid_.interior(c) && (!summed || cellAverage)) beta[c] = converged.cellBeta(flow_, c);
-  }
+  const std::vector<double> beta =
+      !summed || cellAverage ? converged.cellBetas(flow_) : std::vector<double>(grid_.paddedCount(), 0.0);
   const std::vector<Vec3> cellDrag = cellDragPerSolidsVolume(flow_, deposit_, beta);
   for (std::size_t c = 0; c < grid_.paddedCount(); ++c) {
     // The gas's exchange is the particles' drag with the sign turned: beta (v_s - v_g) V, or the

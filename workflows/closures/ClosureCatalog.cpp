@@ -4,13 +4,13 @@
 
 #include "core/Error.hpp"
 #include "engines/closures/EffectiveRestitution.hpp"
-#include "engines/closures/GasSolidsDrag.hpp"
 #include "engines/closures/GranularEnergyGasTerms.hpp"
 #include "engines/closures/JohnsonJackson.hpp"
 #include "engines/closures/KineticModel.hpp"
 #include "engines/closures/PlasticRegime.hpp"
 #include "engines/closures/RadialDistribution.hpp"
 #include "engines/closures/SolidsSolidsDrag.hpp"
+#include "workflows/closures/DragLawCatalog.hpp"
 
 namespace grainbridge::workflows::closures {
 
@@ -29,30 +29,6 @@ std::shared_ptr<ParamSchema> schema() { return std::make_shared<ParamSchema>(); 
 
 ParamSpec fraction(const std::string& name, const std::string& doc) {
   return std::move(ParamSpec::number(name).required().min(0.0).max(1.0).doc(doc));
-}
-
-// The gas-solids drag state, shared by the three drag laws.
-std::shared_ptr<ParamSchema> dragInputs() {
-  auto s = schema();
-  s->add(fraction("void_fraction", "eps_g"))
-      .add(fraction("solid_fraction", "eps_s of this solids phase"))
-      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("particle diameter d_p"))
-      .add(ParamSpec::quantity("gas_density", Dimension::density()).defaultValue("1.2 kg/m3").positive().doc("rho_g"))
-      .add(ParamSpec::quantity("gas_viscosity", Dimension::viscosity())
-               .defaultValue("1.8e-5 Pa s")
-               .positive()
-               .doc("mu_g"))
-      .add(ParamSpec::quantity("slip", Dimension::velocity()).required().min(0.0).doc("|v_g - v_s|"));
-  return s;
-}
-
-gc::DragState dragState(const json& in) {
-  return {in.at("void_fraction"), in.at("solid_fraction"), in.at("diameter"),
-          in.at("gas_density"),   in.at("gas_viscosity"),  in.at("slip")};
-}
-
-std::vector<ClosureOutput> dragOutputs(const gc::DragCoefficients& c) {
-  return {{"beta", "kg/(m3 s)", c.beta}, {"particle_drag_coefficient", "kg/s", c.particle}};
 }
 
 std::shared_ptr<ParamSchema> kineticInputs(bool withGasDrag) {
@@ -108,48 +84,8 @@ gc::PlasticRegime::Params plasticParams(const json& p) {
 std::vector<ClosureEntry> makeCatalog() {
   std::vector<ClosureEntry> out;
 
-  {
-    auto p = schema();
-    p->add(ParamSpec::number("c")
-               .defaultValue(gc::SyamlalOBrien::Params{}.c)
-               .positive()
-               .doc("C of Eq. 3.13 (eps_g <= 0.85; Table 4.3)"))
-        .add(ParamSpec::number("d")
-                 .defaultValue(gc::SyamlalOBrien::Params{}.d)
-                 .positive()
-                 .doc("D of Eq. 3.13 (eps_g > 0.85; Table 4.3); C and D must "
-                      "satisfy Eq. 3.14 within 1 %"));
-    out.push_back({"syamlal_obrien", "gas-solids drag of Syamlal and O'Brien, the multi-fluid default",
-                   "Eqs. 3.10-3.16", "Syamlal and O'Brien 1987; MFIX DRAG_TYPE SYAM_OBRIEN", p, dragInputs(),
-                   [](const json& params, const json& in) {
-                     const gc::SyamlalOBrien law{{params.at("c"), params.at("d")}};
-                     return dragOutputs(law.evaluate(dragState(in)));
-                   },
-                   [](const json& params) {
-                     return gc::SyamlalOBrien::Params{params.at("c"), params.at("d")}.continuityProblem();
-                   }});
-  }
-  for (const auto& [name, law, summary] : {std::tuple{"ergun_wen_yu", gc::ErgunWenYu::asPrinted(),
-                                                      "Ergun / Wen-Yu drag as printed (-2.7, C_D 0.43), "
-                                                      "the TF-DEM default"},
-                                           std::tuple{"gidaspow", gc::ErgunWenYu::gidaspow(),
-                                                      "Ergun / Wen-Yu drag in Gidaspow's published form "
-                                                      "(-2.65, C_D 0.44)"}}) {
-    auto p = schema();
-    p->add(ParamSpec::number("voidage_exponent")
-               .defaultValue(law.params.voidageExponent)
-               .doc("n of eps_g^n in the Wen-Yu branch of Eq. 7.30"))
-        .add(ParamSpec::number("newton_drag_coefficient")
-                 .defaultValue(law.params.newtonDragCoefficient)
-                 .positive()
-                 .doc("C_D above Re 1000 (Eq. 7.31)"));
-    out.push_back({name, summary, "Eqs. 7.29-7.31, 7.33-7.34",
-                   "Ergun 1952, Wen and Yu 1966, Tsuji et al. 1993; Gidaspow 1994 (MFIX DRAG_TYPE GIDASPOW)", p,
-                   dragInputs(), [](const json& params, const json& in) {
-                     const gc::ErgunWenYu l{{params.at("voidage_exponent"), params.at("newton_drag_coefficient")}};
-                     return dragOutputs(l.evaluate(dragState(in)));
-                   }});
-  }
+  // The drag laws, from their structs (engines/closures/GasSolidsDrag.hpp's list).
+  for (auto& entry : dragLawEntries(gc::DragLaws{})) out.push_back(std::move(entry));
   {
     auto p = schema();
     p->add(ParamSpec::number("friction_coefficient")
@@ -344,6 +280,30 @@ std::vector<ClosureEntry> makeCatalog() {
 }
 
 }  // namespace
+
+// The gas-solids drag state, shared by every drag law (DragLawCatalog.hpp).
+std::shared_ptr<ParamSchema> dragInputs() {
+  auto s = schema();
+  s->add(fraction("void_fraction", "eps_g"))
+      .add(fraction("solid_fraction", "eps_s of this solids phase"))
+      .add(ParamSpec::quantity("diameter", Dimension::lengthDim()).required().positive().doc("particle diameter d_p"))
+      .add(ParamSpec::quantity("gas_density", Dimension::density()).defaultValue("1.2 kg/m3").positive().doc("rho_g"))
+      .add(ParamSpec::quantity("gas_viscosity", Dimension::viscosity())
+               .defaultValue("1.8e-5 Pa s")
+               .positive()
+               .doc("mu_g"))
+      .add(ParamSpec::quantity("slip", Dimension::velocity()).required().min(0.0).doc("|v_g - v_s|"));
+  return s;
+}
+
+gc::DragState dragState(const json& in) {
+  return {in.at("void_fraction"), in.at("solid_fraction"), in.at("diameter"),
+          in.at("gas_density"),   in.at("gas_viscosity"),  in.at("slip")};
+}
+
+std::vector<ClosureOutput> dragOutputs(const gc::DragCoefficients& c) {
+  return {{"beta", "kg/(m3 s)", c.beta}, {"particle_drag_coefficient", "kg/s", c.particle}};
+}
 
 const std::vector<ClosureEntry>& closureCatalog() {
   static const std::vector<ClosureEntry> catalog = makeCatalog();

@@ -11,13 +11,13 @@
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/closures/InertialRheology.hpp"
-#include "engines/closures/SyamlalOBrien.hpp"
 #include "engines/closures/TabulatedClosure.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "engines/fluid/FluidSetup.hpp"
 #include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/SolidsPairs.hpp"
 #include "workflows/driver/Phase.hpp"
+#include "workflows/stages/DragSetup.hpp"
 #include "workflows/stages/OutputSchedule.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -176,11 +176,7 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   mfm::SolidsPairsResult pairs = mfm::solidsPairsFor(model.solids, requests);
   addProblems(s, pairs.problems);
   model.solidsPairs = std::move(pairs.pairs);
-  model.drag = closures::GasSolidsDrag::byName(p.at("drag").get<std::string>());
-  if (auto* so = std::get_if<closures::SyamlalOBrien>(&model.drag.law)) {
-    so->params = {p.at("drag_c").get<double>(), p.at("drag_d").get<double>()};
-    if (const auto why = so->params.continuityProblem(); !why.empty()) problem("/drag_d", why);
-  }
+  model.drag = dragFromParams(p, problem);
   const std::string kineticModel = p.at("kinetic_model");
   model.kinetic.params.viscosityForm = kineticModel == "syamlal_algebraic_mfix" ? closures::SyamlalViscosityForm::Mfix
                                                                                : closures::SyamlalViscosityForm::Printed;

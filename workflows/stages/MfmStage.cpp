@@ -21,6 +21,7 @@
 #include "workflows/report/BedTables.hpp"
 #include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/ClosureSamples.hpp"
+#include "workflows/stages/DragSchema.hpp"
 #include "workflows/stages/FluidSchema.hpp"
 #include "workflows/stages/MfmSeriesColumns.hpp"
 #include "workflows/stages/MfmSetup.hpp"
@@ -110,7 +111,8 @@ std::shared_ptr<const ParamSchema> regionSchema() {
 
 MfmStage::MfmStage() {
   addGasGridParams(schema_);
-  schema_.add(ParamSpec::string("gas_model")
+  schema_
+      .add(ParamSpec::string("gas_model")
                .defaultValue("incompressible")
                .options({"incompressible", "ideal"})
                .doc("incompressible (gas_density), or an ideal gas rho_g = P M / (R T) with absolute pressures"))
@@ -123,15 +125,11 @@ MfmStage::MfmStage() {
       .add(ParamSpec::objectList("solids", solidsSchema()).required().doc("solids phases"))
       .add(ParamSpec::objectList("solids_pairs", solidsPairSchema())
                .doc("solids-solids drag (Eq. 3.18) of pairs of solids phases; a pair not listed has C_f 0 and "
-                    "e_lm the mean of the two restitutions"))
-      .add(ParamSpec::string("drag")
-               .defaultValue("syamlal_obrien")
-               .options({"syamlal_obrien", "ergun_wen_yu", "gidaspow"})
-               .doc("gas-solids drag law (Eqs. 3.10-3.16 by default)"))
-      // A closure law's parameters are declared once, in the closure catalog (`grainbridge
-      // closures`), and included here under the keys configs write.
-      .add(catalog::closureParameter("syamlal_obrien", "c").renamed("drag_c"))
-      .add(catalog::closureParameter("syamlal_obrien", "d").renamed("drag_d"))
+                    "e_lm the mean of the two restitutions"));
+  // The drag law and its parameters' keys (drag_c, drag_d), from the drag law list: each law
+  // declares its parameters once, as the closure catalog lists them.
+  addDragParams(schema_, grainbridge::closures::SyamlalOBrien::name, "gas-solids drag law (Eqs. 3.10-3.16 by default)");
+  schema_
       .add(ParamSpec::string("kinetic_model")
                .defaultValue("lun1984")
                .options({"lun1984", "lun1984_mfix", "syamlal_algebraic", "syamlal_algebraic_mfix"})

@@ -9,6 +9,7 @@
 #include "engines/fluid/FluidSetup.hpp"
 #include "workflows/driver/Phase.hpp"
 #include "workflows/stages/DemInitialState.hpp"
+#include "workflows/stages/DragSetup.hpp"
 #include "workflows/stages/FluidSchema.hpp"
 #include "workflows/stages/OutputSchedule.hpp"
 #include "workflows/stages/ParticleSchema.hpp"
@@ -123,11 +124,7 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   e.grid = fluidSetup.geometry();
   if (problems.size() == before) e.boundaries = fluidSetup.patches(1);
   e.gas = {p.at("gas_density").get<double>(), p.at("gas_viscosity").get<double>()};
-  e.drag = closures::GasSolidsDrag::byName(p.at("drag").get<std::string>());
-  if (auto* so = std::get_if<closures::SyamlalOBrien>(&e.drag.law)) {
-    so->params = {p.at("drag_c").get<double>(), p.at("drag_d").get<double>()};
-    if (const auto why = so->params.continuityProblem(); !why.empty()) problems.add("/drag_d", why);
-  }
+  e.drag = dragFromParams(p, [&problems](const std::string& key, const std::string& why) { problems.add(key, why); });
   e.deposition = choice(p, "deposition", {std::pair{"centre_cell", tfdem::VolumeDeposition::CentreCell},
                                           std::pair{"exact_overlap", tfdem::VolumeDeposition::ExactOverlap}});
   e.gasReaction = choice(p, "gas_reaction", {std::pair{"cell_average", tfdem::GasReaction::CellAverage},

@@ -13,10 +13,10 @@
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/tfdem/ParticleBedMeasures.hpp"
-#include "workflows/closures/ClosureCatalog.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/DemInitialState.hpp"
+#include "workflows/stages/DragSchema.hpp"
 #include "workflows/stages/FluidSchema.hpp"
 #include "workflows/stages/ParticleSchema.hpp"
 #include "workflows/stages/SummaryAverage.hpp"
@@ -27,7 +27,6 @@ namespace grainbridge::workflows::stages {
 
 using core::units::Dimension;
 using nlohmann::json;
-namespace catalog = workflows::closures;
 using params::ParamSpec;
 
 namespace {
@@ -43,16 +42,13 @@ TfdemStage::TfdemStage() {
   // A 2D bed (cells along z 1) is one particle diameter deep, its gravity in x-y.
   addGasGridParams(schema_);
   schema_.add(ParamSpec::quantity("gas_viscosity", Dimension::viscosity())
-               .defaultValue("1.8e-5 Pa s")
-               .positive()
-               .doc("gas viscosity mu_g (air)"))
-      .add(ParamSpec::string("drag")
-               .defaultValue("ergun_wen_yu")
-               .options({"ergun_wen_yu", "gidaspow", "syamlal_obrien"})
-               .doc("gas-particle drag: Eqs. 7.30-7.31 as printed, Gidaspow's form of them, or the multi-fluid "
-                    "default Syamlal-O'Brien (Eqs. 3.10-3.16; to compare with a multi-fluid run at equal drag)"))
-      .add(catalog::closureParameter("syamlal_obrien", "c").renamed("drag_c"))
-      .add(catalog::closureParameter("syamlal_obrien", "d").renamed("drag_d"))
+                  .defaultValue("1.8e-5 Pa s")
+                  .positive()
+                  .doc("gas viscosity mu_g (air)"));
+  addDragParams(schema_, grainbridge::closures::ErgunWenYuAsPrinted::name,
+                "gas-particle drag: Eqs. 7.30-7.31 as printed, Gidaspow's form of them, or the multi-fluid "
+                "default Syamlal-O'Brien (Eqs. 3.10-3.16; to compare with a multi-fluid run at equal drag)");
+  schema_
       .add(ParamSpec::objectList("boundaries", boundarySchema())
                .required()
                .doc("gas boundary patches; sides no patch covers are no-slip walls (the particles meet plane "
@@ -67,7 +63,10 @@ TfdemStage::TfdemStage() {
                .positive()
                .doc("gas step: a whole number of DEM steps dt"))
       .add(ParamSpec::number("courant").defaultValue(0.5).positive().doc("largest inflow |v| fluid_dt / dx"))
-      .add(ParamSpec::number("tolerance").defaultValue(1e-4).positive().doc("normalised residuals of a converged gas step"))
+      .add(ParamSpec::number("tolerance")
+               .defaultValue(1e-4)
+               .positive()
+               .doc("normalised residuals of a converged gas step"))
       .add(ParamSpec::integer("max_iterations")
                .defaultValue(50)
                .min(1)

@@ -8,6 +8,7 @@ grainbridge_add_test(test_closures
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/KineticModelTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/TabulatedClosureTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/GasSolidsDragTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/DragLawsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/RadialDistributionVariantsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/EffectiveRestitutionTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/SolidsSolidsDragTest.cpp
