@@ -84,7 +84,10 @@ std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, double 
     if (!(lengths[static_cast<int>(a)] > 0.0)) add("/lengths/" + std::to_string(a), "must be positive");
     gridUsable = gridUsable && cells[a] >= 1 && lengths[static_cast<int>(a)] > 0.0;
   }
-  for (auto& problem : timeStep.problems()) out.push_back(std::move(problem));
+  for (auto& problem : timeStep.problems()) {
+    if (!fixedStepKey.empty()) problem.pointer = "/" + fixedStepKey;  // dt, dt_min and dt_max are one key
+    out.push_back(std::move(problem));
+  }
   if (!gridUsable) return out;
 
   // Patches: sides, jets on cell faces, inflow states, a fixed step's CFL limit.
@@ -179,7 +182,9 @@ std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, double 
           add(at + (m == 0 ? "/gas_inflow" : "/solids_inflow"),
               "with the fixed time step " + core::humanNumber(timeStep.maximum) + " s the inflow crosses " +
                   core::humanNumber(cfl) + " cells per step, above the Courant limit " +
-                  core::humanNumber(timeStep.courant) + ": lower dt or let it adapt (dt_min < dt_max)");
+                  core::humanNumber(timeStep.courant) + ": " +
+                  (fixedStepKey.empty() ? std::string("lower dt or let it adapt (dt_min < dt_max)")
+                                        : "lower " + fixedStepKey));
         }
       }
     }

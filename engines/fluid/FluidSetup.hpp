@@ -44,6 +44,10 @@ struct FluidSetup {
   Vec3 lengths = Vec3::Ones();         // the domain from the origin [m]; z of a 2D grid: its depth
   std::vector<PatchSetup> boundaries;  // sides no patch covers are no-slip walls
   TimeStepLimits timeStep;             // dt, dt_min, dt_max, courant
+  // The key of an engine whose gas step is fixed by construction (tfdem's fluid_dt): the time
+  // step's problems are reported there, and the advice is to lower it. Empty: the step is set by
+  // dt, dt_min and dt_max and may adapt (mfm).
+  std::string fixedStepKey;
 
   [[nodiscard]] bool twoD() const { return cells[2] == 1; }
   // Cells of lengths / cells from the origin.

@@ -251,12 +251,16 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
               "more particles of species \"" + s.at("name").get<std::string>() + "\" placed than its count");
     }
   }
-  checkContactKeys(p.at("contact"), p, ptr + "/contact", d);
+  // The contact checks list SetupProblems (the one problem type); each is reported where it is found.
+  auto report = [&d](std::vector<core::engine::SetupProblem> problems) {
+    for (auto& problem : problems) d.add(std::move(problem.pointer), std::move(problem.message));
+  };
+  report(checkContactKeys(p.at("contact"), p, ptr + "/contact"));
   if (p.contains("pair_contacts")) {
     for (std::size_t k = 0; k < p["pair_contacts"].size(); ++k) {
       const json& pc = p["pair_contacts"][k];
       const std::string where = ptr + "/pair_contacts/" + std::to_string(k);
-      checkContactKeys(pc, p, where, d);
+      report(checkContactKeys(pc, p, where));
       for (const char* f : {"species", "with"}) {
         if (names.count(pc.at(f).get<std::string>()) == 0)
           d.add(where + "/" + f, "no species named \"" + pc.at(f).get<std::string>() + "\"");
@@ -300,7 +304,7 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     for (std::size_t w = 0; w < p["walls"].size(); ++w) {
       const json& wj = p["walls"][w];
       const std::string where = ptr + "/walls/" + std::to_string(w);
-      checkContactKeys(wj, p, where, d);
+      report(checkContactKeys(wj, p, where));
       const auto& dir = wj.at("direction");
       if (std::hypot(dir[0].get<double>(), dir[1].get<double>(), dir[2].get<double>()) == 0.0)
         d.add(where + "/direction", "direction must not be zero");
@@ -336,7 +340,7 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   // before it ran: refused here from their volume.
   if (const auto problem = randomInsertionProblem(p, setup))
     d.add(ptr + problem->pointer, problem->message + "; or use insertion \"fcc_lattice\" for a denser start");
-  checkContactTimes(setup, p.at("dt"), ptr, d);
+  report(checkContactTimes(setup, p.at("dt"), ptr));
 }
 
 namespace {

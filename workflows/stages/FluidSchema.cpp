@@ -85,8 +85,7 @@ std::shared_ptr<const ParamSchema> tapSchema() {
   return s;
 }
 
-std::vector<PressureTap> readTaps(const json& p, double height,
-                                  std::vector<std::pair<std::string, std::string>>& problems) {
+std::vector<PressureTap> readTaps(const json& p, double height, std::vector<core::engine::SetupProblem>& problems) {
   std::vector<PressureTap> out;
   const json taps = p.value("pressure_taps", json::array());  // optional lists: absent when not given
   for (std::size_t k = 0; k < taps.size(); ++k) {

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/engine/SetupProblem.hpp"
 #include "engines/fluid/StencilSystem.hpp"
 #include "workflows/params/ParamSchema.hpp"
 
@@ -38,6 +39,6 @@ struct PressureTap {
 // The params' pressure_taps (none when absent); a pair not 0 <= low < high <= `height` (the
 // domain's height) is a problem (pointer below /params, message).
 std::vector<PressureTap> readTaps(const nlohmann::json& params, double height,
-                                  std::vector<std::pair<std::string, std::string>>& problems);
+                                  std::vector<core::engine::SetupProblem>& problems);
 
 }  // namespace grainbridge::workflows::stages

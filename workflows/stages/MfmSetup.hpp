@@ -6,11 +6,11 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "core/LoadedClosureTable.hpp"
 #include "core/LoadedRheology.hpp"
+#include "core/engine/SetupProblem.hpp"
 #include "engines/mfm/InitialRegions.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/stages/FluidSchema.hpp"
@@ -33,11 +33,11 @@ struct MfmSetup {
   double averageFrom = 0.0;
   double averageTo = 0.0;  // average_to, default the duration
   std::optional<Segregation> segregation;
-  // (pointer below /params, message): empty when the run may start.
-  std::vector<std::pair<std::string, std::string>> problems;
-  // (pointer below /params, message): what may run but is likely not what was meant; the
-  // config check logs them as warnings.
-  std::vector<std::pair<std::string, std::string>> warnings;
+  // Pointers below /params: empty when the run may start.
+  std::vector<core::engine::SetupProblem> problems;
+  // What may run but is likely not what was meant (pointers below /params); the config check
+  // logs them as warnings.
+  std::vector<core::engine::SetupProblem> warnings;
 };
 
 // Assumes individually valid parameters (the schema's checks passed). `closureTables` are the

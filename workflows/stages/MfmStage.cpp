@@ -360,8 +360,8 @@ void MfmStage::run(StageContext& ctx) const {
   const std::vector<core::LoadedClosureTable> tables = sampleClosureTables(p, ctx.closureTables());
   const MfmSetup setup = makeMfmSetup(p, &tables, &ctx.rheologies());
   if (!setup.problems.empty()) {
-    throw Error("/stages/" + ctx.stage() + "/params" + setup.problems.front().first + ": " +
-                setup.problems.front().second);
+    throw Error("/stages/" + ctx.stage() + "/params" + setup.problems.front().pointer + ": " +
+                setup.problems.front().message);
   }
   driver::TimeLoopOptions options;
   const auto steps = mfmSteps(p);

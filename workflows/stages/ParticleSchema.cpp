@@ -70,30 +70,33 @@ void addContactParams(ParamSchema& s) {
 
 // The damping keys a contact object may carry under the stage's damping_model, and that a
 // Hertzian restitution states its impact speed.
-void checkContactKeys(const json& c, const json& p, const std::string& where, core::json::Diagnostics& d) {
+std::vector<core::engine::SetupProblem> checkContactKeys(const json& c, const json& p, const std::string& where) {
+  std::vector<core::engine::SetupProblem> problems;
   const bool dimensional = p.at("damping_model") == dem::contact::DimensionalDamping::name;
   const std::array<const char*, 2> foreign =
       dimensional ? std::array<const char*, 2>{"gamma_n", "gamma_t"} : std::array<const char*, 2>{"eta_n", "eta_t"};
   for (const char* key : foreign) {
     if (c.contains(key)) {
-      d.add(where + "/" + key, std::string(key) + " does not apply with damping_model \"" +
-                                   p.at("damping_model").get<std::string>() + "\" (use " +
-                                   (dimensional ? "eta_n, eta_t" : "gamma_n, gamma_t") + ")");
+      problems.emplace_back(where + "/" + key, std::string(key) + " does not apply with damping_model \"" +
+                                                   p.at("damping_model").get<std::string>() + "\" (use " +
+                                                   (dimensional ? "eta_n, eta_t" : "gamma_n, gamma_t") + ")");
     }
   }
   const auto law =
       dem::contact::findContactLaw({p.at("normal_model"), p.at("damping_model"), p.at("tangential_model")});
   if (law && c.contains("contact_time") && !dem::contact::hasClosedFormCollision(*law)) {
-    d.add(where + "/contact_time", "with normal_model \"" + p.at("normal_model").get<std::string>() +
-                                       "\" the contact time depends on the impact speed: give kn");
+    problems.emplace_back(where + "/contact_time", "with normal_model \"" + p.at("normal_model").get<std::string>() +
+                                                       "\" the contact time depends on the impact speed: give kn");
   }
   if (law && c.contains("restitution") && !c.contains("impact_velocity") &&
       !dem::contact::hasClosedFormCollision(*law)) {
-    d.add(where + "/restitution",
-          "with normal_model \"" + p.at("normal_model").get<std::string>() +
-              "\" the restitution depends on the impact speed: give impact_velocity (the speed at which it holds), "
-              "or the damping itself");
+    problems.emplace_back(
+        where + "/restitution",
+        "with normal_model \"" + p.at("normal_model").get<std::string>() +
+            "\" the restitution depends on the impact speed: give impact_velocity (the speed at which it holds), "
+            "or the damping itself");
   }
+  return problems;
 }
 
 std::shared_ptr<ParamSchema> speciesSchema() {
@@ -122,20 +125,22 @@ std::shared_ptr<ParamSchema> pairContactSchema() {
   return s;
 }
 
-void checkContactTimes(const DemSetup& setup, double dt, const std::string& ptr, core::json::Diagnostics& d) {
+std::vector<core::engine::SetupProblem> checkContactTimes(const DemSetup& setup, double dt, const std::string& ptr) {
+  std::vector<core::engine::SetupProblem> problems;
   // A dt too large for one pair is usually too large for many (every species pair and wall):
   // one message for dt, led by the shortest contact, instead of one per pair.
   std::vector<const PairTiming*> tooShort;
   for (const auto& t : setup.timings) {
     if (!std::isfinite(t.contactTime)) {
-      d.add(ptr + t.pointer, "pair " + t.pair +
-                                 " is overdamped (gamma_n^2/4 >= k_n/m_eff): no rebound and no contact time (Eq. "
-                                 "6.10); lower gamma_n or raise k_n");
+      problems.emplace_back(ptr + t.pointer,
+                            "pair " + t.pair +
+                                " is overdamped (gamma_n^2/4 >= k_n/m_eff): no rebound and no contact time (Eq. "
+                                "6.10); lower gamma_n or raise k_n");
     } else if (dt > t.contactTime / 10.0) {
       tooShort.push_back(&t);
     }
   }
-  if (tooShort.empty()) return;
+  if (tooShort.empty()) return problems;
   std::sort(tooShort.begin(), tooShort.end(), [](auto* a, auto* b) { return a->contactTime < b->contactTime; });
   std::ostringstream msg;
   msg << "dt = " << dt << " s is above t_c/10 = " << tooShort.front()->contactTime / 10.0 << " s of pair "
@@ -146,7 +151,8 @@ void checkContactTimes(const DemSetup& setup, double dt, const std::string& ptr,
     msg << (tooShort.size() > 4 ? ", ..." : "") << ")";
   }
   msg << "; the reference recommends about t_c/50";
-  d.add(ptr + "/dt", msg.str());
+  problems.emplace_back(ptr + "/dt", msg.str());
+  return problems;
 }
 
 }  // namespace grainbridge::workflows::stages

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/engine/SetupProblem.hpp"
 #include "core/json/Diagnostics.hpp"
 #include "workflows/params/ParamSchema.hpp"
 #include "workflows/stages/DemSetup.hpp"
@@ -24,8 +25,8 @@ void addContactParams(params::ParamSchema& s);
 // The damping keys contact object `c` (at `where`) may carry under the stage's damping_model, and
 // that a Hertzian restitution or contact time is given what it depends on. `p` holds the stage's
 // normal_model, damping_model and tangential_model.
-void checkContactKeys(const nlohmann::json& c, const nlohmann::json& p, const std::string& where,
-                      core::json::Diagnostics& d);
+[[nodiscard]] std::vector<core::engine::SetupProblem> checkContactKeys(const nlohmann::json& c, const nlohmann::json& p,
+                                                                       const std::string& where);
 
 // A species: name, diameter, density, count, frozen.
 std::shared_ptr<params::ParamSchema> speciesSchema();
@@ -35,6 +36,8 @@ std::shared_ptr<params::ParamSchema> contactSchema();
 std::shared_ptr<params::ParamSchema> pairContactSchema();
 
 // Every pair must rebound (not overdamped) and be resolved in time: dt <= t_c/10 (Eq. 6.10).
-void checkContactTimes(const DemSetup& setup, double dt, const std::string& ptr, core::json::Diagnostics& d);
+// Pointers are `ptr` + the timing's pointer.
+[[nodiscard]] std::vector<core::engine::SetupProblem> checkContactTimes(const DemSetup& setup, double dt,
+                                                                        const std::string& ptr);
 
 }  // namespace grainbridge::workflows::stages

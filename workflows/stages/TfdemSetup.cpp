@@ -97,34 +97,30 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   const Vec3 gravity = core::json::vec3FromJson(p.at("gravity"));
   const double dt = p.at("dt"), fluidDt = p.at("fluid_dt");
 
-  // The gas: grid and patches by the fluid set-up, with the fixed step fluid_dt (so an inlet
-  // faster than the Courant limit at that step is refused there).
-  json fluidJson = {{"cells", p.at("cells")},  {"lengths", p.at("lengths")}, {"boundaries", p.at("boundaries")},
-                    {"dt", fluidDt},           {"dt_min", fluidDt},         {"dt_max", fluidDt},
-                    {"courant", p.at("courant")}};
-  const auto fluidSetup = fluidJson.get<fluid::FluidSetup>();
+  // The gas: grid and patches by the fluid set-up, with the one fixed step fluid_dt (so an inlet
+  // faster than the Courant limit at that step is refused there, at fluid_dt).
+  fluid::FluidSetup fluidSetup;
+  fluidSetup.cells = cells;
+  fluidSetup.lengths = lengths;
+  fluidSetup.boundaries = p.at("boundaries").get<std::vector<fluid::PatchSetup>>();
+  fluidSetup.timeStep.initial = fluidSetup.timeStep.minimum = fluidSetup.timeStep.maximum = fluidDt;
+  fluidSetup.timeStep.courant = p.at("courant");
+  fluidSetup.fixedStepKey = "fluid_dt";
   const std::size_t before = problems.size();
-  for (auto problem : fluidSetup.problems(1, 1.0)) {
-    const bool step = problem.pointer == "/dt" || problem.pointer == "/dt_min" || problem.pointer == "/dt_max";
-    // The gas step is fixed here: the advice is to lower it, not to let it adapt.
-    const std::string adapt = "lower dt or let it adapt (dt_min < dt_max)";
-    if (const auto at = problem.message.find(adapt); at != std::string::npos)
-      problem.message.replace(at, adapt.size(), "lower fluid_dt");
-    problems.add(step ? "/fluid_dt" : problem.pointer, problem.message);
-  }
+  for (auto& problem : fluidSetup.problems(1, 1.0)) problems.push_back(std::move(problem));
   for (std::size_t k = 0; k < fluidSetup.boundaries.size(); ++k) {
     const auto& b = fluidSetup.boundaries[k];
     for (const auto& [key, list] : {std::pair{"solids_fractions", &b.solidsFractions},
                                     std::pair{"solids_inflow", &b.solidsInflow}}) {
       if (!list->empty())
-        problems.add("/boundaries/" + std::to_string(k) + "/" + key,
+        problems.emplace_back("/boundaries/" + std::to_string(k) + "/" + key,
                      "TF-DEM particles are inserted as particles and stay in the domain; a gas patch carries none");
     }
   }
   e.grid = fluidSetup.geometry();
   if (problems.size() == before) e.boundaries = fluidSetup.patches(1);
   e.gas = {p.at("gas_density").get<double>(), p.at("gas_viscosity").get<double>()};
-  e.drag = dragFromParams(p, [&problems](const std::string& key, const std::string& why) { problems.add(key, why); });
+  e.drag = dragFromParams(p, [&problems](const std::string& key, const std::string& why) { problems.emplace_back(key, why); });
   e.deposition = choice(p, "deposition", {std::pair{"centre_cell", tfdem::VolumeDeposition::CentreCell},
                                           std::pair{"exact_overlap", tfdem::VolumeDeposition::ExactOverlap}});
   e.gasReaction = choice(p, "gas_reaction", {std::pair{"cell_average", tfdem::GasReaction::CellAverage},
@@ -153,7 +149,7 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
 
   // The schedule: fluid_dt a whole number of DEM steps, the output interval of gas steps.
   if (!wholeMultiple(fluidDt, dt)) {
-    problems.add("/fluid_dt", "fluid_dt = " + core::humanNumber(fluidDt) + " s is not a whole number of DEM steps dt = " +
+    problems.emplace_back("/fluid_dt", "fluid_dt = " + core::humanNumber(fluidDt) + " s is not a whole number of DEM steps dt = " +
                                   core::humanNumber(dt) + " s (a gas step is n DEM steps)");
   }
   e.substeps = static_cast<int>(std::max<long long>(1, std::llround(fluidDt / dt)));
@@ -162,18 +158,18 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   s.averageFrom = p.at("average_from");
   s.settleDuration = p.at("settle_duration");
   if (!wholeMultiple(s.outputInterval, fluidDt)) {
-    problems.add("/output_interval", "output_interval = " + core::humanNumber(s.outputInterval) +
+    problems.emplace_back("/output_interval", "output_interval = " + core::humanNumber(s.outputInterval) +
                                          " s is not a whole number of gas steps fluid_dt = " +
                                          core::humanNumber(fluidDt) + " s");
   }
-  if (s.outputInterval > s.duration) problems.add("/output_interval", "is longer than the run (duration)");
+  if (s.outputInterval > s.duration) problems.emplace_back("/output_interval", "is longer than the run (duration)");
   if (const auto why = outputIntervalProblem(s.outputInterval, s.duration, fluidDt, "gas steps fluid_dt");
       !why.empty())
-    problems.add("/output_interval", why);
+    problems.emplace_back("/output_interval", why);
   s.averageTo = p.contains("average_to") ? p.at("average_to").get<double>() : s.duration;
-  if (s.averageFrom >= s.duration) problems.add("/average_from", "must be before the end of the run (duration)");
-  if (s.averageTo > s.duration * (1.0 + 1e-12)) problems.add("/average_to", "is after the end of the run (duration)");
-  if (s.averageTo <= s.averageFrom) problems.add("/average_to", "must be after average_from");
+  if (s.averageFrom >= s.duration) problems.emplace_back("/average_from", "must be before the end of the run (duration)");
+  if (s.averageTo > s.duration * (1.0 + 1e-12)) problems.emplace_back("/average_to", "is after the end of the run (duration)");
+  if (s.averageTo <= s.averageFrom) problems.emplace_back("/average_to", "must be after average_from");
   // A row every output_interval: the run is a whole number of rows of a whole number of gas steps
   // each (both checked above), so the driver's evenly spaced rows fall on exactly those steps.
   s.seriesRows = std::max<std::int64_t>(1, std::llround(s.duration / s.outputInterval));
@@ -185,7 +181,7 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
                                                  core::humanNumber(s.duration) + " s / fluid_dt " +
                                                  core::humanNumber(fluidDt) + " s)");
       !why.empty())
-    problems.add("/frames", why);
+    problems.emplace_back("/frames", why);
 
   // The particles: species, contacts and walls through the `dem` stage's set-up.
   std::set<std::string> names;
@@ -194,20 +190,23 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   std::int64_t count = 0;
   for (std::size_t k = 0; k < species.size(); ++k) {
     if (!names.insert(species[k].at("name").get<std::string>()).second)
-      problems.add("/species/" + std::to_string(k) + "/name", "species name used twice");
+      problems.emplace_back("/species/" + std::to_string(k) + "/name", "species name used twice");
     dMax = std::max(dMax, species[k].at("diameter").get<double>());
     count += species[k].at("count").get<std::int64_t>();
   }
-  checkContactKeys(p.at("contact"), p, "/contact", problems);
-  if (p.contains("wall")) checkContactKeys(p.at("wall"), p, "/wall", problems);
+  auto append = [&problems](std::vector<core::engine::SetupProblem> more) {
+    for (auto& problem : more) problems.push_back(std::move(problem));
+  };
+  append(checkContactKeys(p.at("contact"), p, "/contact"));
+  if (p.contains("wall")) append(checkContactKeys(p.at("wall"), p, "/wall"));
   if (p.contains("pair_contacts")) {
     for (std::size_t k = 0; k < p["pair_contacts"].size(); ++k) {
       const json& pc = p["pair_contacts"][k];
       const std::string where = "/pair_contacts/" + std::to_string(k);
-      checkContactKeys(pc, p, where, problems);
+      append(checkContactKeys(pc, p, where));
       for (const char* f : {"species", "with"}) {
         if (names.count(pc.at(f).get<std::string>()) == 0)
-          problems.add(where + "/" + f, "no species named \"" + pc.at(f).get<std::string>() + "\"");
+          problems.emplace_back(where + "/" + f, "no species named \"" + pc.at(f).get<std::string>() + "\"");
       }
     }
   }
@@ -216,21 +215,23 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   const double d0 = species.empty() ? 0.0 : species[0].at("diameter").get<double>();
   if (twoD) {
     if (std::abs(lengths.z() - d0) > 1e-9 * d0) {
-      problems.add("/lengths/2", "a 2D bed (cells along z is 1) is one particle diameter deep: lengths z must be d = " +
-                                     core::humanNumber(d0) + " m, found " + core::humanNumber(lengths.z()) + " m");
+      problems.emplace_back("/lengths/2",
+                            "a 2D bed (cells along z is 1) is one particle diameter deep: lengths z must be d = " +
+                                core::humanNumber(d0) + " m, found " + core::humanNumber(lengths.z()) + " m");
     }
     for (std::size_t k = 1; k < species.size(); ++k) {
       if (species[k].at("diameter").get<double>() != d0)
-        problems.add("/species/" + std::to_string(k) + "/diameter",
-                     "a 2D bed is one layer of equal spheres: every species needs the first's diameter " +
-                         core::humanNumber(d0) + " m");
+        problems.emplace_back("/species/" + std::to_string(k) + "/diameter",
+                              "a 2D bed is one layer of equal spheres: every species needs the first's diameter " +
+                                  core::humanNumber(d0) + " m");
     }
     const std::string planar = p.at("planar");
     if (!planar.empty() && planar != "z")
-      problems.add("/planar", "a 2D bed moves in x-y: planar must be \"z\" (or left out), found \"" + planar + "\"");
+      problems.emplace_back("/planar",
+                            "a 2D bed moves in x-y: planar must be \"z\" (or left out), found \"" + planar + "\"");
     if (gravity.z() != 0.0)
-      problems.add("/gravity/2", "a 2D bed moves in x-y: gravity must have no z part, found " +
-                                     core::humanNumber(gravity.z()) + " m/s2");
+      problems.emplace_back("/gravity/2", "a 2D bed moves in x-y: gravity must have no z part, found " +
+                                              core::humanNumber(gravity.z()) + " m/s2");
   }
   // A cell must hold what it is given: a particle deposited whole on the cell of its centre
   // fills a cell of edge below 2 d past its volume in a dense bed (eps_g <= 0); with the exact
@@ -240,12 +241,13 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
     const double h = lengths[a] / cells[static_cast<std::size_t>(a)];
     const double least = (centreCell ? 2.0 : 1.0) * dMax;
     if (h < least) {
-      problems.add("/cells/" + std::to_string(a),
-                   "the cell edge " + core::humanNumber(h) + " m is below " + (centreCell ? "2 d" : "d") + " = " +
-                       core::humanNumber(least) + " m with deposition " + p.at("deposition").get<std::string>() +
-                       (centreCell ? ": a cell could hold more particle volume than its own (eps_g <= 0)"
-                                   : ": a particle would cut more than two cells along an axis") +
-                       "; use fewer cells" + (centreCell ? " or exact_overlap" : ""));
+      problems.emplace_back("/cells/" + std::to_string(a),
+                            "the cell edge " + core::humanNumber(h) + " m is below " + (centreCell ? "2 d" : "d") +
+                                " = " + core::humanNumber(least) + " m with deposition " +
+                                p.at("deposition").get<std::string>() +
+                                (centreCell ? ": a cell could hold more particle volume than its own (eps_g <= 0)"
+                                            : ": a particle would cut more than two cells along an axis") +
+                                "; use fewer cells" + (centreCell ? " or exact_overlap" : ""));
     }
   }
   // The insertion region inside the domain.
@@ -254,8 +256,9 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
     for (int a = 0; a < 3; ++a) {
       const double x = p.at(key)[static_cast<std::size_t>(a)];
       if (x < 0.0 || x > lengths[a] * (1.0 + 1e-12)) {
-        problems.add("/" + std::string(key) + "/" + std::to_string(a),
-                     core::humanNumber(x) + " m is outside the domain [0, " + core::humanNumber(lengths[a]) + "] m");
+        problems.emplace_back(
+            "/" + std::string(key) + "/" + std::to_string(a),
+            core::humanNumber(x) + " m is outside the domain [0, " + core::humanNumber(lengths[a]) + "] m");
       }
     }
   }
@@ -263,22 +266,23 @@ TfdemStageSetup makeTfdemSetup(const json& p) {
   s.dem = makeDemSetup(s.demParams);
   for (auto& t : s.dem.timings) t.pointer = tfdemPointer(t.pointer, p);
   for (const auto& problem : s.dem.engine.problems(dMax, count))
-    problems.add(tfdemPointer(problem.pointer, p), problem.message);
+    problems.emplace_back(tfdemPointer(problem.pointer, p), problem.message);
   // TF-DEM inserts its particles at random: a count that cannot fit fails the run at its start.
-  if (const auto problem = randomInsertionProblem(s.demParams, s.dem)) problems.add(problem->pointer, problem->message);
-  checkContactTimes(s.dem, dt, "", problems);
+  if (const auto problem = randomInsertionProblem(s.demParams, s.dem))
+    problems.emplace_back(problem->pointer, problem->message);
+  append(checkContactTimes(s.dem, dt, ""));
   e.particles = s.dem.engine;
   e.materials = s.dem.materials;
 
   // Pressure taps and the bed's heights along gravity.
   s.vertical = fluid::verticalAxis(gravity);
   s.bottom = s.vertical.up > 0.0 ? 0.0 : lengths[s.vertical.axis];
-  std::vector<std::pair<std::string, std::string>> tapProblems;
+  std::vector<core::engine::SetupProblem> tapProblems;
   s.taps = readTaps(p, lengths[s.vertical.axis], tapProblems);
   // A 2D bed's gravity out of x-y is refused above; its "height" would be the depth, and the taps'
   // message about it false.
   if (!(twoD && gravity.z() != 0.0)) {
-    for (auto& [where, what] : tapProblems) problems.add(where, what);
+    append(std::move(tapProblems));
   }
   return s;
 }

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 
-#include "core/json/Diagnostics.hpp"
+#include "core/engine/SetupProblem.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "engines/tfdem/TfdemEngine.hpp"
 #include "workflows/stages/DemSetup.hpp"
@@ -31,7 +31,7 @@ struct TfdemStageSetup {
   std::int64_t steps = 0;        // gas steps of the run
   std::int64_t settleSteps = 0;  // gas-step-long stretches of the settling (DEM alone)
   std::int64_t seriesRows = 0;   // one per output interval
-  core::json::Diagnostics problems;  // pointers below /params; empty when the run may start
+  std::vector<core::engine::SetupProblem> problems;  // below /params; empty when the run may start
 };
 
 // Assumes individually valid parameters (the schema's checks passed).

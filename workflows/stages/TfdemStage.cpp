@@ -152,15 +152,15 @@ TfdemStage::TfdemStage() {
 
 void TfdemStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
   const TfdemStageSetup setup = makeTfdemSetup(p);
-  for (const auto& problem : setup.problems.items()) d.add(ptr + problem.where, problem.message);
+  for (const auto& problem : setup.problems) d.add(ptr + problem.pointer, problem.message);
 }
 
 void TfdemStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
   const TfdemStageSetup setup = makeTfdemSetup(p);
   if (!setup.problems.empty()) {
-    const auto& first = setup.problems.items().front();
-    throw Error("/stages/" + ctx.stage() + "/params" + first.where + ": " + first.message);
+    const auto& first = setup.problems.front();
+    throw Error("/stages/" + ctx.stage() + "/params" + first.pointer + ": " + first.message);
   }
   std::set<std::string> logged;  // one line per species and the walls (all of one material)
   for (const auto& t : setup.dem.timings) {

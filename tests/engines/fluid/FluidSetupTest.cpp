@@ -148,6 +148,27 @@ TEST(FluidSetup, AFixedStepRefusesAnInletAboveTheCourantLimit) {
   EXPECT_TRUE(s.problems(1, 0.6).empty());
 }
 
+// An engine whose gas step is one fixed key (tfdem's fluid_dt) gets its time-step problems at that
+// key and the advice to lower it; mfm's adaptive keys get the advice to let it adapt.
+TEST(FluidSetup, AFixedStepKeyTakesTheStepsProblemsAndItsAdvice) {
+  FluidSetup s = jetBed();
+  s.timeStep.minimum = s.timeStep.maximum = s.timeStep.initial = 4e-3;
+  const auto adaptive = s.problems(1, 0.6);
+  ASSERT_EQ(adaptive.size(), 1u);
+  EXPECT_NE(adaptive[0].message.find(": lower dt or let it adapt (dt_min < dt_max)"), std::string::npos)
+      << adaptive[0].message;
+  s.fixedStepKey = "fluid_dt";
+  const auto fixed = s.problems(1, 0.6);
+  ASSERT_EQ(pointersOf(fixed), (std::vector<std::string>{"/boundaries/0/gas_inflow"}));
+  EXPECT_TRUE(fixed[0].message.ends_with(": lower fluid_dt")) << fixed[0].message;
+  s.timeStep.initial = s.timeStep.minimum = s.timeStep.maximum = 0.0;  // dt, dt_min and dt_max are one key
+  for (const auto& problem : s.problems(1, 0.6)) {
+    if (!problem.pointer.starts_with("/boundaries")) {
+      EXPECT_EQ(problem.pointer, "/fluid_dt") << problem.message;
+    }
+  }
+}
+
 TEST(FluidSetup, TimeStepAndGridProblemsNameTheirKeys) {
   FluidSetup s = jetBed();
   s.timeStep.minimum = 2e-3;  // above dt_max
