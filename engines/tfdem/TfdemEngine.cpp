@@ -7,6 +7,7 @@
 #include "core/Error.hpp"
 #include "core/io/CheckpointFile.hpp"
 #include "engines/dem/Checkpoint.hpp"
+#include "engines/dem/FrameOutput.hpp"
 #include "engines/fluid/FieldSampling.hpp"
 #include "engines/fluid/FlowFrame.hpp"
 #include "engines/fluid/FlowStateIo.hpp"
@@ -261,9 +262,7 @@ core::data::FieldFrame TfdemEngine::gasFrame() const {
 
 const core::data::ParticleFrame& TfdemEngine::particleFrame() {
   if (!frame_) {
-    sim_.refreshContacts();  // the first frame after a settling phase or a restart
-    frame_ = sim_.frame();
-    frame_->materials = setup_.materials;
+    frame_ = dem::outputFrame(sim_, setup_.materials);
     const auto& drag = sim_.bodyForces().applied<dem::FluidCoupling>();
     if (drag.size() == sim_.particles().nOwned) frame_->externalForce = drag;
   }
@@ -276,10 +275,7 @@ void TfdemEngine::writeFrames() {
 }
 
 bool TfdemEngine::writeFramesIfUsable() {
-  const auto& p = sim_.particles();
-  for (std::size_t i = 0; i < p.nOwned; ++i) {
-    if (!p.x[i].allFinite() || !p.v[i].allFinite()) return false;
-  }
+  if (!dem::finiteParticles(sim_.particles())) return false;
   for (std::size_t c = 0; c < grid_.paddedCount(); ++c) {
     if (grid_.interior(c) && !std::isfinite(flow_.pressure[c])) return false;
   }
