@@ -100,20 +100,17 @@ TfdemStage::TfdemStage() {
       .add(ParamSpec::string("gas_velocity")
                .defaultValue("cell")
                .options({"cell", "interpolated"})
-               .doc("per_particle: the gas velocity at a particle, its cell's or interpolated"))
-      // The particles: the dem stage's keys.
-      .add(ParamSpec::objectList("species", speciesSchema()).required().doc("particle species"))
-      .add(ParamSpec::object("contact", contactSchema()).required().doc("particle-particle contact coefficients"))
-      .add(ParamSpec::objectList("pair_contacts", pairContactSchema())
-               .doc("coefficients of particular species pairs (others use contact)"))
-      .add(ParamSpec::object("wall", contactSchema()).doc("the walls' contact coefficients (default: contact)"));
+               .doc("per_particle: the gas velocity at a particle, its cell's or interpolated"));
+  // The particles: the dem stage's keys.
+  addSpeciesParams(schema_);
+  schema_.add(ParamSpec::object("wall", contactSchema()).doc("the walls' contact coefficients (default: contact)"));
   addContactModelParams(schema_);
   schema_.add(ParamSpec::quantity("dt", Dimension::timeDim())
                .required()
                .positive()
                .doc("DEM time step (at most t_c/10; about t_c/50 recommended)"))
-      .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"))
-      .add(ParamSpec::integer("seed").defaultValue(1).min(0).doc("random seed of the insertion"))
+      .add(skinParam())
+      .add(seedParam())
       .add(ParamSpec::quantityList("insert_lo", Dimension::lengthDim(), 3)
                .doc("insertion region lower corner (default: the domain)"))
       .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
