@@ -5,9 +5,9 @@
 #include <utility>
 
 #include "core/Error.hpp"
+#include "core/io/FrameFileReading.hpp"
 #include "core/io/FrameFiles.hpp"
 #include "core/io/H5InputFile.hpp"
-#include "core/io/MaterialsIo.hpp"
 
 namespace grainbridge::core::io {
 
@@ -60,15 +60,9 @@ std::vector<std::pair<std::string, int>> readExtraNames(const H5InputFile& f) {
   }
   return out;
 }
-}  // namespace
 
-data::FieldFrame readFieldFrame(const std::filesystem::path& path) {
-  const H5InputFile f(path);
-  checkFormatVersion(f, kFieldFormatVersion);
-  data::FieldFrame frame;
-  frame.time = f.readDoubleAttribute("/", "time");
-  frame.step = f.readIntAttribute("/", "step");
-  frame.units = f.readStringAttribute("/", "units");
+// A field frame's own datasets: the grid, the gas, the solids phases and the extra fields.
+void readFieldDatasets(const H5InputFile& f, data::FieldFrame& frame) {
   frame.grid = readGrid(f);
   // Stored [nz][ny][nx] (C order, i fastest) as XDMF's 3DCoRectMesh expects.
   const H5InputFile::Shape cells{static_cast<hsize_t>(frame.grid.cells[2]), static_cast<hsize_t>(frame.grid.cells[1]),
@@ -94,26 +88,21 @@ data::FieldFrame readFieldFrame(const std::filesystem::path& path) {
     extra.values = f.readDoubles("/extra/" + name, shape);
     frame.extras.push_back(std::move(extra));
   }
-  frame.materials = readMaterials(f);
-  try {
-    frame.validate();
-  } catch (const Error& e) {
-    throw e.withContext("file '" + path.string() + "'");
-  }
-  return frame;
 }
 
-FieldFrameSummary readFieldFrameSummary(const std::filesystem::path& path) {
-  const H5InputFile f(path);
-  checkFormatVersion(f, kFieldFormatVersion);
-  FieldFrameSummary s;
-  s.file = path;
-  s.step = f.readIntAttribute("/", "step");
-  s.time = f.readDoubleAttribute("/", "time");
+void readFieldSummaryRest(const H5InputFile& f, FieldFrameSummary& s) {
   s.grid = readGrid(f);
   s.solidsPhases = readPhaseNames(f);
   s.extras = readExtraNames(f);
-  return s;
+}
+}  // namespace
+
+data::FieldFrame readFieldFrame(const std::filesystem::path& path) {
+  return readFrameFile<data::FieldFrame>(path, kFieldFormatVersion, readFieldDatasets);
+}
+
+FieldFrameSummary readFieldFrameSummary(const std::filesystem::path& path) {
+  return readFrameFileSummary<FieldFrameSummary>(path, kFieldFormatVersion, readFieldSummaryRest);
 }
 
 std::vector<std::filesystem::path> listFieldFrames(const std::filesystem::path& directory) {

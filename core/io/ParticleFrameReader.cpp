@@ -3,9 +3,9 @@
 #include <string>
 
 #include "core/Error.hpp"
+#include "core/io/FrameFileReading.hpp"
 #include "core/io/FrameFiles.hpp"
 #include "core/io/H5InputFile.hpp"
-#include "core/io/MaterialsIo.hpp"
 
 namespace grainbridge::core::io {
 
@@ -50,15 +50,11 @@ std::size_t length(const H5InputFile& f, const std::string& dataset) {
     throw f.error("dataset", dataset, "expected a 1-D array, found rank " + std::to_string(dims.size()));
   return static_cast<std::size_t>(dims[0]);
 }
-}  // namespace
 
-data::ParticleFrame readParticleFrame(const std::filesystem::path& path) {
-  const H5InputFile f(path);
-  checkFormatVersion(f, kParticleFormatVersion);
-  data::ParticleFrame frame;
-  frame.time = f.readDoubleAttribute("/", "time");
-  frame.step = f.readIntAttribute("/", "step");
-  frame.units = f.readStringAttribute("/", "units");
+// A particle frame's own datasets: the domain, the particles, their contacts and wall contacts.
+// The frame's validation after them catches wall indices out of range (the shapes are consistent
+// by then).
+void readParticleDatasets(const H5InputFile& f, data::ParticleFrame& frame) {
   frame.domain = readDomain(f);
 
   // N comes from `id`; every other per-particle array must match it.
@@ -92,28 +88,21 @@ data::ParticleFrame readParticleFrame(const std::filesystem::path& path) {
   wc.point = f.readVec3s("/wall_contacts/point", {mw});
   wc.forceNormal = f.readVec3s("/wall_contacts/force_normal", {mw});
   wc.forceTangential = f.readVec3s("/wall_contacts/force_tangential", {mw});
-  frame.materials = readMaterials(f);
-
-  // Shapes are consistent by now; this catches wall indices out of range.
-  try {
-    frame.validate();
-  } catch (const Error& e) {
-    throw e.withContext("file '" + path.string() + "'");
-  }
-  return frame;
 }
 
-ParticleFrameSummary readParticleFrameSummary(const std::filesystem::path& path) {
-  const H5InputFile f(path);
-  checkFormatVersion(f, kParticleFormatVersion);
-  ParticleFrameSummary s;
-  s.file = path;
-  s.step = f.readIntAttribute("/", "step");
-  s.time = f.readDoubleAttribute("/", "time");
+void readParticleSummaryRest(const H5InputFile& f, ParticleFrameSummary& s) {
   s.particles = length(f, "/id");
   s.contacts = length(f, "/contacts/i");
   s.hasExternalForce = f.exists("/external_force");
-  return s;
+}
+}  // namespace
+
+data::ParticleFrame readParticleFrame(const std::filesystem::path& path) {
+  return readFrameFile<data::ParticleFrame>(path, kParticleFormatVersion, readParticleDatasets);
+}
+
+ParticleFrameSummary readParticleFrameSummary(const std::filesystem::path& path) {
+  return readFrameFileSummary<ParticleFrameSummary>(path, kParticleFormatVersion, readParticleSummaryRest);
 }
 
 std::vector<std::filesystem::path> listParticleFrames(const std::filesystem::path& directory) {

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "engines/dem/Checkpoint.hpp"
+#include "engines/dem/FrameOutput.hpp"
 
 namespace grainbridge::dem {
 
@@ -33,22 +34,14 @@ void DemEngine::saveState(const std::filesystem::path& file, const std::string& 
 }
 
 const core::data::ParticleFrame& DemEngine::frame() {
-  if (!frame_) {
-    sim_.refreshContacts();  // the run's first frame after a preparation, or after a restart
-    frame_ = sim_.frame();
-    frame_->materials = materials_;
-  }
+  if (!frame_) frame_ = outputFrame(sim_, materials_);
   return *frame_;
 }
 
 void DemEngine::writeFrames() { writer_.write(frame()); }
 
 bool DemEngine::writeFramesIfUsable() {
-  // A particle that left the domain leaves a usable state; a non-finite one does not.
-  const auto& p = sim_.particles();
-  for (std::size_t i = 0; i < p.nOwned; ++i) {
-    if (!p.x[i].allFinite() || !p.v[i].allFinite()) return false;
-  }
+  if (!finiteParticles(sim_.particles())) return false;
   frame_.reset();
   writeFrames();
   return true;

@@ -5,6 +5,7 @@
 
 #include "core/io/CheckpointFile.hpp"
 #include "engines/fluid/FieldSampling.hpp"
+#include "engines/fluid/FlowFrame.hpp"
 #include "engines/fluid/FlowStateIo.hpp"
 
 namespace grainbridge::mfm {
@@ -47,45 +48,22 @@ std::string MfmEngine::throughputNote() const {
 }
 
 core::data::FieldFrame MfmEngine::frame() const {
-  const auto& grid = engine_->grid();
   const auto& st = engine_->state();
-  core::data::FieldFrame f;
-  f.time = st.time;
-  f.step = step_;
-  f.units = "SI";
-  f.grid = grid.geometry();
-  const std::size_t n = f.grid.cellCount();
-  f.ep_g.resize(n);
-  f.p_g.resize(n);
-  f.u_g.resize(n);
   const auto& solids = engine_->model().params().solids;
+  std::vector<std::string> names;
+  for (const auto& s : solids) names.push_back(s.name);
+  auto f = fluid::flowFrame(engine_->grid(), st, step_, names,
+                            [&](std::size_t c, std::size_t out, std::vector<core::data::SolidsPhaseFields>& phases) {
+                              for (std::size_t m = 1; m < st.phases.size(); ++m) {
+                                auto& phase = phases[m - 1];
+                                phase.ep_s[out] = st.phases[m].fraction[c];
+                                phase.u_s[out] = fluid::cellVelocity(st.phases[m], c);
+                                phase.theta[out] = engine_->model().granularTemperature(st, m, c);
+                              }
+                            });
   // The materials the fields are of, so readers need no stage params (DESIGN.md, field frames).
   f.materials.gravity = engine_->settings().gravity;
-  for (const auto& s : solids) {
-    f.materials.species.push_back({s.name, s.diameter, s.density});
-    core::data::SolidsPhaseFields phase;
-    phase.name = s.name;
-    phase.ep_s.resize(n);
-    phase.u_s.resize(n);
-    phase.theta.resize(n);
-    f.solids.push_back(std::move(phase));
-  }
-  for (int k = 0; k < grid.cells(2); ++k) {
-    for (int j = 0; j < grid.cells(1); ++j) {
-      for (int i = 0; i < grid.cells(0); ++i) {
-        const std::size_t c = grid.index(i, j, k), out = f.grid.index(i, j, k);
-        f.ep_g[out] = st.phases[0].fraction[c];
-        f.p_g[out] = st.pressure[c];
-        f.u_g[out] = fluid::cellVelocity(st.phases[0], c);
-        for (std::size_t m = 1; m < st.phases.size(); ++m) {
-          auto& phase = f.solids[m - 1];
-          phase.ep_s[out] = st.phases[m].fraction[c];
-          phase.u_s[out] = fluid::cellVelocity(st.phases[m], c);
-          phase.theta[out] = engine_->model().granularTemperature(st, m, c);
-        }
-      }
-    }
-  }
+  for (const auto& s : solids) f.materials.species.push_back({s.name, s.diameter, s.density});
   return f;
 }
 

@@ -7,7 +7,9 @@
 #include "core/Error.hpp"
 #include "core/io/CheckpointFile.hpp"
 #include "engines/dem/Checkpoint.hpp"
+#include "engines/dem/FrameOutput.hpp"
 #include "engines/fluid/FieldSampling.hpp"
+#include "engines/fluid/FlowFrame.hpp"
 #include "engines/fluid/FlowStateIo.hpp"
 
 namespace grainbridge::tfdem {
@@ -246,42 +248,21 @@ core::data::Materials TfdemEngine::gasFrameMaterials() const {
 }
 
 core::data::FieldFrame TfdemEngine::gasFrame() const {
-  core::data::FieldFrame f;
-  f.time = flow_.time;
-  f.step = step_;
-  f.units = "SI";
-  f.grid = grid_.geometry();
-  f.materials = gasFrameMaterials();
-  const std::size_t n = f.grid.cellCount();
-  f.ep_g.resize(n);
-  f.p_g.resize(n);
-  f.u_g.resize(n);
-  core::data::SolidsPhaseFields particles;
-  particles.name = f.materials.species.empty() ? "particles" : f.materials.species.front().name;
-  particles.ep_s.resize(n);
-  particles.u_s.resize(n);
-  particles.theta.assign(n, 0.0);  // the particles' own fluctuation is the DEM's, not a field here
-  for (int k = 0; k < grid_.cells(2); ++k) {
-    for (int j = 0; j < grid_.cells(1); ++j) {
-      for (int i = 0; i < grid_.cells(0); ++i) {
-        const std::size_t c = grid_.index(i, j, k), out = f.grid.index(i, j, k);
-        f.ep_g[out] = flow_.phases[0].fraction[c];
-        f.p_g[out] = flow_.pressure[c];
-        f.u_g[out] = fluid::cellVelocity(flow_.phases[0], c);
-        particles.ep_s[out] = deposit_.fraction[c];
-        particles.u_s[out] = deposit_.velocity[c];
-      }
-    }
-  }
-  f.solids.push_back(std::move(particles));
+  auto materials = gasFrameMaterials();
+  const std::string particles = materials.species.empty() ? "particles" : materials.species.front().name;
+  // The particles' theta stays zero: their own fluctuation is the DEM's, not a field here.
+  auto f = fluid::flowFrame(grid_, flow_, step_, {particles},
+                            [&](std::size_t c, std::size_t out, std::vector<core::data::SolidsPhaseFields>& phases) {
+                              phases[0].ep_s[out] = deposit_.fraction[c];
+                              phases[0].u_s[out] = deposit_.velocity[c];
+                            });
+  f.materials = std::move(materials);
   return f;
 }
 
 const core::data::ParticleFrame& TfdemEngine::particleFrame() {
   if (!frame_) {
-    sim_.refreshContacts();  // the first frame after a settling phase or a restart
-    frame_ = sim_.frame();
-    frame_->materials = setup_.materials;
+    frame_ = dem::outputFrame(sim_, setup_.materials);
     const auto& drag = sim_.bodyForces().applied<dem::FluidCoupling>();
     if (drag.size() == sim_.particles().nOwned) frame_->externalForce = drag;
   }
@@ -294,10 +275,7 @@ void TfdemEngine::writeFrames() {
 }
 
 bool TfdemEngine::writeFramesIfUsable() {
-  const auto& p = sim_.particles();
-  for (std::size_t i = 0; i < p.nOwned; ++i) {
-    if (!p.x[i].allFinite() || !p.v[i].allFinite()) return false;
-  }
+  if (!dem::finiteParticles(sim_.particles())) return false;
   for (std::size_t c = 0; c < grid_.paddedCount(); ++c) {
     if (grid_.interior(c) && !std::isfinite(flow_.pressure[c])) return false;
   }

@@ -9,7 +9,6 @@
 #include "core/text/NumberText.hpp"
 
 #include "core/averaging/BlockAverage.hpp"
-#include "core/averaging/DominantFrequency.hpp"
 #include "core/io/FieldFrameWriter.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "engines/fluid/BoundaryFlow.hpp"
@@ -20,6 +19,7 @@
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/report/BedTables.hpp"
 #include "workflows/report/NumericCsv.hpp"
+#include "workflows/stages/BedSummary.hpp"
 #include "workflows/stages/ClosureSamples.hpp"
 #include "workflows/stages/DragSchema.hpp"
 #include "workflows/stages/FluidSchema.hpp"
@@ -401,18 +401,7 @@ void MfmStage::run(StageContext& ctx) const {
   // mean fields beside the frames (mean/fields.xmf).
   json summary;
   const auto& window = observed.windowSamples();
-  for (std::size_t k = 0; k < setup.taps.size(); ++k) {
-    const std::string column = "dp_" + setup.taps[k].name;
-    addAverage(summary, column, window.at(column));
-    if (k == 0) addAverage(summary, "pressure_drop", window.at(column));
-    // The fluctuation's dominant frequency and amplitude over the window (Fig. 7.3), at the
-    // rows' own times.
-    if (const auto spectrum = core::averaging::dominantFrequency(observed.windowTimes(), window.at(column))) {
-      summary[column + "_frequency"] = spectrum->frequency;
-      summary[column + "_amplitude"] = spectrum->amplitude;
-    }
-  }
-  if (!setup.taps.empty()) summary["pressure_drop_tap"] = setup.taps.front().name;
+  addTapSummary(summary, setup.taps, window, observed.windowTimes());
   for (std::size_t m = 0; m < solids.size(); ++m) {
     addAverage(summary, "mean_height_" + solids[m].name, window.at("mean_height_" + solids[m].name));
   }
@@ -522,15 +511,8 @@ std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
   PlannedOutput out;
   out.fieldFrames = true;
   out.meanFieldFrames = p.at("average_from").get<double>() < p.at("duration").get<double>();
+  addTapPlannedOutput(out, p);
   auto& keys = out.summaryKeys;
-  for (const auto& tap : p.value("pressure_taps", json::array())) {
-    if (keys.empty()) {
-      keys.push_back("pressure_drop");
-      keys.push_back("pressure_drop_tap");
-    }
-    keys.push_back("dp_" + tap.at("name").get<std::string>());
-    out.seriesColumns.push_back("dp_" + tap.at("name").get<std::string>());
-  }
   const json solids = p.value("solids", json::array());
   if (!solids.empty()) {
     keys.push_back("mean_height");

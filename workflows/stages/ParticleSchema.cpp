@@ -32,6 +32,19 @@ void addContactModelParams(ParamSchema& s) {
                     "gran/hooke/history's order, to reproduce a LAMMPS run)"));
 }
 
+void addSpeciesParams(ParamSchema& s) {
+  s.add(ParamSpec::objectList("species", speciesSchema()).required().doc("particle species"))
+      .add(ParamSpec::object("contact", contactSchema()).required().doc("particle-particle contact coefficients"))
+      .add(ParamSpec::objectList("pair_contacts", pairContactSchema())
+               .doc("coefficients of particular species pairs (others use contact)"));
+}
+
+ParamSpec skinParam() {
+  return ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters");
+}
+
+ParamSpec seedParam() { return ParamSpec::integer("seed").defaultValue(1).min(0).doc("random seed of the insertion"); }
+
 void addContactParams(ParamSchema& s) {
   s.add(ParamSpec::quantity("kn", Dimension::stiffness()).positive().doc("normal spring constant k_n (Eq. 6.5)"))
       .add(ParamSpec::quantity("contact_time", Dimension::timeDim())

@@ -28,6 +28,13 @@ void addContactParams(params::ParamSchema& s);
 [[nodiscard]] std::vector<core::engine::SetupProblem> checkContactKeys(const nlohmann::json& c, const nlohmann::json& p,
                                                                        const std::string& where);
 
+// species (required), contact (required) and pair_contacts, in this order: the particles and
+// their contact coefficients as every stage that runs the DEM declares them.
+void addSpeciesParams(params::ParamSchema& s);
+// skin: the Verlet skin in largest diameters; seed: the random seed of the insertion.
+params::ParamSpec skinParam();
+params::ParamSpec seedParam();
+
 // A species: name, diameter, density, count, frozen.
 std::shared_ptr<params::ParamSchema> speciesSchema();
 // One set of contact coefficients (the `contact` key, a wall's material).

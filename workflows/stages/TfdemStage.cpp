@@ -6,7 +6,6 @@
 #include <set>
 
 #include "core/Error.hpp"
-#include "core/averaging/DominantFrequency.hpp"
 #include "core/averaging/FieldTimeAverage.hpp"
 #include "core/io/FieldFrameReader.hpp"
 #include "core/io/FieldFrameWriter.hpp"
@@ -15,6 +14,7 @@
 #include "engines/tfdem/ParticleBedMeasures.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/report/NumericCsv.hpp"
+#include "workflows/stages/BedSummary.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DragSchema.hpp"
 #include "workflows/stages/FluidSchema.hpp"
@@ -100,20 +100,17 @@ TfdemStage::TfdemStage() {
       .add(ParamSpec::string("gas_velocity")
                .defaultValue("cell")
                .options({"cell", "interpolated"})
-               .doc("per_particle: the gas velocity at a particle, its cell's or interpolated"))
-      // The particles: the dem stage's keys.
-      .add(ParamSpec::objectList("species", speciesSchema()).required().doc("particle species"))
-      .add(ParamSpec::object("contact", contactSchema()).required().doc("particle-particle contact coefficients"))
-      .add(ParamSpec::objectList("pair_contacts", pairContactSchema())
-               .doc("coefficients of particular species pairs (others use contact)"))
-      .add(ParamSpec::object("wall", contactSchema()).doc("the walls' contact coefficients (default: contact)"));
+               .doc("per_particle: the gas velocity at a particle, its cell's or interpolated"));
+  // The particles: the dem stage's keys.
+  addSpeciesParams(schema_);
+  schema_.add(ParamSpec::object("wall", contactSchema()).doc("the walls' contact coefficients (default: contact)"));
   addContactModelParams(schema_);
   schema_.add(ParamSpec::quantity("dt", Dimension::timeDim())
                .required()
                .positive()
                .doc("DEM time step (at most t_c/10; about t_c/50 recommended)"))
-      .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"))
-      .add(ParamSpec::integer("seed").defaultValue(1).min(0).doc("random seed of the insertion"))
+      .add(skinParam())
+      .add(seedParam())
       .add(ParamSpec::quantityList("insert_lo", Dimension::lengthDim(), 3)
                .doc("insertion region lower corner (default: the domain)"))
       .add(ParamSpec::quantityList("insert_hi", Dimension::lengthDim(), 3)
@@ -242,18 +239,7 @@ void TfdemStage::run(StageContext& ctx) const {
   }
   const auto& particles = e.simulation().particles();
   summary["particles"] = static_cast<std::int64_t>(particles.nOwned);
-  for (std::size_t k = 0; k < setup.taps.size(); ++k) {
-    const std::string column = "dp_" + setup.taps[k].name;
-    addAverage(summary, column, window.at(column));
-    if (k == 0) addAverage(summary, "pressure_drop", window.at(column));
-    // The fluctuation's dominant frequency and amplitude over the window (Fig. 7.3), at the
-    // rows' own times.
-    if (const auto spectrum = core::averaging::dominantFrequency(window.at("time"), window.at(column))) {
-      summary[column + "_frequency"] = spectrum->frequency;
-      summary[column + "_amplitude"] = spectrum->amplitude;
-    }
-  }
-  if (!setup.taps.empty()) summary["pressure_drop_tap"] = setup.taps.front().name;
+  addTapSummary(summary, setup.taps, window, window.at("time"));
   for (const char* column : {"mean_height", "mean_height_fields", "coordination", "multi_contact_ratio"})
     addAverage(summary, column, window.at(column));
   // What the gas carries: the particles' buoyant weight per unit area of the bottom.
@@ -309,15 +295,8 @@ std::optional<PlannedOutput> TfdemStage::plannedOutput(const json& p) const {
   std::int64_t count = 0;
   for (const auto& s : p.at("species")) count += s.at("count").get<std::int64_t>();
   out.particleCount = count;
+  addTapPlannedOutput(out, p);
   auto& keys = out.summaryKeys;
-  for (const auto& tap : p.value("pressure_taps", json::array())) {
-    if (keys.empty()) {
-      keys.push_back("pressure_drop");
-      keys.push_back("pressure_drop_tap");
-    }
-    keys.push_back("dp_" + tap.at("name").get<std::string>());
-    out.seriesColumns.push_back("dp_" + tap.at("name").get<std::string>());
-  }
   for (const char* k : {"mean_height", "mean_height_fields", "bed_weight"}) keys.push_back(k);
   for (const char* c : {"mean_height", "mean_height_fields", "contacts", "coordination", "multi_contact_ratio"})
     out.seriesColumns.push_back(c);

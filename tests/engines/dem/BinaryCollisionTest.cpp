@@ -18,11 +18,6 @@ using namespace grainbridge::dem::testing;
 
 namespace {
 
-struct CollisionResult {
-  double restitution;
-  double contactTime;
-};
-
 // Head-on collision along x; returns measured e (ratio of normal relative velocities) and t_c
 // (gap crossing zero, interpolated linearly between the steps around each crossing).
 CollisionResult collide(double d1, double rho1, double d2, double rho2, double approachSpeed) {
@@ -38,25 +33,10 @@ CollisionResult collide(double d1, double rho1, double d2, double rho2, double a
   p.addOwned(0, 0, d1 / 2, m1, Vec3(-(d1 / 2 + gap0 / 2), 0, 0), Vec3(v1, 0, 0), Vec3::Zero(), false);
   p.addOwned(1, 0, d2 / 2, m2, Vec3(d2 / 2 + gap0 / 2, 0, 0), Vec3(v2, 0, 0), Vec3::Zero(), false);
   Simulation sim(setup, p);
-  auto gap = [&] {
-    const auto& q = sim.particles();
-    return (q.x[1] - q.x[0]).norm() - (q.radius[0] + q.radius[1]);
-  };
-  double previousGap = gap();
-  double previousTime = sim.time();
-  double start = -1.0;
-  double end = -1.0;
-  while (end < 0.0 && sim.stepCount() < 1000000) {
-    sim.step();
-    const double g = gap();
-    if (start < 0.0 && g < 0.0) start = previousTime + (sim.time() - previousTime) * previousGap / (previousGap - g);
-    if (start >= 0.0 && g > 0.0) end = previousTime + (sim.time() - previousTime) * previousGap / (previousGap - g);
-    previousGap = g;
-    previousTime = sim.time();
-  }
   const auto& q = sim.particles();
-  const double after = (q.v[1] - q.v[0]).x();
-  return {after / approachSpeed, end - start};
+  return measureCollision(
+      sim, [&] { return (q.x[1] - q.x[0]).norm() - (q.radius[0] + q.radius[1]); },
+      [&] { return (q.v[1] - q.v[0]).x(); }, approachSpeed);
 }
 
 // Records the measured restitution and contact time against Eqs. 6.9-6.10 (VALIDATION.md prints

@@ -1,12 +1,14 @@
 #pragma once
 // Small builders for DEM physics tests: Table 6.1 materials in reduced units (d0 = m0 = g = 1,
-// so t0 = 1 and k0 = 1), and one- or two-particle setups.
+// so t0 = 1 and k0 = 1), one- or two-particle setups, periodic (sheared) cubes filled at random,
+// and the measurement of a collision.
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
 
 #include "engines/dem/Insertion.hpp"
+#include "engines/dem/Material.hpp"
 #include "engines/dem/Simulation.hpp"
 
 namespace grainbridge::dem::testing {
@@ -43,6 +45,39 @@ inline SimulationSetup openBox(const PairMaterial& pair, int species = 1, double
   return s;
 }
 
+// A cube [0, side]^3 periodic on all axes, one species of `pair`, sheared (Lees-Edwards) at
+// `shearRate` when that is not zero: the box of the gas and simple-shear tests (Chapter 6).
+inline SimulationSetup periodicCube(const PairMaterial& pair, double side, double dt, double shearRate = 0.0) {
+  SimulationSetup s = openBox(pair, 1, dt);
+  s.lo = Vec3::Zero();
+  s.hi = Vec3::Constant(side);
+  s.periodic = {true, true, true};
+  s.shearRate = shearRate;
+  return s;
+}
+
+// Frictionless spheres of unit mass (m_eff = 1/2) without a tangential spring: k_n, and gamma_n
+// from Eq. 6.9 for the normal restitution e.
+inline PairMaterial frictionlessUnitMass(double kn, double e) {
+  PairMaterial m;
+  m.kn = kn;
+  m.kt = 0.0;
+  m.mu = 0.0;
+  m.gammaN = gammaForRestitution(e, kn, 0.5);
+  return m;
+}
+
+// Centres of n spheres of radius r, inserted at random without overlap in the box of `s`
+// (periodic as it is), drawing from `rng`.
+inline std::vector<Vec3> randomCentres(const SimulationSetup& s, int n, double r, std::mt19937_64& rng) {
+  InsertionRequest rq;
+  rq.lo = s.lo;
+  rq.hi = s.hi;
+  rq.periodic = s.periodic;
+  rq.radii.assign(static_cast<std::size_t>(n), r);
+  return insertRandomly(rq, rng);
+}
+
 inline Wall floorWall(const PairMaterial& m, double z = 0.0, int species = 1) {
   Wall w;
   w.kind = Wall::Kind::Plane;
@@ -64,17 +99,9 @@ struct Gas {
 inline Gas periodicGas(int n, double phi, double T0, const PairMaterial& m, double dt, std::uint64_t seed) {
   Gas g;
   g.side = std::cbrt(n * M_PI / 6.0 / phi);
-  g.setup = openBox(m, 1, dt);
-  g.setup.lo = Vec3::Zero();
-  g.setup.hi = Vec3::Constant(g.side);
-  g.setup.periodic = {true, true, true};
-  InsertionRequest rq;
-  rq.lo = g.setup.lo;
-  rq.hi = g.setup.hi;
-  rq.periodic = {true, true, true};
-  rq.radii.assign(static_cast<std::size_t>(n), 0.5);
+  g.setup = periodicCube(m, g.side, dt);
   std::mt19937_64 rng(seed);
-  const auto centres = insertRandomly(rq, rng);
+  const auto centres = randomCentres(g.setup, n, 0.5, rng);
   std::normal_distribution<double> normal(0.0, 1.0);
   std::vector<Vec3> v(centres.size());
   Vec3 mean = Vec3::Zero();
@@ -93,6 +120,32 @@ inline Gas periodicGas(int n, double phi, double T0, const PairMaterial& m, doub
     g.particles.addOwned(static_cast<std::int64_t>(i), 0, 0.5, mass, centres[i], scale * v[i], Vec3::Zero(), false);
   }
   return g;
+}
+
+// A collision's measured normal restitution and contact time.
+struct CollisionResult {
+  double restitution;
+  double contactTime;
+};
+
+// Steps `sim` until gap() closes and opens again; contact start and end are interpolated linearly
+// between the steps around each zero crossing of the gap. The restitution is normalSpeed() after
+// contact over approachSpeed.
+template <class Gap, class Speed>
+CollisionResult measureCollision(Simulation& sim, Gap gap, Speed normalSpeed, double approachSpeed) {
+  double previousGap = gap();
+  double previousTime = sim.time();
+  double start = -1.0;
+  double end = -1.0;
+  while (end < 0.0 && sim.stepCount() < 1000000) {
+    sim.step();
+    const double g = gap();
+    if (start < 0.0 && g < 0.0) start = previousTime + (sim.time() - previousTime) * previousGap / (previousGap - g);
+    if (start >= 0.0 && g > 0.0) end = previousTime + (sim.time() - previousTime) * previousGap / (previousGap - g);
+    previousGap = g;
+    previousTime = sim.time();
+  }
+  return {normalSpeed() / approachSpeed, end - start};
 }
 
 // Granular temperature T = <C^2>/3 (Eq. 5.6) of the owned particles about their mean velocity.

@@ -21,11 +21,6 @@ using namespace grainbridge::dem::testing;
 
 namespace {
 
-struct CollisionResult {
-  double restitution;
-  double contactTime;
-};
-
 // RK4 with a fixed step h from first touch to separation (delta back to 0, located by linear
 // interpolation inside the last step, whose length is h).
 CollisionResult hertzOde(double v, double kn, double gammaN, double meff, double d, double h) {
@@ -53,25 +48,6 @@ CollisionResult hertzOde(double v, double kn, double gammaN, double meff, double
   }
 }
 
-// Runs the engine until the gap closes and opens again; contact start and end are interpolated
-// linearly between the steps around each zero crossing of the gap.
-template <class Gap, class Speed>
-CollisionResult measure(Simulation& sim, Gap gap, Speed normalSpeed, double approachSpeed) {
-  double previousGap = gap();
-  double previousTime = sim.time();
-  double start = -1.0;
-  double end = -1.0;
-  while (end < 0.0 && sim.stepCount() < 1000000) {
-    sim.step();
-    const double g = gap();
-    if (start < 0.0 && g < 0.0) start = previousTime + (sim.time() - previousTime) * previousGap / (previousGap - g);
-    if (start >= 0.0 && g > 0.0) end = previousTime + (sim.time() - previousTime) * previousGap / (previousGap - g);
-    previousGap = g;
-    previousTime = sim.time();
-  }
-  return {normalSpeed() / approachSpeed, end - start};
-}
-
 CollisionResult enginePair(double v, double dt, const PairMaterial& material = table61Particle()) {
   SimulationSetup setup = openBox(material, 1, dt);
   setup.contact.normal = "hertz";
@@ -82,7 +58,7 @@ CollisionResult enginePair(double v, double dt, const PairMaterial& material = t
   p.addOwned(1, 0, 0.5, m, Vec3(0.5 + gap0 / 2, 0, 0), Vec3(-v / 2, 0, 0), Vec3::Zero(), false);
   Simulation sim(setup, p);
   const auto& q = sim.particles();
-  return measure(
+  return measureCollision(
       sim, [&] { return (q.x[1] - q.x[0]).norm() - 1.0; }, [&] { return (q.v[1] - q.v[0]).x(); }, v);
 }
 
@@ -100,7 +76,7 @@ CollisionResult engineWall(double v, double dt) {
   p.addOwned(0, 0, a, sphereMass(kLargeD, kLargeRho), Vec3(0, 0, a + 0.01), Vec3(0, 0, -v), Vec3::Zero(), false);
   Simulation sim(setup, p);
   const auto& q = sim.particles();
-  return measure(
+  return measureCollision(
       sim, [&] { return q.x[0].z() - a; }, [&] { return q.v[0].z(); }, v);
 }
 

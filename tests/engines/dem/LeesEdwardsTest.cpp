@@ -35,30 +35,13 @@ ShearRun shear(int n, double phi, double strainsDiscarded, double strainsAverage
   const double d = 1.0;
   const double rho = 6.0 / M_PI;  // m = 1
   const double gammadot = 1.0;
-  PairMaterial mat;
-  mat.kn = 1e5 * rho * d * d * d * gammadot * gammadot;  // k* = 1e5
-  mat.kt = 0.0;
-  mat.mu = 0.0;
-  mat.gammaN = gammaForRestitution(0.9, mat.kn, 0.5);
+  const PairMaterial mat = frictionlessUnitMass(1e5 * rho * d * d * d * gammadot * gammadot, 0.9);  // k* = 1e5
   const double tc = linearContactTime(mat.kn, mat.gammaN, 0.5);
   const double box = std::cbrt(n * M_PI / 6.0 / phi);
-  SimulationSetup s;
-  s.lo = Vec3::Zero();
-  s.hi = Vec3::Constant(box);
-  s.periodic = {true, true, true};
-  s.dt = tc / 50.0;
-  s.skin = 0.3;
-  s.species = 1;
-  s.pairMaterial = {mat};
-  s.shearRate = gammadot;
+  const SimulationSetup s = periodicCube(mat, box, tc / 50.0, gammadot);
 
-  InsertionRequest rq;
-  rq.lo = s.lo;
-  rq.hi = s.hi;
-  rq.periodic = {true, true, true};
-  rq.radii.assign(static_cast<std::size_t>(n), 0.5 * d);
   std::mt19937_64 rng(7);
-  const auto centres = insertRandomly(rq, rng);
+  const auto centres = randomCentres(s, n, 0.5 * d, rng);
   // Fluctuations with zero mean: a net y momentum P_y would make the momentum about the
   // streaming profile drift as -gammadot P_y t (shear couples y motion into x).
   std::normal_distribution<double> noise(0.0, 0.3);
@@ -173,16 +156,9 @@ TEST(LeesEdwards, RebuildCountsTheOffsetDriftWithBothDisplacements) {
   mat.kt = 0.0;
   mat.mu = 0.0;
   mat.gammaN = 0.0;
-  SimulationSetup s;
-  s.lo = Vec3::Zero();
-  s.hi = Vec3::Constant(10.0);
-  s.periodic = {true, true, true};
-  s.dt = 1e-3;
-  s.skin = 0.3;
-  s.species = 1;
-  s.pairMaterial = {mat};
   const double travel = 0.149;  // per particle and for the offset, over t = 1
-  s.shearRate = travel / 10.0;  // offset drift gammadot L_y t = travel
+  // The offset drifts gammadot L_y t = travel.
+  const SimulationSetup s = periodicCube(mat, 10.0, 1e-3, travel / 10.0);
   const double gap = 0.93;      // each component of the separation from A to B's upper image
   const Vec3 towardB = Vec3(-1.0, 1.0, 0.0).normalized();
   const Vec3 a(5.0, 9.6, 5.0);
@@ -223,22 +199,9 @@ TEST(LeesEdwards, ResumedFromItsCheckpointFileContinuesBitForBit) {
   mat.gammaT = 0.5 * mat.gammaN;
   const int n = 200;
   const double box = std::cbrt(n * M_PI / 6.0 / 0.3);
-  SimulationSetup s;
-  s.lo = Vec3::Zero();
-  s.hi = Vec3::Constant(box);
-  s.periodic = {true, true, true};
-  s.dt = linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0;
-  s.skin = 0.3;
-  s.species = 1;
-  s.pairMaterial = {mat};
-  s.shearRate = 1.0;
-  InsertionRequest rq;
-  rq.lo = s.lo;
-  rq.hi = s.hi;
-  rq.periodic = {true, true, true};
-  rq.radii.assign(static_cast<std::size_t>(n), 0.5);
+  const SimulationSetup s = periodicCube(mat, box, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, 1.0);
   std::mt19937_64 rng(5);
-  const auto centres = insertRandomly(rq, rng);
+  const auto centres = randomCentres(s, n, 0.5, rng);
   auto particles = [&] {
     Particles p;
     for (int i = 0; i < n; ++i) {

@@ -27,21 +27,9 @@ constexpr double kInertialNumber = 0.1;
 const double kTarget = kRho / (kInertialNumber * kInertialNumber);
 
 SimulationSetup controlledBox(double phi) {
-  PairMaterial mat;
-  mat.kn = 1e4 * kRho;
-  mat.kt = 0.0;
-  mat.mu = 0.0;
-  mat.gammaN = gammaForRestitution(0.9, mat.kn, 0.5);
+  const PairMaterial mat = frictionlessUnitMass(1e4 * kRho, 0.9);
   const double box = std::cbrt(kParticles * M_PI / 6.0 / phi);
-  SimulationSetup s;
-  s.lo = Vec3::Zero();
-  s.hi = Vec3::Constant(box);
-  s.periodic = {true, true, true};
-  s.dt = linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0;
-  s.skin = 0.3;
-  s.species = 1;
-  s.pairMaterial = {mat};
-  s.shearRate = 1.0;
+  SimulationSetup s = periodicCube(mat, box, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, 1.0);
   s.pressureControl.stress = kTarget;
   s.pressureControl.relaxationTime = 2.0;  // strain units
   s.pressureControl.interval = 10;

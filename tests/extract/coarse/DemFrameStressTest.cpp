@@ -84,25 +84,11 @@ core::data::ParticleFrame floorFrame() {
 
 core::data::ParticleFrame shearFrame() {
   const double rho = 6.0 / M_PI;  // d = 1, m = 1
-  dem::PairMaterial mat;
-  mat.kn = 1e5 * rho;
-  mat.gammaN = dem::gammaForRestitution(0.9, mat.kn, 0.5);
+  const dem::PairMaterial mat = frictionlessUnitMass(1e5 * rho, 0.9);
   const double box = std::cbrt(250 * M_PI / 6.0 / 0.35);
-  dem::SimulationSetup s;
-  s.lo = Vec3::Zero();
-  s.hi = Vec3::Constant(box);
-  s.periodic = {true, true, true};
-  s.dt = dem::linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0;
-  s.skin = 0.3;
-  s.pairMaterial = {mat};
-  s.shearRate = 1.0;
-  dem::InsertionRequest rq;
-  rq.lo = s.lo;
-  rq.hi = s.hi;
-  rq.periodic = {true, true, true};
-  rq.radii.assign(250, 0.5);
+  const dem::SimulationSetup s = periodicCube(mat, box, dem::linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, 1.0);
   std::mt19937_64 rng(4);
-  const auto centres = dem::insertRandomly(rq, rng);
+  const auto centres = randomCentres(s, 250, 0.5, rng);
   std::normal_distribution<double> noise(0.0, 0.3);
   dem::Particles p;
   for (std::size_t i = 0; i < centres.size(); ++i) {
