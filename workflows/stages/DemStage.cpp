@@ -144,7 +144,7 @@ DemStage::DemStage() {
       .add(ParamSpec::integer("frames").defaultValue(10).min(0).doc(
           "particle + contact frames after the initial one, evenly spaced"))
       .add(ParamSpec::integer("series_points").defaultValue(200).min(1).doc("rows of series.csv, evenly spaced"))
-      .add(ParamSpec::number("skin").defaultValue(0.3).min(0.0).doc("Verlet skin, in largest diameters"))
+      .add(skinParam())
       .add(ParamSpec::string("engine")
                .defaultValue("grainbridge")
                .options(particle_engines::particleEngineNames())
@@ -162,12 +162,9 @@ DemStage::DemStage() {
                .defaultValue(0.0)
                .min(0.0)
                .doc("b of Eq. 6.7 (force -b v)"))
-      .add(ParamSpec::integer("seed").defaultValue(1).min(0).doc("random seed of the insertion"))
-      .add(ParamSpec::objectList("species", speciesSchema()).required().doc("particle species"))
-      .add(ParamSpec::object("contact", contactSchema()).required().doc("particle-particle contact coefficients"))
-      .add(ParamSpec::objectList("pair_contacts", pairContactSchema())
-               .doc("coefficients of particular species pairs (others use contact)"))
-      .add(ParamSpec::objectList("walls", wallSchema()).doc("rigid walls (infinite mass), each with its own material"))
+      .add(seedParam());
+  addSpeciesParams(schema_);  // species, contact, pair_contacts: tfdem's particles declare the same
+  schema_.add(ParamSpec::objectList("walls", wallSchema()).doc("rigid walls (infinite mass), each with its own material"))
       .add(ParamSpec::string("planar")
                .defaultValue("")
                .options({"", "x", "y", "z"})
