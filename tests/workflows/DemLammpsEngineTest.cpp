@@ -17,6 +17,7 @@
 #include "core/io/ParticleFrameReader.hpp"
 #include "engines/lammps/LammpsInput.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/OneGrainData.hpp"
 #include "tests/support/WorkflowResults.hpp"
 
 namespace fs = std::filesystem;
@@ -433,23 +434,7 @@ TEST(DemLammpsEngine, AGrainCrossingTheShearedBoundaryAtAFlipReentersWithTheImag
   TempDir work;
   // At v_y = 0.5 and dt 2e-4 the grain from y = 7.87515 is at 7.99995 after step 1248 and at
   // 8.00005 after step 1249; v_x is about the streaming velocity there, 2 (7.875 - 4).
-  writeText(work.path() / "one.data", R"(one grain
-
-1 atoms
-1 atom types
-
-0 8 xlo xhi
-0 8 ylo yhi
-0 8 zlo zhi
-
-Atoms
-
-1 1 1 1.909859317102744 4 7.87515 4
-
-Velocities
-
-1 7.75 0.5 0 0 0 0
-)");
+  writeText(work.path() / "one.data", oneGrainLammpsData("4 7.87515 4", "7.75 0.5 0 0 0 0"));
   // Plain numbers (a data file is read as written, in the config's units).
   const json cfg = json::parse(R"({
     "name": "wf",

@@ -12,6 +12,7 @@
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/io/ParticleFrameWriter.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/OneGrainData.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge;
@@ -315,23 +316,7 @@ TEST(DemStage, PressureControlledBoxRecordsItsBoxAndStress) {
 // own bare numbers (issue 54: the positions were taken as metres and refused as outside the box).
 TEST(DemStage, LammpsDataIsReadInTheConfigsUnits) {
   TempDir work;
-  writeText(work.path() / "one.data", R"(LAMMPS data file: one grain in reduced units
-
-1 atoms
-1 atom types
-
-0 8 xlo xhi
-0 8 ylo yhi
-0 8 zlo zhi
-
-Atoms
-
-1 1 1 1.909859317102744 4 4 4
-
-Velocities
-
-1 0.5 0 0 0 0 2
-)");
+  writeText(work.path() / "one.data", oneGrainLammpsData("4 4 4", "0.5 0 0 0 0 2"));
   json cfg = json::parse(R"({
     "name": "wf",
     "units": {"system": "reduced", "d0": "2 mm", "m0": "1e-5 kg", "g": "9.81 m/s2"},
