@@ -274,4 +274,13 @@ void from_json(const json& j, FluidSetup& s) {
   s.timeStep.courant = j.at("courant");
 }
 
+LinearSolve linearSolveFromJson(const nlohmann::json& p, const std::string& family) {
+  LinearSolve how;
+  const std::string name = p.at(family + "_solver").get<std::string>();
+  if (name == "bicgstab") how.method = LinearSolve::Method::Iterative;
+  if (name == "gauss_seidel") how.method = LinearSolve::Method::GaussSeidel;
+  how.tolerance = p.at(family + "_solver_tolerance");
+  return how;
+}
+
 }  // namespace grainbridge::fluid

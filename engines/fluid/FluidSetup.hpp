@@ -17,6 +17,7 @@
 #include "core/data/FieldFrame.hpp"
 #include "core/engine/SetupProblem.hpp"
 #include "engines/fluid/Boundaries.hpp"
+#include "engines/fluid/StencilSystem.hpp"
 #include "engines/fluid/TimeStepControl.hpp"
 
 namespace grainbridge::fluid {
@@ -64,6 +65,11 @@ struct FluidSetup {
   // velocities pointing into the domain. Assumes problems() is empty.
   [[nodiscard]] std::vector<BoundaryPatch> patches(std::size_t solidsPhases) const;
 };
+
+// How one family of linear systems ("momentum", "pressure", "fraction") is solved, from the keys
+// `<family>_solver` (direct | bicgstab | gauss_seidel) and `<family>_solver_tolerance`; assumes
+// they were checked against their schema.
+[[nodiscard]] LinearSolve linearSolveFromJson(const nlohmann::json& params, const std::string& family);
 
 // The key a side is written with in a config ("x_low", ..., "z_high"), for a Side.
 [[nodiscard]] const char* sideKey(int side);

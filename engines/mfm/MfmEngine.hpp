@@ -14,18 +14,9 @@
 #include "core/engine/SteppedEngine.hpp"
 #include "core/io/FieldFrameWriter.hpp"
 #include "engines/mfm/MultiFluidEngine.hpp"
+#include "engines/mfm/MultiFluidSetup.hpp"
 
 namespace grainbridge::mfm {
-
-// Everything that builds a MultiFluidEngine, so a restore rebuilds the same one.
-struct MultiFluidSetup {
-  core::data::GridGeometry geometry;
-  std::vector<fluid::BoundaryPatch> patches;
-  MultiFluidParams model;
-  fluid::SimpleSettings settings;
-  fluid::TimeStepLimits limits;
-  double interval = 0.01;  // the driver's step [s]
-};
 
 // 2: each phase's granular temperature too. The flow state is fluid/FlowStateIo's layout at the
 // root, the step, adaptive step and statistics attributes beside it.

@@ -30,24 +30,9 @@
 #include "engines/tfdem/ParticleDeposit.hpp"
 #include "engines/tfdem/ParticleForces.hpp"
 #include "engines/tfdem/ParticleGasModel.hpp"
+#include "engines/tfdem/TfdemSetup.hpp"
 
 namespace grainbridge::tfdem {
-
-struct TfdemSetup {
-  dem::SimulationSetup particles;  // its dt is the DEM step
-  core::data::GridGeometry grid;   // the gas grid (z = 1: 2D, its depth one particle diameter)
-  std::vector<fluid::BoundaryPatch> boundaries;  // the gas's patches (two phases: gas, particles)
-  Gas gas;
-  closures::GasSolidsDrag drag = closures::GasSolidsDrag::byName("ergun_wen_yu");
-  int substeps = 1;  // DEM steps per gas step: fluid_dt = substeps * dt
-  VolumeDeposition deposition = VolumeDeposition::CentreCell;
-  GasReaction gasReaction = GasReaction::CellAverage;
-  ParticleForceSettings forces;  // drag transfer, gas velocity at the particle (forces.gas is set from gas)
-  fluid::SimpleSettings solver;  // gravity, tolerances (packedFraction unused: the particles pack)
-  core::data::Materials materials;  // stamped on every frame
-
-  [[nodiscard]] double fluidDt() const { return substeps * particles.dt; }
-};
 
 class TfdemEngine final : public core::engine::SteppedEngine {
  public:

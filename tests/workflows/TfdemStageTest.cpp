@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/json/Diagnostics.hpp"
 #include "core/units/UnitSystem.hpp"
 #include "engines/closures/SyamlalOBrien.hpp"
 #include "tests/support/Cli.hpp"
@@ -145,6 +146,47 @@ TEST(TfdemStageDrag, SyamlalOBrienCarriesTheConfigsCAndD) {
   const closures::SyamlalOBrien expected{{0.7, 3.44}};
   EXPECT_EQ(setup.engine.drag.evaluate(state).beta, expected.evaluate(state).beta);
   EXPECT_NE(closures::SyamlalOBrien{}.evaluate(state).beta, expected.evaluate(state).beta);
+}
+
+// The particles are built from the keys tfdem shares with dem, typed: the gas's domain is their
+// box, each side of the 2D bed's x-y extent is a plane wall of the `wall` material (the z sides
+// none: nothing moves along z), the bed moves in x-y, and a wall pair's contact time is reported
+// at /wall, the key that sets it. A gas step of 10 DEM steps.
+TEST(TfdemStageSetup, ParticlesTakeTheDomainAsTheirBoxAndPlaneWallsOfTheWallMaterial) {
+  json p = json::parse(kWorkflow)["stages"]["bed"]["params"];
+  p["wall"]["mu"] = 0.35;
+  core::json::Diagnostics d;
+  const workflows::stages::TfdemStage stage;
+  const json resolved = stage.params().resolve(p, {}, core::units::UnitSystem::si(), "/params", d);
+  ASSERT_TRUE(d.empty());
+  const auto setup = workflows::stages::makeTfdemSetup(resolved);
+  ASSERT_TRUE(setup.problems.empty()) << setup.problems.front().pointer << ": " << setup.problems.front().message;
+  const auto& particles = setup.engine.particles;
+  EXPECT_EQ(particles.lo, Vec3::Zero());
+  EXPECT_EQ(particles.hi, Vec3(0.08, 0.24, 0.004));
+  EXPECT_EQ(particles.planarAxis, 2);
+  EXPECT_EQ(setup.engine.substeps, 10);
+  ASSERT_EQ(particles.walls.size(), 4u);
+  for (std::size_t w = 0; w < 4; ++w) {
+    const auto& wall = particles.walls[w];
+    EXPECT_EQ(wall.kind, dem::Wall::Kind::Plane);
+    const int axis = static_cast<int>(w / 2);
+    EXPECT_EQ(std::abs(wall.direction[axis]), 1.0) << w;
+    EXPECT_EQ(wall.origin[axis], w % 2 == 0 ? 0.0 : particles.hi[axis]) << w;
+    ASSERT_EQ(wall.material.size(), 1u);
+    EXPECT_EQ(wall.material[0].mu, 0.35);
+    EXPECT_EQ(wall.material[0].kn, 1200.0);
+  }
+  EXPECT_EQ(particles.material(0, 0).mu, 0.2);  // the particles' own contact
+  std::size_t wallTimings = 0;
+  for (const auto& t : setup.dem.timings) {
+    if (t.pair.find("wall") != std::string::npos) {
+      EXPECT_EQ(t.pointer, "/wall") << t.pair;
+      ++wallTimings;
+    }
+  }
+  EXPECT_EQ(wallTimings, 4u);
+  EXPECT_EQ(setup.engine.materials.walls.size(), 4u);
 }
 
 // bed_compare reads a tfdem run through its products alone (DESIGN.md, "Stage contracts"): it

@@ -9,6 +9,7 @@
 #include "core/Log.hpp"
 #include "core/io/LammpsDataReader.hpp"
 #include "core/io/ParticleFrameReader.hpp"
+#include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/dem/Insertion.hpp"
 #include "engines/dem/LatticeInsertion.hpp"
@@ -31,13 +32,11 @@ struct SpeciesInsertion {
 
 // The insertion region (insert_lo/hi, default the box; inside a cylinder wall if there is one),
 // the placed particles as fixed spheres, and the rest of each species' count to insert.
-SpeciesInsertion speciesInsertion(const json& p, const DemSetup& setup) {
+SpeciesInsertion speciesInsertion(const InsertionChoice& choice, const DemSetup& setup) {
   SpeciesInsertion out;
   dem::InsertionRequest& request = out.request;
-  request.lo =
-      p.contains("insert_lo") ? Vec3(p["insert_lo"][0], p["insert_lo"][1], p["insert_lo"][2]) : setup.engine.lo;
-  request.hi =
-      p.contains("insert_hi") ? Vec3(p["insert_hi"][0], p["insert_hi"][1], p["insert_hi"][2]) : setup.engine.hi;
+  request.lo = choice.lo.value_or(setup.engine.lo);
+  request.hi = choice.hi.value_or(setup.engine.hi);
   request.periodic = setup.engine.periodic;
   for (const auto& w : setup.engine.walls) {
     if (w.kind == dem::Wall::Kind::Cylinder) {
@@ -56,14 +55,12 @@ SpeciesInsertion speciesInsertion(const json& p, const DemSetup& setup) {
   std::vector<int>& placedSpecies = out.placedSpecies;
   std::vector<std::int64_t> remaining;
   for (const auto& s : setup.species) remaining.push_back(s.count);
-  if (p.contains("place")) {
-    for (const auto& pl : p["place"]) {
-      const int s = speciesIndex(pl.at("species"));
-      placedSpecies.push_back(s);
-      --remaining[static_cast<std::size_t>(s)];
-      request.fixedCentres.emplace_back(pl["position"][0], pl["position"][1], pl["position"][2]);
-      request.fixedRadii.push_back(setup.species[static_cast<std::size_t>(s)].radius);
-    }
+  for (const auto& placed : choice.place) {
+    const int s = speciesIndex(placed.species);
+    placedSpecies.push_back(s);
+    --remaining[static_cast<std::size_t>(s)];
+    request.fixedCentres.push_back(placed.position);
+    request.fixedRadii.push_back(setup.species[static_cast<std::size_t>(s)].radius);
   }
   for (std::size_t s = 0; s < setup.species.size(); ++s) {
     for (std::int64_t k = 0; k < remaining[s]; ++k) {
@@ -76,10 +73,22 @@ SpeciesInsertion speciesInsertion(const json& p, const DemSetup& setup) {
 
 }  // namespace
 
-std::optional<core::engine::SetupProblem> randomInsertionProblem(const json& p, const DemSetup& setup) {
-  if (p.contains("lammps_data") || p.contains("initial_frame") || p.value("insertion", "random") != "random")
+void from_json(const json& p, InsertionChoice& c) {
+  if (p.contains("insert_lo")) c.lo = core::json::vec3FromJson(p.at("insert_lo"));
+  if (p.contains("insert_hi")) c.hi = core::json::vec3FromJson(p.at("insert_hi"));
+  for (const auto& placed : p.value("place", json::array()))
+    c.place.push_back({placed.at("species").get<std::string>(), core::json::vec3FromJson(placed.at("position"))});
+  c.lattice = p.value("insertion", std::string("random")) == "fcc_lattice";
+  c.seed = p.at("seed").get<std::uint64_t>();
+  c.initialTemperature = p.value("initial_temperature", 0.0);
+  c.fromFile = p.contains("lammps_data") || p.contains("initial_frame");
+}
+
+std::optional<core::engine::SetupProblem> randomInsertionProblem(const InsertionChoice& choice, const DemSetup& setup,
+                                                                 const std::string& boxKeys) {
+  if (choice.fromFile || choice.lattice)
     return std::nullopt;  // a state read from a file or a lattice: nothing is inserted at random
-  const SpeciesInsertion insertion = speciesInsertion(p, setup);
+  const SpeciesInsertion insertion = speciesInsertion(choice, setup);
   const double fraction = dem::requestedSolidFraction(insertion.request);
   if (!(fraction > dem::kRandomInsertionJamming)) return std::nullopt;
   // Every species shares the one region: name each one inserted, and point at the count when
@@ -96,8 +105,7 @@ std::optional<core::engine::SetupProblem> randomInsertionProblem(const json& p, 
   }
   const Vec3 extent = insertion.request.hi - insertion.request.lo;
   // The region's keys as the user wrote them: the numbers below are SI.
-  const std::string region =
-      p.contains("insert_lo") || p.contains("insert_hi") ? "insert_lo/insert_hi" : "box_lo/box_hi";
+  const std::string region = choice.lo || choice.hi ? "insert_lo/insert_hi" : boxKeys;
   return core::engine::SetupProblem{
       contributing == 1 ? "/species/" + std::to_string(last) + "/count" : "/species",
       std::to_string(insertion.speciesOf.size()) + " spheres to insert at random (" + counts + ") would fill " +
@@ -110,25 +118,24 @@ std::optional<core::engine::SetupProblem> randomInsertionProblem(const json& p, 
 
 // Every species at random, without overlap, in the insertion region (inside a cylinder wall
 // if there is one).
-dem::Particles insertSpecies(const StageContext& ctx, const json& p, const DemSetup& setup) {
-  SpeciesInsertion insertion = speciesInsertion(p, setup);
+dem::Particles insertSpecies(const StageContext& ctx, const InsertionChoice& choice, const DemSetup& setup) {
+  SpeciesInsertion insertion = speciesInsertion(choice, setup);
   dem::InsertionRequest& request = insertion.request;
   const std::vector<int>& placedSpecies = insertion.placedSpecies;
   const std::vector<int>& speciesOf = insertion.speciesOf;
   request.progress = [&](std::size_t) {
     if (ctx.stopRequested()) throw StageInterrupted{};
   };
-  std::mt19937_64 rng(p.at("seed").get<std::uint64_t>());
+  std::mt19937_64 rng(choice.seed);
   double largest = 0.0;
   for (double r : request.radii) largest = std::max(largest, 2.0 * r);
-  const auto centres = p.at("insertion") == "fcc_lattice"
-                           ? dem::fccLatticeSites(request.lo, request.hi, request.radii.size(), largest, rng)
-                           : dem::insertRandomly(request, rng);
+  const auto centres = choice.lattice ? dem::fccLatticeSites(request.lo, request.hi, request.radii.size(), largest, rng)
+                                      : dem::insertRandomly(request, rng);
   // Velocity fluctuations of the mobile particles: Maxwellian with exactly zero total momentum
   // about the streaming profile (under shear a net y momentum P_y would drive x momentum as
   // -gammadot P_y t) and exactly the asked T.
   std::vector<Vec3> fluctuation(centres.size(), Vec3::Zero());
-  if (const double T0 = p.at("initial_temperature").get<double>(); T0 > 0.0) {
+  if (const double T0 = choice.initialTemperature; T0 > 0.0) {
     std::vector<std::size_t> mobile;
     for (std::size_t i = 0; i < centres.size(); ++i) {
       if (!setup.species[static_cast<std::size_t>(speciesOf[i])].frozen) mobile.push_back(i);

@@ -3,6 +3,7 @@
 // particles), a LAMMPS data file or a saved frame, and Section 6.2's two-step preparation.
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/engine/SetupProblem.hpp"
@@ -13,15 +14,34 @@
 
 namespace grainbridge::workflows::stages {
 
-// Every species at random without overlap, placed particles first (ids 0..), by the `dem` params
-// `p` (insert_lo/hi, place, insertion, seed, initial_temperature); a stop asked of `ctx` ends it.
-dem::Particles insertSpecies(const StageContext& ctx, const nlohmann::json& p, const DemSetup& setup);
+// How a run's particles are inserted, from the `dem` stage's insert_lo/hi, place, insertion, seed
+// and initial_temperature (tfdem writes insert_lo/hi and seed only: its particles start at rest,
+// at random), and whether its state is read from a file instead (lammps_data, initial_frame).
+struct InsertionChoice {
+  std::optional<Vec3> lo, hi;  // insert_lo/hi; none: the box
+  struct Placed {
+    std::string species;
+    Vec3 position;
+  };
+  std::vector<Placed> place;  // inserted first (ids 0..), then the rest at random
+  bool lattice = false;       // insertion "fcc_lattice"
+  std::uint64_t seed = 0;
+  double initialTemperature = 0.0;  // T0 of the mobile particles' Maxwellian velocities [m^2/s^2]
+  bool fromFile = false;            // lammps_data or initial_frame: nothing is inserted
+};
+void from_json(const nlohmann::json& p, InsertionChoice& c);
+
+// Every species at random without overlap, placed particles first (ids 0..); a stop asked of
+// `ctx` ends it.
+dem::Particles insertSpecies(const StageContext& ctx, const InsertionChoice& choice, const DemSetup& setup);
 // Why the species' counts cannot be inserted at random into their region, or nothing: the
 // spheres to insert (placed ones aside) would fill more of it than the solid fraction near which
 // random insertion jams (dem::kRandomInsertionJamming), summed over every species since all share
 // the region. Nothing for a state read from a file or an fcc lattice. The run would otherwise
-// fail at its insertion, after the stages before it ran.
-std::optional<core::engine::SetupProblem> randomInsertionProblem(const nlohmann::json& p, const DemSetup& setup);
+// fail at its insertion, after the stages before it ran. `boxKeys` names the box the region
+// defaults to as the stage writes it ("box_lo/box_hi").
+std::optional<core::engine::SetupProblem> randomInsertionProblem(const InsertionChoice& choice, const DemSetup& setup,
+                                                                 const std::string& boxKeys);
 // Atoms of a LAMMPS data file, types mapped to species by lammps_types. The file's numbers are in
 // the config's unit system, as its bare numbers are (SI, or d0, m0, t0 when reduced).
 dem::Particles readLammpsParticles(const nlohmann::json& params, const DemSetup& setup,

@@ -55,26 +55,9 @@ double effectiveMass(double ma, bool frozenA, double mb, bool frozenB) {
 
 }  // namespace
 
-DemSetup makeDemSetup(const json& p) {
+DemSetup makeParticleSetup(const json& p) {
   DemSetup out;
   auto& e = out.engine;
-  e.lo = core::json::vec3FromJson(p.at("box_lo"));
-  e.hi = core::json::vec3FromJson(p.at("box_hi"));
-  const std::string periodic = p.at("periodic");
-  for (int a = 0; a < 3; ++a) e.periodic[static_cast<std::size_t>(a)] = periodic.find("xyz"[a]) != std::string::npos;
-  e.gravity = core::json::vec3FromJson(p.at("gravity"));
-  out.materials.gravity = e.gravity;
-  e.backgroundDamping = p.at("background_damping");
-  for (const auto& id : p.at("track_ids")) out.trackedIds.push_back(std::llround(id.get<double>()));
-  e.shearRate = p.at("shear_rate");
-  if (p.contains("pressure_control")) {
-    const auto& pc = p.at("pressure_control");
-    e.pressureControl.stress = pc.at("stress");
-    e.pressureControl.relaxationTime = pc.at("relaxation_time");
-    e.pressureControl.interval = pc.at("interval");
-  }
-  const std::string planar = p.at("planar");
-  e.planarAxis = planar.empty() ? -1 : planar[0] - 'x';
   e.dt = p.at("dt");
   e.contact = {p.at("normal_model"), p.at("damping_model"), p.at("tangential_model")};
   const auto law = dem::contact::findContactLaw(e.contact);
@@ -117,6 +100,45 @@ DemSetup makeDemSetup(const json& p) {
       }
     }
   }
+  return out;
+}
+
+void addWall(DemSetup& setup, dem::Wall wall, const json& contact, const std::string& pointer) {
+  const auto law = dem::contact::findContactLaw(setup.engine.contact);
+  if (!law) return;  // makeParticleSetup made no materials either
+  const std::size_t w = setup.engine.walls.size();
+  for (const auto& s : setup.species) {
+    wall.material.push_back(material(contact, *law, s.mass, 2.0 * s.radius));
+    setup.timings.push_back(timing(s.name + "-wall " + std::to_string(w), pointer, contact, *law, wall.material.back(),
+                                   s.mass, 2.0 * s.radius));
+    const auto si = static_cast<std::int32_t>(wall.material.size() - 1);
+    const dem::PairMaterial& m = wall.material.back();
+    setup.materials.walls.push_back(
+        {si, si, static_cast<std::int32_t>(w), setup.timings.back().restitution, m.mu, m.kn, m.kt});
+  }
+  setup.engine.walls.push_back(std::move(wall));
+}
+
+DemSetup makeDemSetup(const json& p) {
+  DemSetup out = makeParticleSetup(p);
+  auto& e = out.engine;
+  e.lo = core::json::vec3FromJson(p.at("box_lo"));
+  e.hi = core::json::vec3FromJson(p.at("box_hi"));
+  const std::string periodic = p.at("periodic");
+  for (int a = 0; a < 3; ++a) e.periodic[static_cast<std::size_t>(a)] = periodic.find("xyz"[a]) != std::string::npos;
+  e.gravity = core::json::vec3FromJson(p.at("gravity"));
+  out.materials.gravity = e.gravity;
+  e.backgroundDamping = p.at("background_damping");
+  for (const auto& id : p.at("track_ids")) out.trackedIds.push_back(std::llround(id.get<double>()));
+  e.shearRate = p.at("shear_rate");
+  if (p.contains("pressure_control")) {
+    const auto& pc = p.at("pressure_control");
+    e.pressureControl.stress = pc.at("stress");
+    e.pressureControl.relaxationTime = pc.at("relaxation_time");
+    e.pressureControl.interval = pc.at("interval");
+  }
+  const std::string planar = p.at("planar");
+  e.planarAxis = planar.empty() ? -1 : planar[0] - 'x';
   if (p.contains("walls")) {
     const json& walls = p.at("walls");
     for (std::size_t w = 0; w < walls.size(); ++w) {
@@ -130,16 +152,7 @@ DemSetup makeDemSetup(const json& p) {
       wall.vibration.frequency = wj.at("vibration_frequency");
       wall.vibration.direction = core::json::vec3FromJson(wj.at("vibration_direction")).normalized();
       wall.vibration.start = dem::vibrationStartFromName(wj.at("vibration_start"));
-      for (const auto& s : out.species) {
-        wall.material.push_back(material(wj, *law, s.mass, 2.0 * s.radius));
-        out.timings.push_back(timing(s.name + "-wall " + std::to_string(w), "/walls/" + std::to_string(w), wj, *law,
-                                     wall.material.back(), s.mass, 2.0 * s.radius));
-        const auto si = static_cast<std::int32_t>(wall.material.size() - 1);
-        const dem::PairMaterial& m = wall.material.back();
-        out.materials.walls.push_back(
-            {si, si, static_cast<std::int32_t>(w), out.timings.back().restitution, m.mu, m.kn, m.kt});
-      }
-      e.walls.push_back(std::move(wall));
+      addWall(out, std::move(wall), wj, "/walls/" + std::to_string(w));
     }
   }
   return out;

@@ -43,4 +43,13 @@ struct DemSetup {
 // Builds the setup; assumes individually valid parameters.
 DemSetup makeDemSetup(const nlohmann::json& params);
 
+// The particles alone, from the keys the dem and tfdem stages share (ParticleSchema.hpp: species,
+// contact, pair_contacts, skin, dt and the contact sub-models): species, pair materials and their
+// timings, the frames' species and pairs. The box, gravity and walls are the caller's.
+DemSetup makeParticleSetup(const nlohmann::json& params);
+
+// Appends `wall` with one material per species from the contact keys `contact` (a wall object, or
+// a material written once for several walls), its timings at `pointer` (below /params).
+void addWall(DemSetup& setup, dem::Wall wall, const nlohmann::json& contact, const std::string& pointer);
+
 }  // namespace grainbridge::workflows::stages

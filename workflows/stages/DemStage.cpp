@@ -229,11 +229,13 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     d.add(ptr + "/initial_temperature",
           "applies to inserted particles; a state from lammps_data or initial_frame keeps its own velocities");
   }
+  // The contact checks list SetupProblems (the one problem type); each is reported where it is found.
+  auto report = [&d, &ptr](std::vector<core::engine::SetupProblem> problems) {
+    for (auto& problem : problems) d.add(ptr + problem.pointer, std::move(problem.message));
+  };
+  report(checkSpeciesParams(p));
   std::set<std::string> names;
-  for (std::size_t i = 0; i < p.at("species").size(); ++i) {
-    if (!names.insert(p["species"][i].at("name").get<std::string>()).second)
-      d.add(ptr + "/species/" + std::to_string(i) + "/name", "species name used twice");
-  }
+  for (const auto& s : p.at("species")) names.insert(s.at("name").get<std::string>());
   std::map<std::string, std::int64_t> placedOf;
   if (p.contains("place")) {
     for (std::size_t k = 0; k < p["place"].size(); ++k) {
@@ -246,22 +248,6 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
       if (placedOf[s.at("name")] > s.at("count").get<std::int64_t>())
         d.add(ptr + "/place",
               "more particles of species \"" + s.at("name").get<std::string>() + "\" placed than its count");
-    }
-  }
-  // The contact checks list SetupProblems (the one problem type); each is reported where it is found.
-  auto report = [&d](std::vector<core::engine::SetupProblem> problems) {
-    for (auto& problem : problems) d.add(std::move(problem.pointer), std::move(problem.message));
-  };
-  report(checkContactKeys(p.at("contact"), p, ptr + "/contact"));
-  if (p.contains("pair_contacts")) {
-    for (std::size_t k = 0; k < p["pair_contacts"].size(); ++k) {
-      const json& pc = p["pair_contacts"][k];
-      const std::string where = ptr + "/pair_contacts/" + std::to_string(k);
-      report(checkContactKeys(pc, p, where));
-      for (const char* f : {"species", "with"}) {
-        if (names.count(pc.at(f).get<std::string>()) == 0)
-          d.add(where + "/" + f, "no species named \"" + pc.at(f).get<std::string>() + "\"");
-      }
     }
   }
   if (p.contains("lammps_types")) {
@@ -301,7 +287,7 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     for (std::size_t w = 0; w < p["walls"].size(); ++w) {
       const json& wj = p["walls"][w];
       const std::string where = ptr + "/walls/" + std::to_string(w);
-      report(checkContactKeys(wj, p, where));
+      report(checkContactKeys(wj, p, "/walls/" + std::to_string(w)));
       const auto& dir = wj.at("direction");
       if (std::hypot(dir[0].get<double>(), dir[1].get<double>(), dir[2].get<double>()) == 0.0)
         d.add(where + "/direction", "direction must not be zero");
@@ -335,9 +321,9 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     d.add(ptr + problem.pointer, problem.message);
   // Spheres that cannot all be inserted at random fail the run at its start, after the stages
   // before it ran: refused here from their volume.
-  if (const auto problem = randomInsertionProblem(p, setup))
+  if (const auto problem = randomInsertionProblem(p.get<InsertionChoice>(), setup, "box_lo/box_hi"))
     d.add(ptr + problem->pointer, problem->message + "; or use insertion \"fcc_lattice\" for a denser start");
-  report(checkContactTimes(setup, p.at("dt"), ptr));
+  report(checkContactTimes(setup, p.at("dt"), ""));
 }
 
 namespace {
@@ -373,7 +359,7 @@ void refuseOverlappingState(const StageContext& ctx, const dem::Simulation& sim)
 bool stateFromFile(const json& p) { return p.contains("lammps_data") || p.contains("initial_frame"); }
 dem::Particles initialParticles(const StageContext& ctx, const DemSetup& setup) {
   const json& p = ctx.params();
-  if (!stateFromFile(p)) return insertSpecies(ctx, p, setup);
+  if (!stateFromFile(p)) return insertSpecies(ctx, p.get<InsertionChoice>(), setup);
   dem::Particles particles =
       p.contains("lammps_data") ? readLammpsParticles(p, setup, ctx.units()) : readFrameParticles(p, setup);
   refuseOverlappingState(ctx, dem::Simulation(setup.engine, particles));

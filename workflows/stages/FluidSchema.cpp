@@ -65,15 +65,6 @@ void addLinearSolveParams(ParamSchema& s, const std::string& family, const std::
                .doc("bicgstab, gauss_seidel: each " + family + " solve's residual norm over its right-hand side's"));
 }
 
-fluid::LinearSolve readLinearSolve(const json& p, const std::string& family) {
-  fluid::LinearSolve how;
-  const std::string name = p.at(family + "_solver").get<std::string>();
-  if (name == "bicgstab") how.method = fluid::LinearSolve::Method::Iterative;
-  if (name == "gauss_seidel") how.method = fluid::LinearSolve::Method::GaussSeidel;
-  how.tolerance = p.at(family + "_solver_tolerance");
-  return how;
-}
-
 std::shared_ptr<const ParamSchema> tapSchema() {
   auto s = std::make_shared<ParamSchema>();
   s->add(ParamSpec::string("name").required().doc("column name: series.csv gets dp_<name>"))

@@ -28,8 +28,7 @@ std::shared_ptr<const params::ParamSchema> tapSchema();
 // the right-hand side's.
 void addLinearSolveParams(params::ParamSchema& s, const std::string& family, const std::string& method,
                           double tolerance, const std::string& doc);
-// The two keys addLinearSolveParams declared, read back (the schema's checks have passed).
-[[nodiscard]] fluid::LinearSolve readLinearSolve(const nlohmann::json& params, const std::string& family);
+// fluid::linearSolveFromJson reads the two keys back.
 
 struct PressureTap {
   std::string name;

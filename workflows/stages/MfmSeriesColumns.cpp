@@ -111,11 +111,11 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
     lastSteps_ = stats.steps;
     lastIterations_ = stats.iterations;
     lastRetries_ = stats.retries;
-    nextLog_ = state.time + 0.1 * setup_.duration;
+    nextLog_ = state.time + 0.1 * setup_.schedule.duration;
   }
   // The window: from average_from to average_to (to round-off in the sampling times).
   const double slack = 1e-9 * setup_.engine.interval;
-  if (state.time >= setup_.averageFrom - slack && state.time <= setup_.averageTo + slack) {
+  if (state.time >= setup_.schedule.averageFrom - slack && state.time <= setup_.schedule.averageTo + slack) {
     for (std::size_t k = 0; k < names_.size(); ++k) window_[names_[k]].push_back(values[k]);
     windowTimes_.push_back(state.time);
     fields_.add(engine_.frame());

@@ -1,8 +1,9 @@
 #pragma once
-// Turns the `mfm` stage's resolved parameters (SI) into the multi-fluid engine's setup and
-// initial state, and lists what must stop a run before its first step, each at the JSON pointer
-// of the parameter at fault (below /params). The stage's config check and its run both call it,
-// so both see the same numbers and each rule is written once.
+// The `mfm` stage's wiring of its set-up: the engine's set-up (mfm::MultiFluidSetup, which reads
+// the stage's keys and lists the physics rules' problems itself), the initial regions, the DEM
+// closure tables and mu(I) rheology the run reads, the schedule, the pressure taps and the
+// segregation measure, with every problem at the JSON pointer of the key at fault (below /params).
+// The stage's config check and its run both call it, so both see the same numbers.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -13,26 +14,19 @@
 #include "core/engine/SetupProblem.hpp"
 #include "engines/mfm/InitialRegions.hpp"
 #include "engines/mfm/MfmEngine.hpp"
+#include "engines/mfm/Segregation.hpp"
 #include "workflows/stages/FluidSchema.hpp"
+#include "workflows/stages/OutputSchedule.hpp"
 #include "workflows/stages/PlannedOutput.hpp"
 
 namespace grainbridge::workflows::stages {
-
-// The two phases of a binary bed's segregation percentage (0-based among the solids) and the
-// small particles' share of the initial solids volume, x_small of Eq. 5.25.
-struct Segregation {
-  std::size_t small = 0, large = 1;
-  double smallShare = 0.5;
-};
 
 struct MfmSetup {
   mfm::MultiFluidSetup engine;
   mfm::InitialState initial;
   std::vector<PressureTap> taps;
-  double duration = 0.0;
-  double averageFrom = 0.0;
-  double averageTo = 0.0;  // average_to, default the duration
-  std::optional<Segregation> segregation;
+  RunSchedule schedule;
+  std::optional<mfm::Segregation> segregation;
   // Pointers below /params: empty when the run may start.
   std::vector<core::engine::SetupProblem> problems;
   // What may run but is likely not what was meant (pointers below /params); the config check

@@ -37,4 +37,19 @@ std::string outputIntervalProblem(double interval, double duration, double step,
          std::to_string(fewest) + " intervals)";
 }
 
+RunSchedule readRunSchedule(const nlohmann::json& p, std::vector<core::engine::SetupProblem>& problems) {
+  RunSchedule s;
+  s.duration = p.at("duration");
+  s.outputInterval = p.at("output_interval");
+  s.averageFrom = p.at("average_from");
+  s.averageTo = p.contains("average_to") ? p.at("average_to").get<double>() : s.duration;
+  if (s.averageFrom >= s.duration)
+    problems.push_back({"/average_from", "must be before the end of the run (duration)"});
+  if (s.averageTo > s.duration * (1.0 + 1e-12))
+    problems.push_back({"/average_to", "is after the end of the run (duration)"});
+  if (s.averageTo <= s.averageFrom) problems.push_back({"/average_to", "must be after average_from"});
+  if (s.outputInterval > s.duration) problems.push_back({"/output_interval", "is longer than the run (duration)"});
+  return s;
+}
+
 }  // namespace grainbridge::workflows::stages

@@ -6,7 +6,11 @@
 // and whatever reads them at the nominal interval (the pressure drop's dominant frequency) is off
 // by the ratio. The stages refuse such an interval at `grainbridge check`, with one rule here.
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
+
+#include "core/engine/SetupProblem.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -21,5 +25,18 @@ namespace grainbridge::workflows::stages {
 // offered instead. An interval above the duration is the caller's other message.
 [[nodiscard]] std::string outputIntervalProblem(double interval, double duration, double step = 0.0,
                                                 const std::string& stepName = "");
+
+// The run's length, its series interval and its averaging window as the continuum stages write
+// them: duration, output_interval, average_from, average_to (default: the duration).
+struct RunSchedule {
+  double duration = 0.0;
+  double outputInterval = 0.0;
+  double averageFrom = 0.0;
+  double averageTo = 0.0;
+};
+
+// The schedule of resolved params `p`, with what makes it unusable appended to `problems`
+// (pointers below /params): a window not inside the run or empty, an interval longer than the run.
+[[nodiscard]] RunSchedule readRunSchedule(const nlohmann::json& p, std::vector<core::engine::SetupProblem>& problems);
 
 }  // namespace grainbridge::workflows::stages

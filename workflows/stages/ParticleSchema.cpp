@@ -1,5 +1,7 @@
 #include "workflows/stages/ParticleSchema.hpp"
 
+#include <set>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -165,6 +167,32 @@ std::vector<core::engine::SetupProblem> checkContactTimes(const DemSetup& setup,
   }
   msg << "; the reference recommends about t_c/50";
   problems.emplace_back(ptr + "/dt", msg.str());
+  return problems;
+}
+
+std::vector<core::engine::SetupProblem> checkSpeciesParams(const nlohmann::json& p) {
+  std::vector<core::engine::SetupProblem> problems;
+  std::set<std::string> names;
+  const auto& species = p.at("species");
+  for (std::size_t k = 0; k < species.size(); ++k) {
+    if (!names.insert(species[k].at("name").get<std::string>()).second)
+      problems.push_back({"/species/" + std::to_string(k) + "/name", "species name used twice"});
+  }
+  auto append = [&problems](std::vector<core::engine::SetupProblem> more) {
+    for (auto& problem : more) problems.push_back(std::move(problem));
+  };
+  append(checkContactKeys(p.at("contact"), p, "/contact"));
+  if (p.contains("pair_contacts")) {
+    for (std::size_t k = 0; k < p.at("pair_contacts").size(); ++k) {
+      const nlohmann::json& pc = p.at("pair_contacts")[k];
+      const std::string where = "/pair_contacts/" + std::to_string(k);
+      append(checkContactKeys(pc, p, where));
+      for (const char* f : {"species", "with"}) {
+        if (names.count(pc.at(f).get<std::string>()) == 0)
+          problems.push_back({where + "/" + f, "no species named \"" + pc.at(f).get<std::string>() + "\""});
+      }
+    }
+  }
   return problems;
 }
 

@@ -31,6 +31,10 @@ void addContactParams(params::ParamSchema& s);
 // species (required), contact (required) and pair_contacts, in this order: the particles and
 // their contact coefficients as every stage that runs the DEM declares them.
 void addSpeciesParams(params::ParamSchema& s);
+// What addSpeciesParams' keys cannot be, each at its pointer below /params: a species name used
+// twice, a contact object (`contact`, each of pair_contacts) with keys its damping model does not
+// take, a pair contact naming no species.
+[[nodiscard]] std::vector<core::engine::SetupProblem> checkSpeciesParams(const nlohmann::json& p);
 // skin: the Verlet skin in largest diameters; seed: the random seed of the insertion.
 params::ParamSpec skinParam();
 params::ParamSpec seedParam();

@@ -1,18 +1,16 @@
 #pragma once
-// Turns the `tfdem` stage's resolved parameters (SI) into the TF-DEM engine's setup (particles,
-// gas grid and patches, coupling choices), the initial gas and the run's schedule, and lists what
-// must stop a run before its first step, each at the JSON pointer of the key at fault (below
-// /params). The particle keys are the `dem` stage's and are turned into a `dem` params object
-// (the box the gas's domain, plane walls on every side of the `wall` material) so the same code
-// builds the particles' materials and checks their contact times; the gas keys are the `mfm`
-// stage's, checked by the fluid set-up with the fixed step fluid_dt. The stage's config check and
-// its run both call it.
+// The `tfdem` stage's wiring of its set-up: the engine's (tfdem::TfdemSetup reads the gas and
+// coupling keys and checks the coupling's rules), the particles from the keys tfdem shares with
+// the `dem` stage (the gas's domain their box, plane walls of the `wall` material on every side it
+// has, random insertion), the initial gas and the run's schedule, with every problem at the JSON
+// pointer of the key at fault (below /params). The stage's config check and its run both call it.
 #include <cstdint>
 #include <nlohmann/json.hpp>
 
 #include "core/engine/SetupProblem.hpp"
 #include "engines/fluid/BedMeasures.hpp"
 #include "engines/tfdem/TfdemEngine.hpp"
+#include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DemSetup.hpp"
 #include "workflows/stages/FluidSchema.hpp"
 
@@ -20,8 +18,8 @@ namespace grainbridge::workflows::stages {
 
 struct TfdemStageSetup {
   tfdem::TfdemSetup engine;
-  DemSetup dem;                // species, contact timings, materials
-  nlohmann::json demParams;    // the `dem` params the particle keys make (insertion reads them)
+  DemSetup dem;               // species, contact timings, materials
+  InsertionChoice insertion;  // insert_lo/hi and seed: the particles start at rest, at random
   Vec3 initialGasVelocity = Vec3::Zero();
   double initialPressure = 101325.0;  // the first pressure outlet's, else atmospheric
   std::vector<PressureTap> taps;

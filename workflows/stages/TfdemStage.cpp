@@ -185,7 +185,7 @@ void TfdemStage::run(StageContext& ctx) const {
           for (int a = 0; a < 3; ++a)
             gas.phases[0].velocity[static_cast<std::size_t>(a)][c] = setup.initialGasVelocity[a];
         }
-        return std::make_unique<tfdem::TfdemEngine>(setup.engine, insertSpecies(ctx, setup.demParams, setup.dem), gas,
+        return std::make_unique<tfdem::TfdemEngine>(setup.engine, insertSpecies(ctx, setup.insertion, setup.dem), gas,
                                                     ctx.outputDir(), stamp);
       },
       [&](const std::filesystem::path& state) {
