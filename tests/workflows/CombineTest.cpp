@@ -11,7 +11,7 @@
 
 #include "tests/support/Cli.hpp"
 #include "tests/support/TempDir.hpp"
-#include "workflows/report/NumericCsv.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::testing;
@@ -41,7 +41,7 @@ TEST(Combine, SmokeFeedsEachPhaseAsItsInletSaysAndKeepsEveryBalance) {
   EXPECT_LT(summary.at("mass_out_grain").get<double>(), 1e-9 * grainFed);
   EXPECT_GT(summary.at("mean_height_chaff").get<double>(), summary.at("mean_height_grain").get<double>());
 
-  const auto series = workflows::report::readNumericCsv(run / "series.csv");
+  const auto series = workflows::contract::readNumericCsv(run / "series.csv");
   const auto& time = series.at("time");
   ASSERT_EQ(time.size(), 30u);
   EXPECT_LT(series.at("mean_height_grain").back(), series.at("mean_height_grain")[4]);

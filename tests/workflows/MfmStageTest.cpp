@@ -21,7 +21,7 @@
 #include "tests/support/CsvLine.hpp"
 #include "tests/support/TinyShear.hpp"
 #include "tests/support/WorkflowResults.hpp"
-#include "workflows/report/NumericCsv.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge::testing;
@@ -46,7 +46,7 @@ TEST(MfmStage, GrainSmokeWritesFramesMeanFieldsSeriesAndAFluidizationCurve) {
               "mass_out_grain_y_high");
     // A row every output_interval (0.01 s: the solver's adaptive steps land on each), and the
     // throughput counts the solver's steps, not the rows (issue 54).
-    const auto columns = grainbridge::workflows::report::readNumericCsv(bed / "series.csv");
+    const auto columns = grainbridge::workflows::contract::readNumericCsv(bed / "series.csv");
     const auto& times = columns.at("time");
     for (std::size_t k = 0; k < times.size(); ++k)
       EXPECT_NEAR(times[k], 0.01 * static_cast<double>(k + 1), 1e-12) << "row " << k;

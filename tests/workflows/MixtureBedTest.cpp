@@ -21,9 +21,9 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/FieldFrameReader.hpp"
-#include "workflows/report/NumericCsv.hpp"
 #include "tests/support/Cli.hpp"
 #include "tests/support/CsvLine.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge;
@@ -113,7 +113,7 @@ TEST(MixtureBed, BinarySmokeWritesTheSegregationOutputsAndKeepsEachPhase) {
   for (const char* phase : {"small", "large"}) {
     EXPECT_LT(std::abs(summary.at(std::string("solids_volume_change_") + phase).get<double>()), 1e-10) << phase;
   }
-  const auto series = workflows::report::readNumericCsv(bed / "series.csv");
+  const auto series = workflows::contract::readNumericCsv(bed / "series.csv");
   const auto& sp = series.at("segregation_percentage");
   ASSERT_EQ(sp.size(), 30u);
   // Perfectly mixed at the start: s_p begins near zero, and Eq. 5.23 keeps it in [-1, 1] here.
@@ -125,10 +125,10 @@ TEST(MixtureBed, BinarySmokeWritesTheSegregationOutputsAndKeepsEachPhase) {
     if (series.at("time")[k] >= 0.1 - 1e-9) windowSum += sp[k], ++windowSamples;
   }
   EXPECT_NEAR(summary.at("segregation_percentage").get<double>(), windowSum / windowSamples, 1e-12);
-  const auto blocks = workflows::report::readNumericCsv(bed / "segregation_blocks.csv");
+  const auto blocks = workflows::contract::readNumericCsv(bed / "segregation_blocks.csv");
   ASSERT_EQ(blocks.at("samples").size(), 1u);  // 0.3 s: one (partial) 1 s block of 30 samples
   EXPECT_EQ(blocks.at("samples")[0], 30.0);
-  const auto profiles = workflows::report::readNumericCsv(bed / "profiles.csv");
+  const auto profiles = workflows::contract::readNumericCsv(bed / "profiles.csv");
   ASSERT_EQ(profiles.at("height").size(), 45u);
   EXPECT_NEAR(profiles.at("height")[0], 0.005, 1e-15);
   // The bed's lowest 10 cm holds both phases, the top of the freeboard neither.

@@ -7,7 +7,7 @@
 
 #include "core/Error.hpp"
 #include "tests/support/Cli.hpp"
-#include "workflows/report/Findings.hpp"
+#include "workflows/contract/Findings.hpp"
 #include "workflows/report/HtmlReport.hpp"
 #include "workflows/report/Plot.hpp"
 #include "workflows/stages/StageRegistry.hpp"
@@ -105,16 +105,16 @@ TEST(Plot, ModelColoursAreFixedAndDistinct) {
 }
 
 TEST(Findings, TravelThroughJsonAndPrintAsAlignedText) {
-  report::Findings f;
+  contract::Findings f;
   f.title = "DEM against kinetic theory";
   f.headline = "Largest deviation from lun1984: −16.9 % in τ* at φ 0.1, e 0.8.";
   f.columns = {"largest deviation from", "τ*"};
   f.rows = {{"lun1984", "−16.9 % (φ 0.1, e 0.8)"}, {"syamlal_algebraic", "+624 % (φ 0.1, e 0.9)"}};
   f.figures = {{"a.svg", "a.png", "τ*"}};
   f.firstScreen = 1;
-  const auto back = report::Findings::fromJson(json::parse(f.toJson().dump()));
+  const auto back = contract::Findings::fromJson(json::parse(f.toJson().dump()));
   EXPECT_EQ(back.toJson(), f.toJson());
-  const std::string text = report::findingsText(f);
+  const std::string text = contract::findingsText(f);
   EXPECT_NE(text.find(f.headline), std::string::npos);
   // The τ* column starts at the same character in every line, UTF-8 or not.
   std::istringstream lines(text);
@@ -156,7 +156,7 @@ class ReportPage : public ::testing::Test {
     const fs::path kt = root.path() / "wf/kt/def";
     fs::create_directories(kt);
     report::drawFigure(twoModelFigure(), kt, "compare_tau_shear");
-    report::Findings f;
+    contract::Findings f;
     f.title = "DEM against kinetic theory";
     f.headline = "Largest deviation from lun1984: −16.9 % in τ*.";
     f.columns = {"largest deviation from", "τ*"};

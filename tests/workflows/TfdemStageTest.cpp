@@ -15,7 +15,7 @@
 #include "engines/closures/SyamlalOBrien.hpp"
 #include "tests/support/Cli.hpp"
 #include "tests/support/WorkflowResults.hpp"
-#include "workflows/report/NumericCsv.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 #include "workflows/stages/TfdemSetup.hpp"
 #include "workflows/stages/TfdemStage.hpp"
 
@@ -81,7 +81,7 @@ TEST_F(TfdemStage, WritesParticleAndGasFramesSeriesAndSummary) {
   EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 21);  // header and 0.06 / 0.003 rows
   // A row every output_interval: every 20 gas steps (0.003 s / 1.5e-4 s), at 0.003 k s to round-off
   // in the gas steps' time sum (issue 54: rows spread evenly over the run fell at other spacings).
-  const auto columns = workflows::report::readNumericCsv(bed / "series.csv");
+  const auto columns = workflows::contract::readNumericCsv(bed / "series.csv");
   const auto& times = columns.at("time");
   const auto& steps = columns.at("step");
   for (std::size_t k = 0; k < times.size(); ++k) {

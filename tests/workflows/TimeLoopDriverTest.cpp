@@ -17,6 +17,7 @@
 #include "core/parallel/Communicator.hpp"
 #include "tests/support/Cli.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
+#include "workflows/stages/StageContext.hpp"
 
 namespace fs = std::filesystem;
 using namespace grainbridge;

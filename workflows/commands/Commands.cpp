@@ -266,7 +266,7 @@ int commandReport(const CommandOptions& opt) {
   const fs::path page = out / "report.html";
   std::printf("%s\n", page.c_str());
   if (::isatty(STDOUT_FILENO) != 0) {
-    for (const auto& f : written.findings) std::printf("\n%s", report::findingsText(f).c_str());
+    for (const auto& f : written.findings) std::printf("\n%s", contract::findingsText(f).c_str());
     if (written.findings.empty()) std::printf("(no comparing stage in this workflow: the page lists each stage)\n");
   }
   std::fflush(stdout);

@@ -6,7 +6,7 @@
 #include "core/Error.hpp"
 #include "core/io/H5InputFile.hpp"
 #include "core/io/MaterialsIo.hpp"
-#include "workflows/report/NumericCsv.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 
 namespace grainbridge::workflows::contract {
 
@@ -64,7 +64,7 @@ std::vector<fs::path> UpstreamInstance::artifactsOfKind(const std::string& kind)
 
 std::map<std::string, std::vector<double>> UpstreamInstance::seriesColumns() const {
   for (const auto& a : artifacts()) {
-    if (a.path == "series.csv") return report::readNumericCsv(dir_ / a.path);
+    if (a.path == "series.csv") return contract::readNumericCsv(dir_ / a.path);
   }
   throw Error("upstream " + stage_ + " (" + shortKey() + ") wrote no series.csv");
 }
@@ -89,9 +89,9 @@ std::vector<json> UpstreamInstance::records(const std::string& table) const {
   return out;
 }
 
-std::optional<report::Findings> UpstreamInstance::findings() const {
+std::optional<contract::Findings> UpstreamInstance::findings() const {
   if (!manifest_.contains("findings")) return std::nullopt;
-  return report::Findings::fromJson(manifest_.at("findings"));
+  return contract::Findings::fromJson(manifest_.at("findings"));
 }
 
 }  // namespace grainbridge::workflows::contract

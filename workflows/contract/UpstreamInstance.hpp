@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "core/data/Materials.hpp"
-#include "workflows/report/Findings.hpp"
+#include "workflows/contract/Findings.hpp"
 
 namespace grainbridge::workflows::contract {
 
@@ -96,7 +96,7 @@ class UpstreamInstance {
   // Rows for the closure database it recorded, by table ("closure_points", ...); empty when none.
   [[nodiscard]] std::vector<nlohmann::json> records(const std::string& table) const;
   // What it found (a comparing stage), or nullopt.
-  [[nodiscard]] std::optional<report::Findings> findings() const;
+  [[nodiscard]] std::optional<contract::Findings> findings() const;
 
  private:
   std::string stage_, stageType_, key_;

@@ -24,7 +24,7 @@ bool onSchedule(std::int64_t step, std::int64_t count, std::int64_t total) {
 
 }  // namespace
 
-TimeLoopDriver::TimeLoopDriver(stages::StageContext& ctx, TimeLoopOptions options)
+TimeLoopDriver::TimeLoopDriver(InstanceRun& ctx, TimeLoopOptions options)
     : ctx_(ctx), options_(options), checkpoints_(ctx.checkpointDir(), ctx.key()) {
   // On an instance of several ranks (an engine that runs over them, LAMMPS) every rank runs this
   // loop in step; the first writes the files and shows the progress.
@@ -111,7 +111,7 @@ void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t i
         checkpoint(engine, index, s);  // a batch system's SIGTERM: save, then stop cleanly
         spdlog::warn("{}: stopped at step {} of {}{}; checkpoint written, the next run resumes here", ctx_.stage(), s,
                      phase.steps, phase.output ? "" : " of the " + phase.name);
-        throw stages::StageInterrupted{};
+        throw StageInterrupted{};
       }
       if (due) {
         checkpoint(engine, index, s);

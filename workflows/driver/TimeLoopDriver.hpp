@@ -23,9 +23,9 @@
 
 #include "core/engine/SteppedEngine.hpp"
 #include "workflows/driver/CheckpointSlot.hpp"
+#include "workflows/driver/InstanceRun.hpp"
 #include "workflows/driver/Phase.hpp"
 #include "workflows/driver/SeriesColumns.hpp"
-#include "workflows/stages/StageContext.hpp"
 
 namespace grainbridge::workflows::driver {
 
@@ -42,7 +42,7 @@ struct TimeLoopOptions {
 
 class TimeLoopDriver {
  public:
-  TimeLoopDriver(stages::StageContext& ctx, TimeLoopOptions options);
+  TimeLoopDriver(InstanceRun& run, TimeLoopOptions options);
 
   // Builds the engine: from the state of the last registered checkpoint of this instance when it
   // has one (`restore` gets the state file), otherwise `fresh`. The driver, not the stage,
@@ -72,7 +72,7 @@ class TimeLoopDriver {
   [[nodiscard]] bool onAllRanks(bool mine) const;
   [[nodiscard]] std::string header() const;
 
-  stages::StageContext& ctx_;
+  InstanceRun& ctx_;
   TimeLoopOptions options_;
   CheckpointSlot checkpoints_;
   std::optional<CheckpointRecord> resumeFrom_;

@@ -3,9 +3,11 @@
 #include <cmath>
 
 #include "core/Error.hpp"
-#include "workflows/report/NumericCsv.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 
 namespace grainbridge::workflows::report {
+
+using contract::readNumericCsv;
 
 Figure averagedHeightFigure(const std::vector<BedRun>& runs) {
   Figure figure{"Time-averaged mean particle height", {"run (row of the table)", "–"},

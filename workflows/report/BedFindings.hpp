@@ -4,10 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "workflows/contract/Findings.hpp"
 #include "workflows/report/BedRun.hpp"
-#include "workflows/report/Findings.hpp"
 
 namespace grainbridge::workflows::report {
+
+// A stage's findings are a product of its instance (workflows/contract).
+using contract::Findings;
+using contract::FindingsFigure;
 
 // beds.csv: one row per run and reference value matched to it (a run without any: one row), in
 // `referenceLabels` order; full precision, an empty field for a value the run did not record.

@@ -5,9 +5,13 @@
 #include <filesystem>
 #include <string>
 
-#include "workflows/report/Findings.hpp"
+#include "workflows/contract/Findings.hpp"
 
 namespace grainbridge::workflows::report {
+
+// A stage's findings are a product of its instance (workflows/contract).
+using contract::Findings;
+using contract::FindingsFigure;
 
 // Writes the page to `file` atomically; `csv` is the CSV's name relative to the page.
 void writeFindingsPage(const Findings& findings, const std::string& csv, const std::filesystem::path& file);

@@ -15,10 +15,14 @@
 #include <string>
 #include <vector>
 
-#include "workflows/report/Findings.hpp"
+#include "workflows/contract/Findings.hpp"
 #include "workflows/contract/UpstreamInstance.hpp"
 
 namespace grainbridge::workflows::report {
+
+// A stage's findings are a product of its instance (workflows/contract).
+using contract::Findings;
+using contract::FindingsFigure;
 
 struct ReportPage {
   std::string title;

@@ -330,7 +330,7 @@ void BedCompareStage::run(StageContext& ctx) const {
     if (std::find(referenceLabels.begin(), referenceLabels.end(), r.label) == referenceLabels.end())
       referenceLabels.push_back(r.label);
   }
-  report::Findings findings = report::bedFindings(runs, referenceLabels, p.at("title").get<std::string>());
+  contract::Findings findings = report::bedFindings(runs, referenceLabels, p.at("title").get<std::string>());
   core::writeFileAtomically(ctx.outputDir() / "beds.csv", report::bedsCsv(runs, referenceLabels));
   ctx.addArtifact("beds.csv", "csv");
 

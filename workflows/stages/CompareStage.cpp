@@ -125,7 +125,7 @@ struct Deviation {
 // over every point and over the dilute points the summary is restricted to.
 void describeDeviations(const std::vector<Point>& points, const std::vector<std::string>& quantities,
                         const std::vector<Deviation>& deviations, kt::KineticModelName primary, double limit,
-                        report::Findings& findings) {
+                        contract::Findings& findings) {
   std::vector<std::string> present;
   for (const auto& q : quantities) {
     if (std::any_of(points.begin(), points.end(), [&](const Point& pt) { return pt.has(q.c_str()); }))
@@ -355,7 +355,7 @@ void CompareStage::run(StageContext& ctx) const {
   std::set<double> restitutions;
   for (const auto& pt : points) restitutions.insert(pt.restitution);
   const Point& ref = points.front();
-  report::Findings findings;
+  contract::Findings findings;
   findings.title = p.at("title").get<std::string>();
   findings.details = "compare.html";
   for (const auto& q : quantities) {
@@ -430,7 +430,7 @@ void CompareStage::run(StageContext& ctx) const {
   }
   // Shear-scaled forms first; the first screen shows the three of one family.
   std::stable_partition(findings.figures.begin(), findings.figures.end(),
-                        [](const report::FindingsFigure& f) { return f.svg.find("_shear") != std::string::npos; });
+                        [](const contract::FindingsFigure& f) { return f.svg.find("_shear") != std::string::npos; });
   describeDeviations(points, quantities, deviations, primary, limit, findings);
   ctx.setFindings(findings);
 

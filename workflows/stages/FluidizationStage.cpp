@@ -10,7 +10,7 @@
 #include "core/Files.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/mfm/FluidizationCurve.hpp"
-#include "workflows/report/Findings.hpp"
+#include "workflows/contract/Findings.hpp"
 #include "workflows/report/Plot.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -86,7 +86,7 @@ void FluidizationStage::run(StageContext& ctx) const {
   }
   if (curves.empty()) throw Error("fluidization: no upstream mfm runs; give it \"from\"");
 
-  report::Findings findings;
+  contract::Findings findings;
   findings.title = p.at("title");
   findings.columns = {"stage",        "plateau",       "bed weight",         "plateau − weight",
                       "fluidization", "drag law U_mf", "fluidization − U_mf"};

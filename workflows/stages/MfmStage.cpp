@@ -16,9 +16,9 @@
 #include "engines/mfm/InitialBed.hpp"
 #include "engines/mfm/MfmEngine.hpp"
 #include "workflows/closures/ClosureCatalog.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
 #include "workflows/report/BedTables.hpp"
-#include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/BedSummary.hpp"
 #include "workflows/stages/ClosureSamples.hpp"
 #include "workflows/stages/DragSchema.hpp"
@@ -481,7 +481,7 @@ void MfmStage::run(StageContext& ctx) const {
     // s_p's 1 s means over the whole run, read back from series.csv so that a resumed run's
     // blocks hold the samples before the restart too; each phase's eps_s over the width of the
     // window's mean fields against height (Fig. 5.6).
-    const auto series = report::readNumericCsv(ctx.outputDir() / "series.csv");
+    const auto series = contract::readNumericCsv(ctx.outputDir() / "series.csv");
     core::writeFileAtomically(ctx.outputDir() / "segregation_blocks.csv",
                               report::timeBlockMeansCsv(series.at("time"), series.at("segregation_percentage"),
                                                         "segregation_percentage", 1.0));

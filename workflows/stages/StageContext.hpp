@@ -15,8 +15,9 @@
 #include "core/LoadedRheology.hpp"
 #include "core/parallel/Communicator.hpp"
 #include "core/units/UnitSystem.hpp"
+#include "workflows/contract/Findings.hpp"
 #include "workflows/contract/UpstreamInstance.hpp"
-#include "workflows/report/Findings.hpp"
+#include "workflows/driver/InstanceRun.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -25,51 +26,33 @@ namespace grainbridge::workflows::stages {
 using contract::ArtifactEntry;
 using contract::UpstreamInstance;
 
-// Thrown by a stage that saw stopRequested() (SIGTERM, SIGINT) and stopped cleanly.
-struct StageInterrupted {};
+using driver::StageInterrupted;
 
-class StageContext {
+// The instance's run (driver::InstanceRun: stage, key, output folder, ranks, stop flag, artifacts)
+// with what a stage reads and records besides.
+class StageContext : public driver::InstanceRun {
  public:
   StageContext(std::string workflow, std::string stage, std::string key, nlohmann::json params,
                std::filesystem::path outputDir, std::vector<UpstreamInstance> inputs,
                core::parallel::Communicator& comm, core::units::UnitSystem units, const std::atomic<bool>& stopFlag)
-      : workflow_(std::move(workflow)),
-        stage_(std::move(stage)),
-        key_(std::move(key)),
+      : InstanceRun(std::move(stage), std::move(key), std::move(outputDir), comm, stopFlag),
+        workflow_(std::move(workflow)),
         params_(std::move(params)),
-        outputDir_(std::move(outputDir)),
         inputs_(std::move(inputs)),
-        comm_(comm),
-        units_(units),
-        stopFlag_(stopFlag) {}
+        units_(units) {}
 
   [[nodiscard]] const std::string& workflow() const { return workflow_; }
-  [[nodiscard]] const std::string& stage() const { return stage_; }
-  [[nodiscard]] const std::string& key() const { return key_; }
   [[nodiscard]] const nlohmann::json& params() const { return params_; }
-  [[nodiscard]] const std::filesystem::path& outputDir() const { return outputDir_; }
   // Where outputDir() is renamed to once the stage completes (for relative links).
   [[nodiscard]] std::filesystem::path publishedDir() const {
-    std::string s = outputDir_.string();
+    std::string s = outputDir().string();
     if (s.size() > kPartialSuffix.size() && s.ends_with(kPartialSuffix)) s.resize(s.size() - kPartialSuffix.size());
     return s;
   }
   static constexpr std::string_view kPartialSuffix = ".partial";
-  // A stage that can resume keeps its checkpoint here; the executor keeps a partial folder that
-  // has one (instead of starting afresh), so a killed or interrupted instance resumes.
-  [[nodiscard]] std::filesystem::path checkpointDir() const { return outputDir_ / "checkpoint"; }
   [[nodiscard]] const std::vector<UpstreamInstance>& inputs() const { return inputs_; }
-  [[nodiscard]] core::parallel::Communicator& comm() { return comm_; }
   [[nodiscard]] const core::units::UnitSystem& units() const { return units_; }
 
-  // Long stages poll this between steps; when true they write a checkpoint and throw
-  // StageInterrupted, as a batch system's SIGTERM before a time limit asks.
-  [[nodiscard]] bool stopRequested() const { return stopFlag_.load(std::memory_order_relaxed); }
-
-  // Registers a file (relative to outputDir) as an artifact; the executor hashes it.
-  void addArtifact(std::string relativePath, std::string kind) {
-    artifacts_.push_back({std::move(relativePath), std::move(kind)});
-  }
   // Deterministic results worth showing in status and reports (no timings, no hosts).
   void setSummary(nlohmann::json summary) { summary_ = std::move(summary); }
 
@@ -85,31 +68,24 @@ class StageContext {
   [[nodiscard]] const std::string& databasePath() const { return databasePath_; }
 
   // What a comparing stage found (headline, table, figures): the report leads with it.
-  void setFindings(report::Findings findings) { findings_ = std::move(findings); }
-  [[nodiscard]] const report::Findings& findings() const { return findings_; }
+  void setFindings(contract::Findings findings) { findings_ = std::move(findings); }
+  [[nodiscard]] const contract::Findings& findings() const { return findings_; }
 
   // Rows for the closure database (db::ClosureStore::recordTables(): closure_points,
   // force_statistics, structure_statistics, closure_tables), keyed by column name. They travel
   // in manifest.json and the executor inserts them in the transaction that marks the run done.
   void addRecord(const std::string& table, nlohmann::json row) { records_[table].push_back(std::move(row)); }
-  [[nodiscard]] const std::vector<ArtifactEntry>& artifacts() const { return artifacts_; }
   [[nodiscard]] const nlohmann::json& records() const { return records_; }
   [[nodiscard]] const nlohmann::json& summary() const { return summary_; }
 
  private:
   std::string workflow_;
-  std::string stage_;
-  std::string key_;
   nlohmann::json params_;
-  std::filesystem::path outputDir_;
   std::vector<UpstreamInstance> inputs_;
-  core::parallel::Communicator& comm_;
   core::units::UnitSystem units_;
-  const std::atomic<bool>& stopFlag_;
-  std::vector<ArtifactEntry> artifacts_;
   nlohmann::json summary_ = nlohmann::json::object();
   nlohmann::json records_ = nlohmann::json::object();
-  report::Findings findings_;
+  contract::Findings findings_;
   std::string databasePath_;
   std::vector<core::LoadedClosureTable> closureTables_;
   std::vector<core::LoadedRheology> rheologies_;

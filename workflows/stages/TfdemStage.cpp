@@ -12,8 +12,8 @@
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/tfdem/ParticleBedMeasures.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
-#include "workflows/report/NumericCsv.hpp"
 #include "workflows/stages/BedSummary.hpp"
 #include "workflows/stages/DemInitialState.hpp"
 #include "workflows/stages/DragSchema.hpp"
@@ -228,7 +228,7 @@ void TfdemStage::run(StageContext& ctx) const {
   const auto inWindow = [&](double t) { return t >= setup.averageFrom - slack && t <= setup.averageTo + slack; };
   std::map<std::string, std::vector<double>> window;
   {
-    const auto series = report::readNumericCsv(ctx.outputDir() / "series.csv");
+    const auto series = contract::readNumericCsv(ctx.outputDir() / "series.csv");
     const auto& time = series.at("time");
     for (const auto& [column, values] : series) {
       auto& kept = window[column];

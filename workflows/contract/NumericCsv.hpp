@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-namespace grainbridge::workflows::report {
+namespace grainbridge::workflows::contract {
 
 // The columns by name. Throws grainbridge::Error naming the file and line when a row has a
 // different number of fields than the header or a field that is not a number.
 std::map<std::string, std::vector<double>> readNumericCsv(const std::filesystem::path& file);
 
-}  // namespace grainbridge::workflows::report
+}  // namespace grainbridge::workflows::contract

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace grainbridge::workflows::report {
+namespace grainbridge::workflows::contract {
 
 struct FindingsFigure {
   std::string svg, png;  // relative to the stage's instance folder
@@ -33,4 +33,4 @@ struct Findings {
 // The headline and table as plain text (for a terminal), columns aligned.
 std::string findingsText(const Findings& findings);
 
-}  // namespace grainbridge::workflows::report
+}  // namespace grainbridge::workflows::contract

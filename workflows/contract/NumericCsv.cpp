@@ -1,4 +1,4 @@
-#include "workflows/report/NumericCsv.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 
 #include <cstdlib>
 #include <sstream>
@@ -6,7 +6,7 @@
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 
-namespace grainbridge::workflows::report {
+namespace grainbridge::workflows::contract {
 
 namespace {
 
@@ -48,4 +48,4 @@ std::map<std::string, std::vector<double>> readNumericCsv(const std::filesystem:
   return columns;
 }
 
-}  // namespace grainbridge::workflows::report
+}  // namespace grainbridge::workflows::contract

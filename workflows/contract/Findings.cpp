@@ -1,10 +1,10 @@
-#include "workflows/report/Findings.hpp"
+#include "workflows/contract/Findings.hpp"
 
 #include <algorithm>
 
 #include "core/Error.hpp"
 
-namespace grainbridge::workflows::report {
+namespace grainbridge::workflows::contract {
 
 using nlohmann::json;
 
@@ -58,4 +58,4 @@ std::string findingsText(const Findings& f) {
   return out;
 }
 
-}  // namespace grainbridge::workflows::report
+}  // namespace grainbridge::workflows::contract
