@@ -37,6 +37,29 @@ PatchFlow total(const std::vector<PatchFlow>& patches) {
   return sum;
 }
 
+double superficialGasVelocity(const std::vector<BoundaryPatch>& patches, const core::data::GridGeometry& geometry,
+                              VerticalAxis vertical) {
+  const double bottom = bottomArea(geometry, vertical);
+  double velocity = 0.0;
+  for (const BoundaryPatch& patch : patches) {
+    if (patch.kind != BoundaryKind::VelocityInlet || patch.phases.empty()) continue;
+    const int axis = patch.side / 2;
+    // The patch's area as bottomArea forms the bottom's, extent by extent in x, y, z order, so
+    // that a whole bottom patch's ratio to it is 1 without round-off.
+    double area = 1.0;
+    const auto tangential = tangentialAxes(axis);
+    for (std::size_t q = 0; q < 2; ++q) {
+      const auto t = static_cast<std::size_t>(tangential[q]);
+      const int cells = patch.to[q] < 0 ? geometry.cells[t] : patch.to[q] - patch.from[q];
+      area *= cells * geometry.spacing[static_cast<Eigen::Index>(t)];
+    }
+    const double inward = patch.side % 2 == 0 ? 1.0 : -1.0;  // velocities point along the axis
+    const PhaseInflow& gas = patch.phases.front();
+    velocity += gas.fraction * (inward * gas.velocity[axis]) * (area / bottom);
+  }
+  return velocity;
+}
+
 double heldMass(const CellField& fraction, const CellField& density) {
   const StaggeredGrid& grid = fraction.grid();
   double mass = 0.0;

@@ -7,6 +7,8 @@
 #include <array>
 #include <vector>
 
+#include "core/data/FieldFrame.hpp"
+#include "engines/fluid/BedMeasures.hpp"
 #include "engines/fluid/Boundaries.hpp"
 #include "engines/fluid/Fields.hpp"
 
@@ -22,6 +24,16 @@ struct PatchFlow {
 
 // The sum over patches.
 [[nodiscard]] PatchFlow total(const std::vector<PatchFlow>& patches);
+
+// The superficial gas velocity U [m/s] the velocity inlets impose (Fig. 4.5's abscissa): the gas
+// volume flow they let in, eps_g v_g A summed over the inlet patches (v_g the gas speed into the
+// domain, normal to the patch's side; A the patch's area), over the cross-section normal to
+// gravity (bottomArea). A pure-gas inlet over the whole bottom gives its speed exactly, its area
+// over the bottom's being 1 exactly; a jet gives its speed times its share of the bottom. A
+// pressure outlet's backflow is not counted: the flow is imposed by the inlets only.
+// `patches` as an engine is built with (a whole side as from {0, 0}, to {-1, -1}, or resolved).
+[[nodiscard]] double superficialGasVelocity(const std::vector<BoundaryPatch>& patches,
+                                            const core::data::GridGeometry& geometry, VerticalAxis vertical);
 
 // The mass of a phase the interior cells hold, sum rho eps dV [kg].
 [[nodiscard]] double heldMass(const CellField& fraction, const CellField& density);

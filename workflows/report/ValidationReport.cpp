@@ -65,23 +65,24 @@ std::vector<Row> testRecords(const fs::path& dir) {
   return rows;
 }
 
-// "31: pack55, seed 2, side-wall friction 0.5": the run id and what its DEM upstream was, so
-// the rows of a sweep say which state they come from (the reference's Brazil-nut figures are
-// for wall friction 0.5).
+// "31: pack55, seed 2, side-wall friction 0.5": the run id and the state its upstream particle
+// run recorded in its summary (the dem stage's seed and side_wall_friction), so the rows of a
+// sweep say which state they come from (the reference's Brazil-nut figures are for wall friction
+// 0.5). Products only, never the upstream's params (DESIGN.md, "Stage contracts"): an upstream
+// run recorded before its summary carried them is named without its state.
 std::string runWithState(db::ProvenanceStore& provenance, std::int64_t runId) {
   std::string label = std::to_string(runId);
   const auto run = provenance.run(runId);
   if (!run) return label;
   for (const auto& key : run->upstreamKeys) {
     const auto ups = provenance.runsOfKey(key);
-    if (ups.empty() || ups.back().stageType != "dem") continue;
-    const json p = json::parse(ups.back().paramsJson, nullptr, false);
-    if (!p.is_object()) continue;
+    if (ups.empty()) continue;
+    const json summary = json::parse(ups.back().summaryJson, nullptr, false);
     label += ": " + ups.back().stage;
-    if (p.contains("seed")) label += ", seed " + p["seed"].dump();
-    for (const auto& w : p.value("walls", json::array())) {
-      if (w.value("kind", "") == "cylinder" && w.contains("mu")) label += ", side-wall friction " + number(w["mu"]);
-    }
+    if (!summary.is_object()) break;
+    if (summary.contains("seed") && summary["seed"].is_number()) label += ", seed " + summary["seed"].dump();
+    if (summary.contains("side_wall_friction") && summary["side_wall_friction"].is_number())
+      label += ", side-wall friction " + number(summary["side_wall_friction"].get<double>());
     break;
   }
   return label;

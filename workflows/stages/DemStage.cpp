@@ -353,6 +353,14 @@ void refuseOverlappingState(const StageContext& ctx, const dem::Simulation& sim)
   }
 }
 
+// The side wall of a run in a container: its first cylinder wall, or null.
+const dem::Wall* sideWall(const dem::SimulationSetup& engine) {
+  for (const auto& wall : engine.walls) {
+    if (wall.kind == dem::Wall::Kind::Cylinder && !wall.material.empty()) return &wall;
+  }
+  return nullptr;
+}
+
 // The initial particles of a fresh run: inserted, or read from a file (lammps_data,
 // initial_frame); a state from a file whose particles overlap too much is refused before any
 // engine starts.
@@ -414,6 +422,11 @@ void runLoop(StageContext& ctx, const DemSetup& setup, driver::TimeLoopDriver& l
                    mobile > 0 ? 2.0 * static_cast<double>(last.contacts.size()) / static_cast<double>(mobile) : 0.0}};
   // LAMMPS does not count its rebuilds for the library.
   if (engine.neighbourRebuilds() >= 0) summary["neighbour_rebuilds"] = engine.neighbourRebuilds();
+  // What the state was made with, for the labels of reports, which read products and never
+  // params: the seed of the random insertion (a state read from a file has none) and the
+  // friction of the side wall, the first cylinder wall, where there is one.
+  if (!stateFromFile(p)) summary["seed"] = p.at("seed");
+  if (const auto* side = sideWall(setup.engine)) summary["side_wall_friction"] = side->material.front().mu;
   ctx.setSummary(std::move(summary));
 }
 
@@ -458,6 +471,13 @@ std::optional<PlannedOutput> DemStage::plannedOutput(const json& p) const {
     std::int64_t count = 0;
     for (const auto& s : p.at("species")) count += s.at("count").get<std::int64_t>();
     out.particleCount = count;
+    out.summaryKeys.push_back("seed");
+  }
+  for (const auto& wall : p.value("walls", json::array())) {
+    if (wall.at("kind") == "cylinder") {
+      out.summaryKeys.push_back("side_wall_friction");
+      break;
+    }
   }
   // One kind of mobile grain (frozen bases aside) is what a rheology can be made of.
   for (const auto& s : p.at("species")) {

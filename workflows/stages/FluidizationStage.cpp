@@ -21,8 +21,8 @@ using params::ParamSpec;
 FluidizationStage::FluidizationStage() {
   schema_
       .add(ParamSpec::string("inflow")
-               .defaultValue("boundaries/0/gas_inflow")
-               .doc("the swept parameter of the upstream mfm stages that is the superficial inflow"))
+               .defaultValue("superficial_gas_velocity")
+               .doc("the summary value read as the superficial gas velocity U, m/s (the curve's abscissa)"))
       .add(ParamSpec::string("pressure_drop")
                .defaultValue("pressure_drop")
                .doc("the summary value read as the bed's pressure drop (its _err the error)"))
@@ -35,6 +35,7 @@ struct Curve {
   std::vector<mfm::CurvePoint> points;
   double weight = std::numeric_limits<double>::quiet_NaN();   // bed_weight [Pa]
   double dragUmf = std::numeric_limits<double>::quiet_NaN();  // drag_umf [m/s]
+  std::string model;                                          // the colour key: the upstream's type, a label
 };
 
 std::string percent(double measured, double reference) {
@@ -52,12 +53,17 @@ void FluidizationStage::checkAgainstUpstream(const json& p, const std::string& p
                                              core::json::Diagnostics& d) const {
   const std::string inflow = p.at("inflow"), dpKey = p.at("pressure_drop");
   for (const auto& up : upstream) {
-    if (!up.sweepPoint.contains(inflow) || !up.sweepPoint[inflow].is_number()) {
-      d.add(ptr + "/inflow", "upstream stage " + up.stage + " is not swept over \"" + inflow + "\"");
+    if (!up.records(inflow)) {
+      // Before summaries carried it, `inflow` named the upstream's swept parameter
+      // ("boundaries/0/gas_inflow"): say what it names now.
+      const bool parameterPath = inflow.find('/') != std::string::npos;
+      d.add(ptr + "/inflow", "upstream stage " + up.stage + " records no \"" + inflow + "\"" +
+                                 (parameterPath ? " (inflow names a summary value of the upstream, such as "
+                                                  "superficial_gas_velocity, not a parameter)"
+                                                : " (mfm and tfdem record superficial_gas_velocity)"));
       return;
     }
-    const auto& keys = up.output.summaryKeys;
-    if (std::find(keys.begin(), keys.end(), dpKey) == keys.end()) {
+    if (!up.records(dpKey)) {
       d.add(ptr + "/pressure_drop",
             "upstream stage " + up.stage + " records no \"" + dpKey + "\" (give it a pressure tap, pressure_taps)");
       return;
@@ -70,21 +76,22 @@ void FluidizationStage::run(StageContext& ctx) const {
   const std::string inflow = p.at("inflow"), dpKey = p.at("pressure_drop");
   std::map<std::string, Curve> curves;  // by upstream stage, in name order
   for (const auto& up : ctx.inputs()) {
-    const json& sweep = up.sweepPoint();
-    if (!sweep.contains(inflow) || !sweep[inflow].is_number()) {
-      throw Error("fluidization: upstream " + up.stage() + " (" + up.shortKey() + ") is not swept over " + inflow);
+    const auto u = up.summaryValue(inflow);
+    if (!u) {
+      throw Error("fluidization: upstream " + up.stage() + " (" + up.shortKey() + ") has no summary value " + inflow);
     }
     const auto dp = up.summaryValue(dpKey);
     if (!dp) {
       throw Error("fluidization: upstream " + up.stage() + " (" + up.shortKey() + ") has no summary value " + dpKey +
-                  " (give the mfm stage a pressure tap)");
+                  " (give that stage a pressure tap, pressure_taps)");
     }
     Curve& c = curves[up.stage()];
-    c.points.push_back({sweep[inflow].get<double>(), dp->value, std::isfinite(dp->error) ? dp->error : 0.0});
+    c.model = up.stageTypeLabel();
+    c.points.push_back({u->value, dp->value, std::isfinite(dp->error) ? dp->error : 0.0});
     if (const auto weight = up.summaryValue("bed_weight")) c.weight = weight->value;
     if (const auto umf = up.summaryValue("drag_umf")) c.dragUmf = umf->value;
   }
-  if (curves.empty()) throw Error("fluidization: no upstream mfm runs; give it \"from\"");
+  if (curves.empty()) throw Error("fluidization: no upstream bed runs; give it \"from\"");
 
   contract::Findings findings;
   findings.title = p.at("title");
@@ -104,7 +111,7 @@ void FluidizationStage::run(StageContext& ctx) const {
     std::sort(c.points.begin(), c.points.end(), [](const auto& a, const auto& b) { return a.inflow < b.inflow; });
     report::Series s;
     s.label = stage;
-    s.model = "mfm";
+    s.model = c.model;
     s.style = report::Series::Style::PointsWithErrors;
     s.variant = variant;
     for (const auto& pt : c.points) {

@@ -427,6 +427,10 @@ void MfmStage::run(StageContext& ctx) const {
   summary["retries"] = stats.retries;
   summary["iterations_per_step"] = stats.steps > 0 ? static_cast<double>(stats.iterations) / stats.steps : 0.0;
   summary["window_samples"] = observed.fieldAverage().frames();
+  // The superficial gas velocity the inlets impose (engines/fluid/BoundaryFlow): a fluidization
+  // curve's abscissa, recorded so that the curve's reader needs none of this run's params.
+  summary["superficial_gas_velocity"] = fluid::superficialGasVelocity(
+      setup.engine.patches, setup.engine.geometry, fluid::verticalAxis(setup.engine.settings.gravity));
   // What a fluidization curve is read against: the initial bed's buoyant weight per unit area of
   // the bottom, (1 - eps) (rho_s - rho_g) g H, and the minimum fluidization velocity the drag law
   // implies at the first region holding solids (engines/mfm/InitialBed).
@@ -532,6 +536,7 @@ std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
     out.seriesColumns.push_back("segregation_percentage");
   }
   keys.push_back("closure");
+  keys.push_back("superficial_gas_velocity");
   // The mass account of every phase, the gas first.
   std::vector<std::string> phases{"gas"};
   for (const auto& phase : solids) phases.push_back(phase.at("name").get<std::string>());

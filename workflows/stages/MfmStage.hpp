@@ -35,7 +35,9 @@ class MfmStage final : public StageType {
   // 11: each transient step closes the gas's continuity with its final fractions (engines/fluid
   //     SimpleStep closeGasContinuity): an incompressible gas's balance exact, every field moved
   //     by the size of a continuity residual.
-  [[nodiscard]] int implVersion() const override { return 11; }
+  // 12: the summary records superficial_gas_velocity, which fluidization requires (a run cached
+  //     without it could not feed one).
+  [[nodiscard]] int implVersion() const override { return 12; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

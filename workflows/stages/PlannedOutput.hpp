@@ -33,7 +33,9 @@ struct PlannedOutput {
   // Summary values it will record that downstream stages read, per phase where there are phases
   // (mean_height_<phase>). Continuum beds: pressure_drop (the first tap's drop; the summary's
   // pressure_drop_tap names that tap, whose series column is dp_<tap>), mean_height (Eq. 5.22
-  // over all solids), mean_height_<phase>, solids_volume_change_<phase>, closure.
+  // over all solids), mean_height_<phase>, solids_volume_change_<phase>, closure,
+  // superficial_gas_velocity (m/s, what the inlets impose: fluid::superficialGasVelocity).
+  // Particle runs (dem): seed (of a random insertion), side_wall_friction (of a cylinder wall).
   std::vector<std::string> summaryKeys;
   std::vector<std::string> seriesColumns;      // columns of series.csv that downstream stages read
   std::optional<std::string> closureTables;    // the name of the closure tables it makes (tabulate)

@@ -11,6 +11,7 @@
 #include "core/io/FieldFrameWriter.hpp"
 #include "core/io/ParticleFrameReader.hpp"
 #include "core/text/NumberText.hpp"
+#include "engines/fluid/BoundaryFlow.hpp"
 #include "engines/tfdem/ParticleBedMeasures.hpp"
 #include "workflows/contract/NumericCsv.hpp"
 #include "workflows/driver/TimeLoopDriver.hpp"
@@ -246,6 +247,9 @@ void TfdemStage::run(StageContext& ctx) const {
   summary["bed_weight"] =
       tfdem::buoyantWeightPerArea(particles, setup.engine.gas.density, setup.engine.solver.gravity.norm(),
                                   fluid::bottomArea(setup.engine.grid, setup.vertical));
+  // The superficial gas velocity the inlets impose, as mfm records it (a fluidization curve's abscissa).
+  summary["superficial_gas_velocity"] =
+      fluid::superficialGasVelocity(setup.engine.boundaries, setup.engine.grid, setup.vertical);
   const auto& ratios = window.at("multi_contact_ratio");
   if (!ratios.empty()) {
     const auto above = std::count_if(ratios.begin(), ratios.end(), [](double r) { return r > kMultiContactMark; });
@@ -297,7 +301,8 @@ std::optional<PlannedOutput> TfdemStage::plannedOutput(const json& p) const {
   out.particleCount = count;
   addTapPlannedOutput(out, p);
   auto& keys = out.summaryKeys;
-  for (const char* k : {"mean_height", "mean_height_fields", "bed_weight"}) keys.push_back(k);
+  for (const char* k : {"mean_height", "mean_height_fields", "bed_weight", "superficial_gas_velocity"})
+    keys.push_back(k);
   for (const char* c : {"mean_height", "mean_height_fields", "contacts", "coordination", "multi_contact_ratio"})
     out.seriesColumns.push_back(c);
   // The gas frames (with the deposited particle fraction) at every particle frame, and the

@@ -19,7 +19,8 @@ class TfdemStage final : public StageType {
   // 5: each gas step closes the gas's continuity with its final fractions (engines/fluid
   //    SimpleStep closeGasContinuity), moving the gas by the size of a continuity residual.
   // 6: the DEM pair loop of dem impl 7 (last bits)
-  [[nodiscard]] int implVersion() const override { return 6; }
+  // 7: the summary records superficial_gas_velocity, which fluidization requires (as mfm 12)
+  [[nodiscard]] int implVersion() const override { return 7; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"coordination", "–"}, {"multi_contact_ratio", "–"}};
   }

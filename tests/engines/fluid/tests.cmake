@@ -16,6 +16,7 @@ grainbridge_add_test(test_fluid
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/MixturePlasticPressureTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/GivenPhaseTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/fluid/FieldSamplingTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/fluid/SuperficialVelocityTest.cpp
   LIBS engines_fluid
   LABELS "unit;fluid")
 
