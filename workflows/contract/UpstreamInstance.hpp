@@ -65,11 +65,14 @@ class UpstreamInstance {
   [[nodiscard]] const std::string& stageTypeLabel() const { return stageType_; }
 
   // The sweep point it ran at: SI values by swept parameter ({} unless swept), and the same as
-  // the config wrote them ("1.92 m/s"; the SI point where none was recorded).
+  // the config wrote them ("1.92 m/s"; the SI point where none was recorded). A replica (a
+  // closure sample) has its instance's sweep point; what tells it apart is in its summary.
   [[nodiscard]] const nlohmann::json& sweepPoint() const { return sweepPoint_; }
   [[nodiscard]] const nlohmann::json& sweepWritten() const { return sweepWritten_; }
-  // The sweep as the config writes it now (a cached instance may predate the wording).
-  void setSweepWritten(nlohmann::json written);
+  // The sweep point as the plan gives it now, which the executor and the report pass in: a cached
+  // instance's manifest may predate the config's wording, or the sweep point's form (before issue
+  // 57 a closure sample's carried its sample number, which its summary holds).
+  void setSweep(nlohmann::json point, nlohmann::json written);
 
   // Every summary value (numbers, and a few strings such as a run's closure name).
   [[nodiscard]] const nlohmann::json& summary() const { return summary_; }

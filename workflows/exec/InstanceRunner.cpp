@@ -74,6 +74,7 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
     for (const auto& u : task.upstream) {
       const fs::path dir = resultsRoot / u.dir;
       inputs.emplace_back(u.stage, u.stageType, u.key, dir, readManifest(dir));
+      inputs.back().setSweep(u.sweepPoint, u.sweepWritten);
     }
     stages::StageContext ctx(task.workflow, task.stage, task.key, task.params, partialDir, std::move(inputs), comm,
                              core::units::UnitSystem::fromJson(task.units), stop);

@@ -14,6 +14,9 @@ struct UpstreamRef {
   std::string stageType;
   std::string key;
   std::string dir;  // instance folder relative to the results root
+  // Its sweep point as the plan gives it (UpstreamInstance::setSweep), SI and as written.
+  nlohmann::json sweepPoint = nlohmann::json::object();
+  nlohmann::json sweepWritten = nlohmann::json::object();
 };
 
 struct InstanceTask {
