@@ -62,8 +62,8 @@ class MfmStage final : public StageType {
   void run(StageContext& ctx) const override;
   // Field frames with their materials, the mean fields (with an averaging window), and the
   // summary's pressure drops (one per tap, the first also as pressure_drop), heights and solids
-  // inventory changes per phase, for the checks of the stages that read them (fluidization,
-  // bed_compare).
+  // inventory changes per phase, and a closure sample's closure_sample and closure_perturbed, for
+  // the checks of the stages that read them (fluidization, bed_compare).
   [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override;
 
  private:
