@@ -35,8 +35,8 @@ InstanceTask InstanceTask::fromJson(const json& j) {
   t.units = j.at("units");
   t.instanceDir = j.at("instance_dir");
   t.group = j.at("group").get<std::vector<int>>();
-  t.closureTables = j.value("closure_tables", json::array());
-  t.rheologies = j.value("rheologies", json::array());
+  for (const auto& record : j.at("closure_tables")) t.closureTables.push_back(core::loadedClosureTableFromJson(record));
+  for (const auto& record : j.at("rheologies")) t.rheologies.push_back(core::loadedRheologyFromJson(record));
   return t;
 }
 
