@@ -35,10 +35,13 @@ struct ResultColumn {
 };
 
 // What a report shows of a stage type (its declared key results, the SI unit of a swept
-// parameter), handed to report/ by the caller that knows the types (stages::StageRegistry).
+// parameter, the summary values that tell the replicas of a sweep point apart), handed to report/
+// by the caller that knows the types (stages::StageRegistry).
 struct StageTypeView {
   std::vector<ResultColumn> keyResults;
   std::function<std::string(const std::string& param)> sweptUnit;  // "" when dimensionless or unknown
+  // Summary values shown beside the sweep point: which replica an instance is (closure_sample, ...).
+  std::vector<std::string> replicaKeys;
 };
 using StageTypeLookup = std::function<std::optional<StageTypeView>(const std::string& typeName)>;
 

@@ -79,6 +79,9 @@ class StageType {
   // alone. Parameters that only ask for copies should not affect results (doesNotAffectResults),
   // so the first copy, with an empty overlay, keeps the key the instance has without them.
   [[nodiscard]] virtual std::vector<Replica> replicas(const nlohmann::json& /*resolved*/) const { return {Replica{}}; }
+  // The summary values in which a replica records which copy it is (a closure sample's
+  // closure_sample and closure_perturbed): a report shows them beside the sweep point.
+  [[nodiscard]] virtual std::vector<std::string> replicaSummaryKeys() const { return {}; }
   // The parameter (below the stage's /params) that needs the standard errors of the closure
   // tables the instance reads, when one does (closure samples draw within them); "" otherwise.
   // The planner refuses a database table without errors naming it, before any work starts.
