@@ -2,8 +2,9 @@
 // A closure table as a continuum run receives it from the workflow database: the table itself
 // plus where it came from (its name, the run that made it, the sha256 of its content, which is
 // what enters a consuming instance's key) and the filter it was made under. db::ClosureStore
-// loads it; it travels to worker ranks as JSON inside the instance task, and is converted back
-// once per run, so the engine never rebuilds a table from loose fields.
+// loads it on rank 0 and it reaches the stage as it is (the instance task and the stage context
+// hold this type); only to cross to a worker rank does it become JSON (to_json, and
+// loadedClosureTableFromJson there), so the engine never rebuilds a table from loose fields.
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>

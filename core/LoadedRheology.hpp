@@ -2,8 +2,8 @@
 // The mu(I) rheology a continuum run reads from the workflow database (a tabulate stage's
 // `rheology` rows of relation mu_of_I, one per restitution): the measured points and, where the
 // points determined it, the fit mu_s + (mu_2 - mu_s) / (1 + I_0 / I), with the grains they were
-// measured on and where they came from. db::ClosureStore loads it; it travels to worker ranks as
-// JSON inside the instance task, as LoadedClosureTable does.
+// measured on and where they came from. db::ClosureStore loads it; it reaches the stage as it is
+// and becomes JSON only to cross to a worker rank, as LoadedClosureTable does.
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>

@@ -417,13 +417,18 @@ TEST(MfmStage, ClosureSamplesDrawTheTablesWithinTheirErrorsReproduciblyAndNeedTa
   ASSERT_EQ(beds.size(), 6u);
   const auto series = [](const fs::path& dir) { return readText(dir / "series.csv"); };
   std::map<std::string, int> perturbed;
+  const json nominalManifest = json::parse(readText(beds.at(0) / "manifest.json"));
   for (const auto& [k, dir] : beds) {
     const json manifest = json::parse(readText(dir / "manifest.json"));
     if (k == 0) {
       EXPECT_FALSE(manifest.at("summary").contains("closure_perturbed"));
       continue;
     }
-    EXPECT_EQ(manifest.at("sweep_point").at("closure_sample"), k);
+    // Which sample it is is its draw (params, keyed) and its summary, one value: its sweep point
+    // is its nominal run's.
+    EXPECT_EQ(manifest.at("params").at("closure_draw").at("sample"), k);
+    EXPECT_EQ(manifest.at("summary").at("closure_perturbed"), manifest.at("params").at("closure_draw").at("perturbed"));
+    EXPECT_EQ(manifest.at("sweep_point"), nominalManifest.at("sweep_point"));
     perturbed[manifest.at("summary").at("closure_perturbed")]++;
     EXPECT_NE(series(dir), series(beds.at(0))) << "sample " << k << " ran on the nominal tables";
   }
@@ -457,6 +462,48 @@ TEST(MfmStage, ClosureSamplesDrawTheTablesWithinTheirErrorsReproduciblyAndNeedTa
   EXPECT_TRUE(headline.starts_with("bed: bed height ")) << headline;
   EXPECT_NE(headline.find("(bed fluctuations) ± "), std::string::npos) << headline;
   EXPECT_NE(headline.find("(DEM closures, 2 joint samples scattering by "), std::string::npos) << headline;
+
+  // A sample cached before issue 57 has its number in its manifest's sweep point too. The
+  // executor hands a comparing stage the plan's sweep point, so such a sample still joins its
+  // nominal run when the comparison reruns over the cached beds.
+  for (const auto& [k, dir] : beds) {
+    if (k == 0) continue;
+    json manifest = json::parse(readText(dir / "manifest.json"));
+    manifest["sweep_point"]["closure_sample"] = k;
+    writeText(dir / "manifest.json", manifest.dump(2));
+  }
+  fs::remove_all(compareDir);  // the comparison alone reruns; the beds stay cached
+  const auto rerun = runGrainbridge(work.path(), "run loop.json -q");
+  ASSERT_EQ(rerun.exitCode, 0) << rerun.output;
+  ASSERT_EQ(json::parse(readText(beds.at(1) / "manifest.json")).at("sweep_point").value("closure_sample", 0), 1)
+      << "the samples ran again instead of coming from the cache";
+  std::istringstream rerunCsv(readText(onlyInstance(work.path() / "results/loop/beds") / "beds.csv"));
+  std::string againHeader, againRow;
+  std::getline(rerunCsv, againHeader);
+  std::getline(rerunCsv, againRow);
+  const auto names = splitCsvLine(againHeader);
+  const auto values = splitCsvLine(againRow);
+  EXPECT_EQ(
+      values.at(static_cast<std::size_t>(std::find(names.begin(), names.end(), "closure_samples") - names.begin())),
+      "5")
+      << againRow;
+
+  // `status --why` compares each instance with its own last run: a sample with the run of the
+  // same draw, the nominal run with the run without one.
+  json changed = stages;
+  changed["bed"]["params"]["frames"] = 2;
+  writeText(work.path() / "changed.json", json{{"name", "loop"}, {"stages", changed}}.dump(2));
+  const auto why = runGrainbridge(work.path(), "status changed.json --why bed");
+  ASSERT_EQ(why.exitCode, 0) << why.output;
+  for (const std::string& label : {std::string("bed:"), std::string("bed[closure_sample=1]:"),
+                                   std::string("bed[closure_perturbed=p_theta, closure_sample=3]:")}) {
+    const auto from = why.output.find(label + " key changed since run");
+    ASSERT_NE(from, std::string::npos) << label << "\n" << why.output;
+    const auto next = why.output.find("\nbed", from + 1);
+    const std::string lines = why.output.substr(from, next == std::string::npos ? std::string::npos : next - from);
+    EXPECT_NE(lines.find("parameter frames: 1 -> 2"), std::string::npos) << lines;
+    EXPECT_EQ(lines.find("closure_draw"), std::string::npos) << lines;
+  }
 
   // 2. A sample is reproducible from its seed: the same bed in another workflow, reading the same
   //    tables from the database, repeats sample 1 bit for bit; another seed draws otherwise.

@@ -9,6 +9,9 @@
 #include "core/json/StrictParse.hpp"
 #include "tests/support/Cli.hpp"
 #include "workflows/plan/Plan.hpp"
+#include "workflows/stages/ClosureSamples.hpp"
+#include "workflows/stages/MfmStage.hpp"
+#include "workflows/stages/StageRegistry.hpp"
 
 using namespace grainbridge::workflows;
 using nlohmann::json;
@@ -104,12 +107,14 @@ namespace {
 
 // The grain-fluidization smoke bed on a closure table "t" the database holds (`hasErrors`: with
 // each node's standard error), asking for closure samples.
-plan::Plan sampledBedPlan(int samples, int perQuantity, int seed, bool hasErrors,
-                          const std::string& closure = "table") {
+// `inflows`: swept over the first boundary's gas inflow (as written) when not empty.
+json sampledBedStage(int samples, int perQuantity, int seed, const std::string& closure = "table",
+                     const std::vector<std::string>& inflows = {}) {
   json wf = json::parse(
       grainbridge::testing::readText(grainbridge::testing::sourceDir() / "configs/grain-fluidization-smoke.json"));
   json bed = wf["stages"]["bed"];
   bed.erase("sweep");
+  if (!inflows.empty()) bed["sweep"] = {{"boundaries/0/gas_inflow", inflows}};
   auto& p = bed["params"];
   p.erase("kinetic_model");
   p.erase("granular_energy");
@@ -121,12 +126,42 @@ plan::Plan sampledBedPlan(int samples, int perQuantity, int seed, bool hasErrors
   if (samples >= 0) p["closure_samples"] = samples;
   if (perQuantity >= 0) p["closure_samples_per_quantity"] = perQuantity;
   if (seed >= 0) p["sample_seed"] = seed;
-  const json doc = {{"name", "w"}, {"stages", {{"bed", bed}}}};
+  return bed;
+}
+
+plan::Plan planWithTables(const json& stagesObject, bool hasErrors) {
+  const json doc = {{"name", "w"}, {"stages", stagesObject}};
   const auto config = config::parseWorkflow(doc, "t.json", stages::StageRegistry::builtin());
   return plan::makePlan(config, [hasErrors](const std::string&, const std::string& quantity) {
     return plan::TableFound{"sha-of-" + quantity, std::nullopt, hasErrors};
   });
 }
+
+plan::Plan sampledBedPlan(int samples, int perQuantity, int seed, bool hasErrors,
+                          const std::string& closure = "table") {
+  return planWithTables({{"bed", sampledBedStage(samples, perQuantity, seed, closure)}}, hasErrors);
+}
+
+// Records the upstream plans the config loader hands to checkAgainstUpstream.
+class UpstreamProbe final : public stages::StageType {
+ public:
+  explicit UpstreamProbe(std::vector<stages::UpstreamPlan>& seen) : seen_(seen) {}
+  [[nodiscard]] std::string name() const override { return "probe"; }
+  [[nodiscard]] int implVersion() const override { return 1; }
+  [[nodiscard]] std::string summary() const override { return "test-only"; }
+  [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
+  [[nodiscard]] stages::InputMode inputMode() const override { return stages::InputMode::Gather; }
+  void checkAgainstUpstream(const json& /*resolved*/, const std::string& /*pointer*/,
+                            const std::vector<stages::UpstreamPlan>& upstream,
+                            grainbridge::core::json::Diagnostics& /*diagnostics*/) const override {
+    seen_ = upstream;
+  }
+  void run(stages::StageContext& /*ctx*/) const override {}
+
+ private:
+  params::ParamSchema schema_;
+  std::vector<stages::UpstreamPlan>& seen_;
+};
 
 }  // namespace
 
@@ -146,26 +181,88 @@ TEST(Plan, ClosureSamplesAreKeyedReplicasAndTheNominalRunKeepsItsKey) {
     const auto& inst = sampled.instances[i];
     keys.insert(inst.key);
     if (i == 0) continue;
-    EXPECT_EQ(inst.sweepPoint.at("closure_sample"), static_cast<int>(i));
     const json& draw = inst.params.at("closure_draw");
     EXPECT_EQ(draw.at("sample"), static_cast<int>(i));
     EXPECT_EQ(draw.at("seed"), 5);
     perturbed[draw.at("perturbed").get<std::string>()]++;
     if (draw.at("perturbed") == "all") {
       EXPECT_EQ(draw.at("quantities"), json::array({"p_theta", "j_theta"}));
-      EXPECT_FALSE(inst.sweepPoint.contains("closure_perturbed"));
+      EXPECT_EQ(inst.label(), "bed[closure_sample=" + std::to_string(i) + "]");
     } else {
       EXPECT_EQ(draw.at("quantities"), json::array({draw.at("perturbed")}));
-      EXPECT_EQ(inst.sweepPoint.at("closure_perturbed"), draw.at("perturbed"));
+      EXPECT_EQ(inst.label(), "bed[closure_perturbed=" + draw.at("perturbed").get<std::string>() +
+                                  ", closure_sample=" + std::to_string(i) + "]");
     }
   }
   EXPECT_EQ(keys.size(), 8u);
   EXPECT_EQ(perturbed, (std::map<std::string, int>{{"all", 3}, {"p_theta", 2}, {"j_theta", 2}}));
-  EXPECT_EQ(sampled.instances[1].label(), "bed[closure_sample=1]");
   // Another seed: the same nominal key, other sample keys.
   const auto reseeded = sampledBedPlan(3, 2, 6, true);
   EXPECT_EQ(reseeded.instances[0].key, without.instances[0].key);
   EXPECT_NE(reseeded.instances[1].key, sampled.instances[1].key);
+}
+
+// Issue 57: which sample a run is is written once, as the typed draw in its params (the key's
+// material); the summary values a comparing stage reads by name are declared in the sample's
+// planned output, which the config check hands on; and a sample's sweep point is its nominal
+// run's, so nothing downstream strips a label off it to find that run.
+TEST(Plan, AClosureSampleIsOneDrawInItsParamsDeclaredAsProductsAndKeepsItsNominalSweepPoint) {
+  const std::vector<std::string> inflows{"20.7 cm/s", "41.4 cm/s"};
+  const auto p = planWithTables({{"bed", sampledBedStage(2, 1, 5, "table", inflows)}}, true);
+  // Per inflow: the nominal run, 2 joint samples, 1 per quantity (p_theta, j_theta).
+  ASSERT_EQ(p.instances.size(), 2u * 5u);
+  const plan::StageInstance* nominal = nullptr;
+  int samplesSeen = 0;
+  for (const auto& inst : p.instances) {
+    const auto draw = stages::closureDrawOf(inst.params);
+    const auto planned = inst.type->plannedOutput(inst.params);
+    ASSERT_TRUE(planned.has_value());
+    const stages::UpstreamPlan asUpstream{inst.stage, inst.sweepPoint, inst.sweepWritten, *planned};
+    if (!draw) {
+      nominal = &inst;
+      EXPECT_FALSE(asUpstream.records(stages::kClosureSampleKey)) << inst.label();
+      EXPECT_FALSE(asUpstream.records(stages::kClosurePerturbedKey)) << inst.label();
+      continue;
+    }
+    ++samplesSeen;
+    ASSERT_NE(nominal, nullptr) << "a sample before its nominal run: " << inst.label();
+    EXPECT_EQ(inst.sweepPoint, nominal->sweepPoint) << inst.label();
+    EXPECT_EQ(inst.sweepWritten, nominal->sweepWritten) << inst.label();
+    EXPECT_FALSE(inst.sweepPoint.contains(stages::kClosureSampleKey)) << inst.label();
+    // The draw round-trips through its JSON form, the one the key hashes.
+    EXPECT_EQ(json(*draw), inst.params.at("closure_draw"));
+    EXPECT_EQ(inst.params.at("closure_draw").get<stages::ClosureDraw>(), *draw);
+    EXPECT_EQ(draw->seed, 5);
+    EXPECT_TRUE(asUpstream.records(stages::kClosureSampleKey)) << inst.label();
+    EXPECT_TRUE(asUpstream.records(stages::kClosurePerturbedKey)) << inst.label();
+    // What the run records is the draw, read back by name.
+    json summary = json::object();
+    stages::addClosureSampleSummary(inst.params, summary);
+    EXPECT_EQ(summary.at(stages::kClosureSampleKey), draw->sample);
+    EXPECT_EQ(summary.at(stages::kClosurePerturbedKey), draw->perturbed);
+    EXPECT_EQ(draw->quantities.size(), draw->perturbed == "all" ? 2u : 1u);
+  }
+  EXPECT_EQ(samplesSeen, 8);
+
+  // The config check hands a downstream stage every planned instance, samples included, each
+  // with its declared products and its nominal run's sweep point.
+  std::vector<stages::UpstreamPlan> seen;
+  std::vector<std::unique_ptr<stages::StageType>> types;
+  types.push_back(std::make_unique<stages::MfmStage>());
+  types.push_back(std::make_unique<UpstreamProbe>(seen));
+  const stages::StageRegistry registry(std::move(types));
+  const json doc = {
+      {"name", "w"},
+      {"stages",
+       {{"bed", sampledBedStage(2, 1, 5, "table", inflows)}, {"probe", {{"type", "probe"}, {"from", "bed"}}}}}};
+  (void)config::parseWorkflow(doc, "t.json", registry);
+  ASSERT_EQ(seen.size(), p.instances.size());
+  std::map<std::string, int> samplesAt;
+  for (const auto& up : seen) {
+    if (up.records(stages::kClosureSampleKey)) ++samplesAt[up.sweepPoint.dump()];
+  }
+  ASSERT_EQ(samplesAt.size(), 2u);
+  for (const auto& [point, n] : samplesAt) EXPECT_EQ(n, 4) << point;
 }
 
 TEST(Plan, ClosureSamplesNeedATableClosureWithErrorsAndSayWhereAtCheck) {

@@ -214,3 +214,34 @@ TEST_F(ReportPage, EveryTableRowHoldsAtMostTwoLinks) {
   }
   EXPECT_GE(rows, 3);
 }
+
+// Issue 57: a closure sample records which sample it is in its summary, not its sweep point; the
+// page shows it beside the sweep point from there (the mfm type declares it), so a sample's row is
+// told apart from its nominal run's.
+TEST(ReportPageOfSamples, ShowsWhichClosureSampleARowIsBesideItsSweepPoint) {
+  TempDir root;
+  std::vector<workflows::contract::UpstreamInstance> beds;
+  const json point = {{"boundaries/0/gas_inflow", 0.207}};
+  const json written = {{"boundaries/0/gas_inflow", "20.7 cm/s"}};
+  for (int k = 0; k <= 2; ++k) {
+    json summary = {{"mean_height", 0.05 + 0.001 * k}, {"closure", "table"}};
+    if (k > 0) {
+      summary["closure_sample"] = k;
+      summary["closure_perturbed"] = k == 1 ? "all" : "p_theta";
+    }
+    const fs::path dir = root.path() / "wf/bed" / std::to_string(k);
+    fs::create_directories(dir);
+    beds.emplace_back("bed", "mfm", std::string(64, static_cast<char>('a' + k)), dir,
+                      json{{"sweep_point", point}, {"sweep_written", written}, {"summary", summary}});
+  }
+  const fs::path out = root.path() / "wf/report";
+  fs::create_directories(out);
+  report::writeHtmlReport({"t", "", workflows::stages::StageRegistry::builtin().reportView()}, beds, out, out);
+  const std::string page = readText(out / "report.html");
+  const auto header = page.find("<th>boundaries/0/gas_inflow</th><th>closure_sample</th><th>closure_perturbed</th>");
+  ASSERT_NE(header, std::string::npos) << page;
+  EXPECT_NE(page.find("<td>2</td><td>p_theta</td>", header), std::string::npos) << page;
+  EXPECT_NE(page.find("<td>1</td><td>all</td>", header), std::string::npos) << page;
+  // The nominal run's cells are empty.
+  EXPECT_NE(page.find("</td><td></td><td></td>", header), std::string::npos) << page;
+}

@@ -253,8 +253,8 @@ int commandReport(const CommandOptions& opt) {
     }
     const fs::path dir = root / entry->instanceDir;
     done.emplace_back(inst.stage, inst.type->name(), inst.key, dir, exec::readManifest(dir));
-    // The sweep as the config wrote it now (a cached instance may predate the wording).
-    if (!inst.sweepWritten.empty()) done.back().setSweepWritten(inst.sweepWritten);
+    // The sweep point as the plan gives it now (a cached instance may predate the wording).
+    done.back().setSweep(inst.sweepPoint, inst.sweepWritten);
   }
   const fs::path out = root / cfg.name / "report";
   fs::create_directories(out);

@@ -215,9 +215,10 @@ std::optional<stages::Grains> plannedGrains(const WorkflowConfig& cfg, const Sta
 }
 
 // Rules that span stages: each stage's requests against what its upstream instances will
-// produce (PlannedOutput), for every sweep point on both sides. Only stages whose own params,
-// and whose upstreams' params, passed their checks take part: a planned output is computed
-// from valid params only. A problem shared by several points is reported once.
+// produce (PlannedOutput), for every sweep point on both sides and every replica of an upstream
+// point (a closure sample declares what tells it apart). Only stages whose own params, and whose
+// upstreams' params, passed their checks take part: a planned output is computed from valid
+// params only. A problem shared by several points is reported once.
 void checkAgainstUpstreams(const WorkflowConfig& cfg, const std::set<std::string>& cleanStages, cj::Diagnostics& d) {
   for (const auto& sc : cfg.stages) {
     if (sc.type == nullptr || sc.from.empty() || cleanStages.count(sc.name) == 0) continue;
@@ -232,11 +233,16 @@ void checkAgainstUpstreams(const WorkflowConfig& cfg, const std::set<std::string
       const auto points = sweepPoints(up->sweep);
       const auto written = sweepPointsAsWritten(up->sweep);
       for (std::size_t k = 0; k < points.size(); ++k) {
-        // A type that promises nothing hands on an empty plan: a stage that needs a product
-        // refuses it by name instead of failing after the upstream ran.
-        auto planned = up->type->plannedOutput(withSweepPoint(up->params, points[k])).value_or(stages::PlannedOutput{});
-        if (!planned.grains) planned.grains = plannedGrains(cfg, *up, points[k], cleanStages);
-        upstream.push_back({name, points[k], written[k], std::move(planned)});
+        const json swept = withSweepPoint(up->params, points[k]);
+        for (const auto& replica : up->type->replicas(swept)) {
+          json params = swept;
+          params.merge_patch(replica.overlay);
+          // A type that promises nothing hands on an empty plan: a stage that needs a product
+          // refuses it by name instead of failing after the upstream ran.
+          auto planned = up->type->plannedOutput(params).value_or(stages::PlannedOutput{});
+          if (!planned.grains) planned.grains = plannedGrains(cfg, *up, points[k], cleanStages);
+          upstream.push_back({name, points[k], written[k], std::move(planned)});
+        }
       }
     }
     if (!upstreamClean || upstream.empty()) continue;

@@ -21,11 +21,11 @@ UpstreamInstance::UpstreamInstance(std::string stage, std::string stageType, std
       dir_(std::move(dir)),
       manifest_(std::move(manifest)) {
   summary_ = manifest_.value("summary", json::object());
-  sweepPoint_ = manifest_.value("sweep_point", json::object());
-  setSweepWritten(manifest_.value("sweep_written", json::object()));
+  setSweep(manifest_.value("sweep_point", json::object()), manifest_.value("sweep_written", json::object()));
 }
 
-void UpstreamInstance::setSweepWritten(json written) {
+void UpstreamInstance::setSweep(json point, json written) {
+  sweepPoint_ = std::move(point);
   sweepWritten_ = written.empty() ? sweepPoint_ : std::move(written);
 }
 

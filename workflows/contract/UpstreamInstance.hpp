@@ -35,10 +35,13 @@ struct ResultColumn {
 };
 
 // What a report shows of a stage type (its declared key results, the SI unit of a swept
-// parameter), handed to report/ by the caller that knows the types (stages::StageRegistry).
+// parameter, the summary values that tell the replicas of a sweep point apart), handed to report/
+// by the caller that knows the types (stages::StageRegistry).
 struct StageTypeView {
   std::vector<ResultColumn> keyResults;
   std::function<std::string(const std::string& param)> sweptUnit;  // "" when dimensionless or unknown
+  // Summary values shown beside the sweep point: which replica an instance is (closure_sample, ...).
+  std::vector<std::string> replicaKeys;
 };
 using StageTypeLookup = std::function<std::optional<StageTypeView>(const std::string& typeName)>;
 
@@ -65,11 +68,14 @@ class UpstreamInstance {
   [[nodiscard]] const std::string& stageTypeLabel() const { return stageType_; }
 
   // The sweep point it ran at: SI values by swept parameter ({} unless swept), and the same as
-  // the config wrote them ("1.92 m/s"; the SI point where none was recorded).
+  // the config wrote them ("1.92 m/s"; the SI point where none was recorded). A replica (a
+  // closure sample) has its instance's sweep point; what tells it apart is in its summary.
   [[nodiscard]] const nlohmann::json& sweepPoint() const { return sweepPoint_; }
   [[nodiscard]] const nlohmann::json& sweepWritten() const { return sweepWritten_; }
-  // The sweep as the config writes it now (a cached instance may predate the wording).
-  void setSweepWritten(nlohmann::json written);
+  // The sweep point as the plan gives it now, which the executor and the report pass in: a cached
+  // instance's manifest may predate the config's wording, or the sweep point's form (before issue
+  // 57 a closure sample's carried its sample number, which its summary holds).
+  void setSweep(nlohmann::json point, nlohmann::json written);
 
   // Every summary value (numbers, and a few strings such as a run's closure name).
   [[nodiscard]] const nlohmann::json& summary() const { return summary_; }

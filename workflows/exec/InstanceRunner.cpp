@@ -7,7 +7,6 @@
 #include "core/Error.hpp"
 #include "core/FailPoint.hpp"
 #include "core/Files.hpp"
-#include "core/LoadedClosureTable.hpp"
 #include "core/Log.hpp"
 #include "core/Sha256.hpp"
 #include "core/Version.hpp"
@@ -74,16 +73,13 @@ InstanceOutcome runInstance(const InstanceTask& task, const stages::StageRegistr
     for (const auto& u : task.upstream) {
       const fs::path dir = resultsRoot / u.dir;
       inputs.emplace_back(u.stage, u.stageType, u.key, dir, readManifest(dir));
+      inputs.back().setSweep(u.sweepPoint, u.sweepWritten);
     }
     stages::StageContext ctx(task.workflow, task.stage, task.key, task.params, partialDir, std::move(inputs), comm,
                              core::units::UnitSystem::fromJson(task.units), stop);
     ctx.setDatabasePath(task.database);
-    std::vector<core::LoadedClosureTable> tables;
-    for (const auto& record : task.closureTables) tables.push_back(core::loadedClosureTableFromJson(record));
-    ctx.setClosureTables(std::move(tables));
-    std::vector<core::LoadedRheology> rheologies;
-    for (const auto& record : task.rheologies) rheologies.push_back(core::loadedRheologyFromJson(record));
-    ctx.setRheologies(std::move(rheologies));
+    ctx.setClosureTables(task.closureTables);
+    ctx.setRheologies(task.rheologies);
     type->run(ctx);
     core::failPoint("stage.after_run");
     if (comm.isMpi() && comm.size() > 1) MPI_Barrier(comm.raw());

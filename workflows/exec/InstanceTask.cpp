@@ -7,7 +7,12 @@ using nlohmann::json;
 json InstanceTask::toJson() const {
   json ups = json::array();
   for (const auto& u : upstream)
-    ups.push_back({{"stage", u.stage}, {"stage_type", u.stageType}, {"key", u.key}, {"dir", u.dir}});
+    ups.push_back({{"stage", u.stage},
+                   {"stage_type", u.stageType},
+                   {"key", u.key},
+                   {"dir", u.dir},
+                   {"sweep_point", u.sweepPoint},
+                   {"sweep_written", u.sweepWritten}});
   return {{"workflow", workflow}, {"stage", stage},   {"stage_type", stageType},
           {"key", key},           {"params", params}, {"sweep_point", sweepPoint}, {"sweep_written", sweepWritten}, {"database", database},
           {"upstream", ups},      {"units", units},   {"instance_dir", instanceDir},
@@ -25,12 +30,13 @@ InstanceTask InstanceTask::fromJson(const json& j) {
   t.sweepWritten = j.value("sweep_written", json::object());
   t.database = j.value("database", "");
   for (const auto& u : j.at("upstream"))
-    t.upstream.push_back({u.at("stage"), u.at("stage_type"), u.at("key"), u.at("dir")});
+    t.upstream.push_back(
+        {u.at("stage"), u.at("stage_type"), u.at("key"), u.at("dir"), u.at("sweep_point"), u.at("sweep_written")});
   t.units = j.at("units");
   t.instanceDir = j.at("instance_dir");
   t.group = j.at("group").get<std::vector<int>>();
-  t.closureTables = j.value("closure_tables", json::array());
-  t.rheologies = j.value("rheologies", json::array());
+  for (const auto& record : j.at("closure_tables")) t.closureTables.push_back(core::loadedClosureTableFromJson(record));
+  for (const auto& record : j.at("rheologies")) t.rheologies.push_back(core::loadedRheologyFromJson(record));
   return t;
 }
 

@@ -1,11 +1,15 @@
 #pragma once
-// Everything a rank needs to run one stage instance, and what it hands back. Both travel as
-// JSON, so the serial executor and MPI workers share one code path (InstanceRunner) and only
-// rank 0 ever writes the database.
+// Everything a rank needs to run one stage instance, and what it hands back. The serial
+// executor hands the task itself to InstanceRunner; the MPI executor sends it to a worker as
+// JSON (toJson, fromJson), the one conversion the rank boundary forces. Either way InstanceRunner
+// runs it, and only rank 0 ever writes the database.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "core/LoadedClosureTable.hpp"
+#include "core/LoadedRheology.hpp"
 
 namespace grainbridge::workflows::exec {
 
@@ -14,6 +18,9 @@ struct UpstreamRef {
   std::string stageType;
   std::string key;
   std::string dir;  // instance folder relative to the results root
+  // Its sweep point as the plan gives it (UpstreamInstance::setSweep), SI and as written.
+  nlohmann::json sweepPoint = nlohmann::json::object();
+  nlohmann::json sweepWritten = nlohmann::json::object();
 };
 
 struct InstanceTask {
@@ -29,13 +36,15 @@ struct InstanceTask {
   nlohmann::json units;
   std::string instanceDir;  // relative to the results root
   std::vector<int> group;   // world ranks running it together (MPI executor)
-  // The closure tables the stage reads, as db::ClosureStore::loadTable gives them, in JSON (rank 0
-  // loads them: workers never open the database).
-  nlohmann::json closureTables = nlohmann::json::array();
+  // The closure tables the stage reads, as db::ClosureStore::loadTable gives them (rank 0 loads
+  // them: workers never open the database).
+  std::vector<core::LoadedClosureTable> closureTables;
   // The mu(I) rheologies it reads (ClosureTableRef of quantity mu_of_I), as
-  // db::ClosureStore::loadRheology gives them, in JSON.
-  nlohmann::json rheologies = nlohmann::json::array();
+  // db::ClosureStore::loadRheology gives them.
+  std::vector<core::LoadedRheology> rheologies;
 
+  // For an MPI worker. fromJson throws grainbridge::Error naming what is missing or wrong in a
+  // table (core::loadedClosureTableFromJson).
   [[nodiscard]] nlohmann::json toJson() const;
   static InstanceTask fromJson(const nlohmann::json& j);
 };

@@ -97,7 +97,17 @@ void runMpiWorker(const stages::StageRegistry& registry, const std::filesystem::
       return;
     }
     const auto msg = nlohmann::json::parse(receiveText(status));
-    const InstanceTask task = InstanceTask::fromJson(msg);
+    InstanceTask task;
+    try {
+      task = InstanceTask::fromJson(msg);
+    } catch (const std::exception& e) {
+      // A task this rank cannot rebuild (a closure table ClosureTable refuses) fails its instance
+      // with the reason, as an error inside the run does; the task's first rank reports it.
+      if (me == msg.at("group").front().get<int>()) {
+        sendJson(InstanceOutcome{InstanceOutcome::Status::Failed, e.what(), nlohmann::json()}.toJson(), 0, kTagResult);
+      }
+      continue;
+    }
     core::parallel::Communicator comm = core::parallel::Communicator::self();
     if (task.group.size() > 1) {
       MPI_Group world;

@@ -57,7 +57,7 @@ RunSummary runWorkflow(const config::WorkflowConfig& config, const plan::Plan& p
     t.instanceDir = inst.relativeDir(config.name);
     for (auto u : inst.upstream) {
       const auto& up = plan.instances[u];
-      t.upstream.push_back({up.stage, up.type->name(), up.key, dirs[u]});
+      t.upstream.push_back({up.stage, up.type->name(), up.key, dirs[u], up.sweepPoint, up.sweepWritten});
     }
     for (const auto& table : inst.tables) {
       if (table.quantity == core::kRheologyQuantity) {

@@ -12,8 +12,9 @@ namespace grainbridge::workflows::plan {
 using nlohmann::json;
 
 std::string StageInstance::label() const {
-  if (sweepPoint.empty()) return stage;
-  const json& shown = sweepWritten.empty() ? sweepPoint : sweepWritten;
+  json shown = sweepWritten.empty() ? sweepPoint : sweepWritten;
+  shown.merge_patch(replica.shown);
+  if (shown.empty()) return stage;
   std::string s = stage + "[";
   bool first = true;
   for (const auto& [k, v] : shown.items()) {
@@ -90,9 +91,8 @@ Plan makePlan(const config::WorkflowConfig& config, const TableLookup& lookup) {
           inst.params = swept;
           inst.params.merge_patch(replica.overlay);
           inst.sweepPoint = points[p];
-          inst.sweepPoint.merge_patch(replica.label);
           inst.sweepWritten = written[p];
-          if (!inst.sweepWritten.empty()) inst.sweepWritten.merge_patch(replica.label);
+          inst.replica = replica;
           inst.upstream = inputs;
           inst.ranks = stage.ranksPerInstance;
           std::vector<std::string> upKeys;

@@ -14,6 +14,7 @@
 
 #include "workflows/config/WorkflowConfig.hpp"
 #include "workflows/stages/PlannedOutput.hpp"
+#include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::plan {
 
@@ -21,9 +22,10 @@ struct StageInstance {
   std::size_t index = 0;  // position in Plan::instances
   std::string stage;
   const stages::StageType* type = nullptr;
-  nlohmann::json params;      // resolved, sweep point merged in
+  nlohmann::json params;      // resolved, sweep point and replica overlay merged in
   nlohmann::json sweepPoint;  // {param: value} of this instance ({} without a sweep)
   nlohmann::json sweepWritten;  // the same point as the config wrote it ("13.7823 mm")
+  stages::Replica replica;      // which copy of its sweep point it is (StageType::replicas)
   std::string key;
   std::vector<std::size_t> upstream;  // indices of the instances it consumes
   int ranks = 1;
@@ -36,7 +38,8 @@ struct StageInstance {
   };
   std::vector<TableInput> tables;
 
-  // "gas" or "gas[solid_fraction=0.1, box=13.7 mm (×3)]" (values as written), for logs and status.
+  // "gas" or "gas[solid_fraction=0.1, box=13.7 mm (×3)]" (values as written, then what tells a
+  // replica apart: "bed[closure_sample=3]"), for logs and status.
   [[nodiscard]] std::string label() const;
   // <workflow>/<stage>/<key>: the instance folder relative to the results root.
   [[nodiscard]] std::string relativeDir(const std::string& workflow) const;

@@ -105,9 +105,23 @@ std::vector<contract::ResultColumn> shownColumns(const StageGroup& g, const std:
     }
     return out;
   }
+  const auto replicaKeys = type ? type->replicaKeys : std::vector<std::string>{};
   for (const auto& k : keys) {
     if (out.size() == kMaxDefaultColumns) break;
+    if (std::find(replicaKeys.begin(), replicaKeys.end(), k) != replicaKeys.end()) continue;  // beside the sweep
     if (!isError(k) && (g.instances.size() == 1 || variesAcross(g, k))) out.push_back({k, ""});
+  }
+  return out;
+}
+
+// The summary values that tell the replicas of a sweep point apart (closure samples), where any
+// instance records one: shown beside the sweep point, empty for the instance itself.
+std::vector<std::string> replicaColumns(const StageGroup& g, const std::optional<contract::StageTypeView>& type) {
+  std::vector<std::string> out;
+  if (!type) return out;
+  const auto keys = keysOf(g, summaryOf);
+  for (const auto& k : type->replicaKeys) {
+    if (std::find(keys.begin(), keys.end(), k) != keys.end()) out.push_back(k);
   }
   return out;
 }
@@ -237,6 +251,7 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<contract::
   for (const auto& g : groups) {
     const auto type = page.stageTypes ? page.stageTypes(g.type) : std::nullopt;
     const auto sweepKeys = keysOf(g, sweepOf);
+    const auto replicaKeys = replicaColumns(g, type);
     const auto columns = shownColumns(g, type);
     html << "<section class=\"stage\" id=\"stage-" << esc(g.stage) << "\">\n<h2>Stage " << esc(g.stage) << " <small>"
          << esc(g.type) << ", " << g.instances.size() << " instance" << (g.instances.size() == 1 ? "" : "s")
@@ -262,6 +277,7 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<contract::
 
     html << "<table class=\"instances\"><tr>";
     for (const auto& k : sweepKeys) html << "<th>" << esc(k) << "</th>";
+    for (const auto& k : replicaKeys) html << "<th>" << esc(k) << "</th>";
     for (const auto& c : columns) html << "<th>" << esc(heading(c.key, c.unit)) << "</th>";
     html << "<th class=\"l\">outputs</th><th class=\"l\">key</th></tr>\n";
     for (const auto* inst : g.instances) {
@@ -273,6 +289,7 @@ ReportFiles writeHtmlReport(const ReportPage& page, const std::vector<contract::
         html << "<td>" << (sweep.contains(k) ? sweptCell(written.value(k, sweep[k]), sweep[k], sweptUnit(type, k)) : "")
              << "</td>";
       }
+      for (const auto& k : replicaKeys) html << "<td>" << esc(cellValue(summary, k)) << "</td>";
       for (const auto& c : columns) html << "<td>" << esc(cellValue(summary, c.key)) << "</td>";
       const fs::path link = inst->dir().lexically_relative(publishedDir);
       html << "<td class=\"l\">" << outputsCell(*inst, link) << "</td><td class=\"l\"><code>"

@@ -12,6 +12,7 @@
 #include "workflows/report/BedFindings.hpp"
 #include "workflows/report/FindingsPage.hpp"
 #include "workflows/report/Plot.hpp"
+#include "workflows/stages/ClosureSamples.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -215,13 +216,13 @@ void BedCompareStage::run(StageContext& ctx) const {
   }
   const std::string tap = p.at("tap");
 
-  // Closure samples of a run (issue 31) join their nominal run, the one of the same stage and sweep
-  // point without a closure_sample: they give its spread from the DEM closures and are not runs of
-  // their own in the comparison.
+  // Closure samples of a run (issue 31), the runs whose summary records a closure_sample, join
+  // their nominal run, the one of the same stage and sweep point that records none: they give its
+  // spread from the DEM closures and are not runs of their own in the comparison.
   std::vector<const UpstreamInstance*> samples;
   std::vector<Bed> beds;
   for (const auto& up : ctx.inputs()) {
-    if (up.summaryValue("closure_sample")) {
+    if (up.summaryValue(kClosureSampleKey)) {
       samples.push_back(&up);
       continue;
     }
@@ -258,11 +259,8 @@ void BedCompareStage::run(StageContext& ctx) const {
 
   std::vector<std::vector<const UpstreamInstance*>> samplesOf(beds.size());
   for (const auto* sample : samples) {
-    json point = sample->sweepWritten();
-    point.erase("closure_sample");
-    point.erase("closure_perturbed");
     const auto nominal = std::find_if(beds.begin(), beds.end(), [&](const Bed& b) {
-      return b.instance->stage() == sample->stage() && b.written == point;
+      return b.instance->stage() == sample->stage() && b.instance->sweepPoint() == sample->sweepPoint();
     });
     if (nominal == beds.end()) {
       throw Error("bed_compare: closure sample " + sample->stage() + " (" + sample->shortKey() +
@@ -318,7 +316,7 @@ void BedCompareStage::run(StageContext& ctx) const {
           const auto v = sample->summaryValue(key);
           if (!v)
             throw Error("bed_compare: closure sample " + sample->shortKey() + " of " + bed.label + " has no " + key);
-          values.push_back({sample->summaryText("closure_perturbed", "all"), v->value, v->error});
+          values.push_back({sample->summaryText(kClosurePerturbedKey, "all"), v->value, v->error});
         }
         run.closureSpreads[output] = report::closureSpread(values);
       }

@@ -1,7 +1,6 @@
 #include "workflows/stages/ClosureSamples.hpp"
 
 #include <algorithm>
-#include <cstdint>
 
 #include "core/ClosureTableDraw.hpp"
 #include "core/Error.hpp"
@@ -10,6 +9,33 @@ namespace grainbridge::workflows::stages {
 
 using nlohmann::json;
 using params::ParamSpec;
+
+namespace {
+
+constexpr const char* kOverlayKey = "closure_draw";
+
+}  // namespace
+
+std::uint64_t ClosureDraw::stream() const {
+  return (static_cast<std::uint64_t>(seed) << 32) | static_cast<std::uint64_t>(sample);
+}
+
+bool ClosureDraw::draws(const std::string& quantity) const {
+  return std::find(quantities.begin(), quantities.end(), quantity) != quantities.end();
+}
+
+json ClosureDraw::summary() const { return {{kClosureSampleKey, sample}, {kClosurePerturbedKey, perturbed}}; }
+
+void to_json(json& j, const ClosureDraw& d) {
+  j = {{"sample", d.sample}, {"seed", d.seed}, {"quantities", d.quantities}, {"perturbed", d.perturbed}};
+}
+
+void from_json(const json& j, ClosureDraw& d) {
+  d.sample = j.at("sample").get<int>();
+  d.seed = j.at("seed").get<std::int64_t>();
+  d.quantities = j.at("quantities").get<std::vector<std::string>>();
+  d.perturbed = j.at("perturbed").get<std::string>();
+}
 
 void addClosureSampleParams(params::ParamSchema& schema) {
   schema
@@ -42,49 +68,53 @@ std::vector<Replica> closureSampleReplicas(const json& p, const std::vector<std:
   const int joint = p.value("closure_samples", 0);
   const int each = p.value("closure_samples_per_quantity", 0);
   const std::int64_t seed = p.value("sample_seed", std::int64_t{1});
-  int k = 0;
-  const auto add = [&](const json& drawn, const std::string& perturbed) {
-    ++k;
+  const auto add = [&](std::vector<std::string> drawn, const std::string& perturbed) {
+    const ClosureDraw draw{static_cast<int>(replicas.size()), seed, std::move(drawn), perturbed};
     Replica r;
-    r.overlay["closure_draw"] = {
-        {"sample", k}, {"seed", seed}, {"quantities", drawn}, {"perturbed", perturbed.empty() ? "all" : perturbed}};
-    r.label["closure_sample"] = k;
-    if (!perturbed.empty()) r.label["closure_perturbed"] = perturbed;
+    r.overlay[kOverlayKey] = draw;
+    // For logs and status only ("bed[closure_sample=3]"); a joint sample's "all" goes unsaid.
+    r.shown[kClosureSampleKey] = draw.sample;
+    if (draw.perturbed != "all") r.shown[kClosurePerturbedKey] = draw.perturbed;
     replicas.push_back(std::move(r));
   };
-  for (int s = 0; s < joint; ++s) add(quantities, "");
+  for (int s = 0; s < joint; ++s) add(quantities, "all");
   for (const auto& q : quantities) {
-    for (int s = 0; s < each; ++s) add(json::array({q}), q);
+    for (int s = 0; s < each; ++s) add({q}, q);
   }
   return replicas;
 }
 
+std::optional<ClosureDraw> closureDrawOf(const json& p) {
+  const auto it = p.find(kOverlayKey);
+  if (it == p.end()) return std::nullopt;
+  return it->get<ClosureDraw>();
+}
+
 std::vector<core::LoadedClosureTable> sampleClosureTables(const json& p,
                                                           const std::vector<core::LoadedClosureTable>& nominal) {
-  if (!p.contains("closure_draw")) return nominal;
-  const json& draw = p.at("closure_draw");
-  // Sample k of seed s draws from the stream of (s, k); core::drawClosureTable adds the quantity.
-  const std::uint64_t stream = (static_cast<std::uint64_t>(draw.at("seed").get<std::int64_t>()) << 32) |
-                               static_cast<std::uint64_t>(draw.at("sample").get<std::int64_t>());
-  const auto& quantities = draw.at("quantities");
+  const auto draw = closureDrawOf(p);
+  if (!draw) return nominal;
   std::vector<core::LoadedClosureTable> drawn = nominal;
   for (auto& loaded : drawn) {
-    if (std::find(quantities.begin(), quantities.end(), loaded.quantity()) == quantities.end()) continue;
+    if (!draw->draws(loaded.quantity())) continue;
     if (loaded.uncertainties.empty()) {
       throw Error("closure table \"" + loaded.name + "\" (" + loaded.quantity() +
-                  ") has no standard errors to draw closure sample " + std::to_string(draw.at("sample").get<int>()) +
-                  " within");
+                  ") has no standard errors to draw closure sample " + std::to_string(draw->sample) + " within");
     }
-    loaded.table = core::drawClosureTable(loaded.table, loaded.uncertainties, stream);
+    // core::drawClosureTable adds the quantity to the stream, so the tables of one sample differ.
+    loaded.table = core::drawClosureTable(loaded.table, loaded.uncertainties, draw->stream());
   }
   return drawn;
 }
 
 void addClosureSampleSummary(const json& p, json& summary) {
-  if (!p.contains("closure_draw")) return;
-  const json& draw = p.at("closure_draw");
-  summary["closure_sample"] = draw.at("sample");
-  summary["closure_perturbed"] = draw.at("perturbed");
+  if (const auto draw = closureDrawOf(p)) summary.update(draw->summary());
+}
+
+void addClosureSamplePlannedOutput(const json& p, PlannedOutput& out) {
+  if (!closureDrawOf(p)) return;
+  out.summaryKeys.emplace_back(kClosureSampleKey);
+  out.summaryKeys.emplace_back(kClosurePerturbedKey);
 }
 
 }  // namespace grainbridge::workflows::stages

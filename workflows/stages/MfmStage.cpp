@@ -548,6 +548,7 @@ std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
     sides.push_back(patch.value("kind", "") == "pressure_outlet" ? patch.value("side", "") : "");
   }
   for (auto& column : massAccountColumns(phases, sides)) out.seriesColumns.push_back(std::move(column));
+  addClosureSamplePlannedOutput(p, out);
   return out;
 }
 

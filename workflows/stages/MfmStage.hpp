@@ -7,6 +7,7 @@
 // and a summary of the time-averaged pressure drops and heights with their errors. The solids
 // closures are kinetic theory (`ktgf`) or DEM closure tables (`table`) the executor loads from
 // the workflow database (docs/multi-fluid.md).
+#include "workflows/stages/ClosureSamples.hpp"
 #include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -57,6 +58,9 @@ class MfmStage final : public StageType {
   // closure "table" with closure_samples or closure_samples_per_quantity: the nominal run and its
   // closure samples (workflows/stages/ClosureSamples.hpp).
   [[nodiscard]] std::vector<Replica> replicas(const nlohmann::json& resolved) const override;
+  [[nodiscard]] std::vector<std::string> replicaSummaryKeys() const override {
+    return {kClosureSampleKey, kClosurePerturbedKey};
+  }
   [[nodiscard]] std::string tableErrorsNeededBy(const nlohmann::json& resolved) const override;
   // plastic mu_i: a rheology of other grains than the solids phase's is refused at /rheology.
   void checkTableGrains(const nlohmann::json& resolved, const std::string& pointer, const ClosureTableRef& ref,
@@ -64,8 +68,8 @@ class MfmStage final : public StageType {
   void run(StageContext& ctx) const override;
   // Field frames with their materials, the mean fields (with an averaging window), and the
   // summary's pressure drops (one per tap, the first also as pressure_drop), heights and solids
-  // inventory changes per phase, for the checks of the stages that read them (fluidization,
-  // bed_compare).
+  // inventory changes per phase, and a closure sample's closure_sample and closure_perturbed, for
+  // the checks of the stages that read them (fluidization, bed_compare).
   [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override;
 
  private:

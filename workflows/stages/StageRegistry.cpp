@@ -59,11 +59,13 @@ contract::StageTypeLookup StageRegistry::reportView() const {
   return [this](const std::string& typeName) -> std::optional<contract::StageTypeView> {
     const StageType* type = find(typeName);
     if (type == nullptr) return std::nullopt;
-    return contract::StageTypeView{type->keyResults(), [type](const std::string& param) {
+    return contract::StageTypeView{type->keyResults(),
+                                   [type](const std::string& param) {
                                      std::string why;
                                      const auto* spec = type->params().findPath(param, why);
                                      return spec == nullptr ? std::string() : spec->dimension().siUnit();
-                                   }};
+                                   },
+                                   type->replicaSummaryKeys()};
   };
 }
 

@@ -21,12 +21,15 @@ enum class InputMode {
 using contract::ResultColumn;
 
 // A copy of an instance a stage asks the planner for beyond its sweep points (an mfm stage's
-// closure samples): `overlay` is merged into the resolved params, so it enters the copy's key and
-// reaches its run; `label` joins the sweep point, so logs, manifests and comparing stages tell
-// the copies apart. The instance itself is the replica with an empty overlay and label.
+// closure samples). `overlay` is merged into the resolved params, so it enters the copy's key and
+// reaches its run, which records what tells the copy apart among its products (its summary), for
+// comparing stages to read by name. A copy keeps its instance's sweep point. `shown` names the
+// copy in logs and status ({"closure_sample": 3} shows as bed[closure_sample=3]) and nowhere
+// else: it is in no manifest or task, so nothing downstream reads it. The instance itself is the
+// replica with an empty overlay.
 struct Replica {
   nlohmann::json overlay = nlohmann::json::object();
-  nlohmann::json label = nlohmann::json::object();
+  nlohmann::json shown = nlohmann::json::object();
 };
 
 // A closure table an instance reads from the workflow database, and the parameter naming it
@@ -76,6 +79,9 @@ class StageType {
   // alone. Parameters that only ask for copies should not affect results (doesNotAffectResults),
   // so the first copy, with an empty overlay, keeps the key the instance has without them.
   [[nodiscard]] virtual std::vector<Replica> replicas(const nlohmann::json& /*resolved*/) const { return {Replica{}}; }
+  // The summary values in which a replica records which copy it is (a closure sample's
+  // closure_sample and closure_perturbed): a report shows them beside the sweep point.
+  [[nodiscard]] virtual std::vector<std::string> replicaSummaryKeys() const { return {}; }
   // The parameter (below the stage's /params) that needs the standard errors of the closure
   // tables the instance reads, when one does (closure samples draw within them); "" otherwise.
   // The planner refuses a database table without errors naming it, before any work starts.

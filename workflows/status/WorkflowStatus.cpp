@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include "core/text/NumberText.hpp"
 #include "db/Database.hpp"
@@ -105,6 +106,11 @@ std::vector<std::string> explainStage(const config::WorkflowConfig& config, cons
   std::map<std::string, std::string> labelOfKey;
   for (const auto& inst : plan.instances) labelOfKey[inst.key] = inst.label();
 
+  std::set<std::string> overlaid;  // the params the stage's replicas overlay (closure_draw)
+  for (const auto& inst : plan.instances) {
+    if (inst.stage != stage) continue;
+    for (const auto& [k, v] : inst.replica.overlay.items()) overlaid.insert(k);
+  }
   for (const auto& inst : plan.instances) {
     if (inst.stage != stage) continue;
     std::string whyNot;
@@ -112,14 +118,16 @@ std::vector<std::string> explainStage(const config::WorkflowConfig& config, cons
       lines.push_back(inst.label() + ": up to date (key " + inst.key.substr(0, 12) + ")");
       continue;
     }
-    // Compare with the newest run of this stage at the same sweep point. A sweep point without
-    // one has never run: its siblings' runs are other instances, not its history (comparing with
-    // one reported the sweep value as a change).
+    // Compare with the newest run of this stage at the same sweep point and of the same replica
+    // (the same values, or none, of the params its replicas overlay: a closure sample's draw). A
+    // sweep point without one has never run: its siblings' runs are other instances, not its
+    // history (comparing with one reported the sweep value as a change).
     const db::RunRecord* previous = nullptr;
     for (auto it = history.rbegin(); it != history.rend() && previous == nullptr; ++it) {
       const json old = json::parse(it->paramsJson);
       bool samePoint = true;
       for (const auto& [k, v] : inst.sweepPoint.items()) samePoint = samePoint && old.contains(k) && old[k] == v;
+      for (const auto& k : overlaid) samePoint = samePoint && old.value(k, json()) == inst.params.value(k, json());
       if (samePoint) previous = &*it;
     }
     if (previous == nullptr) {
