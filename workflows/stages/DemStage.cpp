@@ -323,7 +323,7 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   // before it ran: refused here from their volume.
   if (const auto problem = randomInsertionProblem(p.get<InsertionChoice>(), setup, "box_lo/box_hi"))
     d.add(ptr + problem->pointer, problem->message + "; or use insertion \"fcc_lattice\" for a denser start");
-  report(checkContactTimes(setup, p.at("dt"), ""));
+  report(checkContactTimes(setup, p.at("dt")));
 }
 
 namespace {

@@ -140,14 +140,14 @@ std::shared_ptr<ParamSchema> pairContactSchema() {
   return s;
 }
 
-std::vector<core::engine::SetupProblem> checkContactTimes(const DemSetup& setup, double dt, const std::string& ptr) {
+std::vector<core::engine::SetupProblem> checkContactTimes(const DemSetup& setup, double dt) {
   std::vector<core::engine::SetupProblem> problems;
   // A dt too large for one pair is usually too large for many (every species pair and wall):
   // one message for dt, led by the shortest contact, instead of one per pair.
   std::vector<const PairTiming*> tooShort;
   for (const auto& t : setup.timings) {
     if (!std::isfinite(t.contactTime)) {
-      problems.emplace_back(ptr + t.pointer,
+      problems.emplace_back(t.pointer,
                             "pair " + t.pair +
                                 " is overdamped (gamma_n^2/4 >= k_n/m_eff): no rebound and no contact time (Eq. "
                                 "6.10); lower gamma_n or raise k_n");
@@ -166,7 +166,7 @@ std::vector<core::engine::SetupProblem> checkContactTimes(const DemSetup& setup,
     msg << (tooShort.size() > 4 ? ", ..." : "") << ")";
   }
   msg << "; the reference recommends about t_c/50";
-  problems.emplace_back(ptr + "/dt", msg.str());
+  problems.emplace_back("/dt", msg.str());
   return problems;
 }
 

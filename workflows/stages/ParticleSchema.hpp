@@ -47,8 +47,7 @@ std::shared_ptr<params::ParamSchema> contactSchema();
 std::shared_ptr<params::ParamSchema> pairContactSchema();
 
 // Every pair must rebound (not overdamped) and be resolved in time: dt <= t_c/10 (Eq. 6.10).
-// Pointers are `ptr` + the timing's pointer.
-[[nodiscard]] std::vector<core::engine::SetupProblem> checkContactTimes(const DemSetup& setup, double dt,
-                                                                        const std::string& ptr);
+// Pointers are the timings' own, below /params.
+[[nodiscard]] std::vector<core::engine::SetupProblem> checkContactTimes(const DemSetup& setup, double dt);
 
 }  // namespace grainbridge::workflows::stages

@@ -122,7 +122,7 @@ void checkParticles(const json& p, const std::string& wallKey, TfdemStageSetup& 
     problems.push_back({particlePointer(problem.pointer, wallKey), problem.message});
   s.insertion = p.get<InsertionChoice>();
   if (const auto problem = randomInsertionProblem(s.insertion, s.dem, "lengths")) problems.push_back(*problem);
-  append(problems, checkContactTimes(s.dem, s.engine.particles.dt, ""));
+  append(problems, checkContactTimes(s.dem, s.engine.particles.dt));
 }
 
 }  // namespace
