@@ -33,7 +33,18 @@ std::string PlasticRegime::Params::problem() const {
 }
 
 PlasticRegime::Result PlasticRegime::evaluate(double voidFraction, double solidFraction, double strainInvariant) const {
+  return evaluate(voidFraction, solidFraction, strainInvariant, params.criticalVoidFraction);
+}
+
+PlasticRegime::Result PlasticRegime::evaluate(double voidFraction, double solidFraction, double strainInvariant,
+                                              double criticalVoidFraction) const {
   if (const auto p = params.problem(); !p.empty()) throw Error("plastic regime (Schaeffer): " + p);
+  if (!(criticalVoidFraction > 0.0 && criticalVoidFraction < 1.0)) {
+    std::ostringstream msg;
+    msg << "plastic regime (Schaeffer): the cell's critical void fraction eps_g* must be in (0, 1), got "
+        << criticalVoidFraction;
+    throw Error(msg.str());
+  }
   if (!(voidFraction > 0.0 && voidFraction <= 1.0) || !(solidFraction >= 0.0 && solidFraction < 1.0) ||
       !(strainInvariant >= 0.0 && std::isfinite(strainInvariant))) {
     std::ostringstream msg;
@@ -42,9 +53,9 @@ PlasticRegime::Result PlasticRegime::evaluate(double voidFraction, double solidF
     throw Error(msg.str());
   }
   Result r;
-  if (voidFraction >= params.criticalVoidFraction) return r;  // the viscous regime
+  if (voidFraction >= criticalVoidFraction) return r;  // the viscous regime
   r.plastic = true;
-  r.pStar = params.coefficient * std::pow(params.criticalVoidFraction - voidFraction, params.exponent);
+  r.pStar = params.coefficient * std::pow(criticalVoidFraction - voidFraction, params.exponent);
   r.pressure = solidFraction * r.pStar;  // Eq. 3.26
   // MFIX's cap on either viscosity; at I2D = 0 the cap is the value (the limit of min(x, cap)).
   if (!(strainInvariant > 0.0)) {

@@ -65,6 +65,10 @@ struct PlasticRegime {
   // mixture's phases would each need their own grains). Throws grainbridge::Error for unusable params
   // (problem()) or inputs out of range.
   [[nodiscard]] Result evaluate(double voidFraction, double solidFraction, double strainInvariant) const;
+  // The same with the cell's own eps_g* in place of params.criticalVoidFraction: a mixture's
+  // packing limit by composition (MixturePacking.hpp). Throws unless it is in (0, 1).
+  [[nodiscard]] Result evaluate(double voidFraction, double solidFraction, double strainInvariant,
+                                double criticalVoidFraction) const;
 };
 
 }  // namespace grainbridge::closures

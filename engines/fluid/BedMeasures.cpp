@@ -92,6 +92,19 @@ double solidsVolume(const FlowState& state, std::size_t m) {
   return total * grid.cellVolume();
 }
 
+double meanGranularTemperature(const FlowState& state, std::size_t m) {
+  const auto& grid = state.grid();
+  double weighted = 0.0, volume = 0.0;
+  for (int k = 0; k < grid.cells(2); ++k)
+    for (int j = 0; j < grid.cells(1); ++j)
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const double eps = std::max(state.phases[m].fraction(i, j, k), 0.0);
+        weighted += eps * state.phases[m].granularTemperature(i, j, k);
+        volume += eps;
+      }
+  return volume > 0.0 ? weighted / volume : 0.0;
+}
+
 double mixtureMeanHeight(const std::vector<double>& heights, const std::vector<double>& volumes) {
   double moment = 0.0, volume = 0.0;
   for (std::size_t m = 0; m < heights.size() && m < volumes.size(); ++m) {

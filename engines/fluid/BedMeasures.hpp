@@ -48,4 +48,8 @@ struct VerticalAxis {
 // the z spacing, which a 2D grid sets to its depth).
 [[nodiscard]] double solidsVolume(const FlowState& state, std::size_t m);
 
+// The granular temperature of solids phase m weighted by its solids volume over the domain,
+// sum eps_m theta_m / sum eps_m [m^2/s^2]; 0 when the phase holds no solids.
+[[nodiscard]] double meanGranularTemperature(const FlowState& state, std::size_t m);
+
 }  // namespace grainbridge::fluid

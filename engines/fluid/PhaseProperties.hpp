@@ -6,6 +6,7 @@
 // are mu_m and lambda_m as they multiply D_m there, so the gas's carry its eps_g (eps_g mu_g,
 // Eq. 3.20) and the solids' are the kinetic-theory and plastic viscosities as they stand.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "engines/fluid/Fields.hpp"
@@ -61,6 +62,9 @@ struct FlowProperties {
   std::vector<CellField> dragCoefficient;
   // Per pair of solids phases the model couples (FlowModel::solidsPairs); empty with one.
   std::vector<SolidsPairDrag> solidsDrag;
+  // eps_p of Eq. 3.68 per cell, when the model gives one (FlowModel::packedFractionByCell: a
+  // mixture packs by its composition); unset, SimpleSettings::packedFraction holds everywhere.
+  std::optional<CellField> packedFraction;
 };
 
 }  // namespace grainbridge::fluid

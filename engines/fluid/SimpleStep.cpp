@@ -32,7 +32,13 @@ FlowProperties propertiesFor(const StaggeredGrid& grid, std::size_t phases, cons
     p.dragCoefficient.emplace_back(grid);
   }
   for (const auto& [l, m] : model.solidsPairs()) p.solidsDrag.emplace_back(grid, l, m);
+  if (model.packedFractionByCell()) p.packedFraction.emplace(grid, 0.0);
   return p;
+}
+
+// eps_p of Eq. 3.68 at cell c: the model's for the cell, or the settings' everywhere.
+double packedFractionAt(const FlowProperties& props, const SimpleSettings& settings, std::size_t c) {
+  return props.packedFraction ? (*props.packedFraction)[c] : settings.packedFraction;
 }
 
 void copyPropertiesToGhosts(FlowProperties& p, const Boundaries& boundaries) {
@@ -106,8 +112,8 @@ double velocityBound(const Boundaries& boundaries) {
 
 // The first non-finite value, fraction out of [0, 1] (beyond round-off) or velocity beyond
 // `bound`, described; empty if none.
-std::string firstBadValue(const FlowState& state, const SimpleSettings& settings, double bound,
-                          std::array<int, 3>& cell) {
+std::string firstBadValue(const FlowState& state, const FlowProperties& props, const SimpleSettings& settings,
+                          double bound, std::array<int, 3>& cell) {
   const StaggeredGrid& grid = state.grid();
   for (int k = 0; k < grid.cells(2); ++k) {
     for (int j = 0; j < grid.cells(1); ++j) {
@@ -115,11 +121,12 @@ std::string firstBadValue(const FlowState& state, const SimpleSettings& settings
         const std::size_t c = grid.index(i, j, k);
         cell = {i, j, k};
         if (!std::isfinite(state.pressure[c])) return "the gas pressure is not finite";
-        if (state.phases.size() > 1 && settings.packedFraction > 0.0) {
+        const double packed = packedFractionAt(props, settings, c);
+        if (state.phases.size() > 1 && packed > 0.0) {
           const double solids = 1.0 - state.phases[0].fraction[c];
-          if (solids > settings.packedFraction + settings.overpacking)
-            return "the solids fraction is " + std::to_string(solids) + ", beyond eps_s,max " +
-                   std::to_string(settings.packedFraction) + " by more than " + std::to_string(settings.overpacking);
+          if (solids > packed + settings.overpacking)
+            return "the solids fraction is " + std::to_string(solids) + ", beyond eps_s,max " + std::to_string(packed) +
+                   " by more than " + std::to_string(settings.overpacking);
         }
         for (std::size_t m = 0; m < state.phases.size(); ++m) {
           const double eps = state.phases[m].fraction[c];
@@ -332,7 +339,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
         // far below eps_s,max (the phases corrected before m already hold their new values).
         double solids = 0.0;
         for (std::size_t l = 1; l < M; ++l) solids += state.phases[l].fraction[c];
-        if (solids + correction > settings.packedFraction && correction > 0.0) {
+        if (solids + correction > packedFractionAt(props, settings, c) && correction > 0.0) {
           withheld += (1.0 - settings.fractionRelaxation) * correction;
           correction *= settings.fractionRelaxation;  // Eq. 3.68
         }
@@ -365,7 +372,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     result.equation = worst.equation;
     result.cell = grid.coordinates(worst.cell);
     std::array<int, 3> badCell{};
-    result.failure = firstBadValue(state, settings, bound, badCell);
+    result.failure = firstBadValue(state, props, settings, bound, badCell);
     if (!result.failure.empty()) {
       result.cell = badCell;
       return result;

@@ -47,6 +47,9 @@ class FlowModel {
   // continuity; every other phase sees its exchange implicitly at its given velocity (as a dilute
   // face's, InterphaseCoupling.hpp), and the gas continuity sees its fraction change over the step.
   [[nodiscard]] virtual bool givenPhase(std::size_t /*m*/) const { return false; }
+  // Whether evaluate() gives each cell its own packed solids fraction (FlowProperties::
+  // packedFraction: a mixture's packing limit by composition) in place of SimpleSettings'.
+  [[nodiscard]] virtual bool packedFractionByCell() const { return false; }
   // Equations of the model's own beyond mass and momentum (a kinetic-theory model's granular
   // energy, Eq. 3.34), solved once per outer iteration after the continuity corrections, at the
   // iterate's velocities and fractions and the `properties` evaluated at its start. Each returns
@@ -68,7 +71,9 @@ struct SimpleSettings {
   // at ten times tighter residuals (measured: 15.6 against 15.7 iterations per step).
   double momentumRelaxation = 0.9;
   double fractionRelaxation = 0.5;  // omega_eps of Eq. 3.68
-  double packedFraction = 0.0;      // eps_p of Eq. 3.68 (the solids fraction of the packed bed); 0: no solids
+  // eps_p of Eq. 3.68 (the solids fraction of the packed bed); 0: no solids. A model may give each
+  // cell its own (FlowModel::packedFractionByCell).
+  double packedFraction = 0.0;
   // A cell's solids beyond packedFraction + this is a diverged state, not compaction: the plastic
   // pressure holds a bed within about 0.01 of eps_p (0.603 against 0.596 for the grain bed).
   double overpacking = 0.05;

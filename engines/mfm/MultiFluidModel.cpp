@@ -97,11 +97,29 @@ double slipSpeed(const fluid::PhaseFields& gas, const fluid::PhaseFields& solids
 
 }  // namespace
 
+namespace {
+
+std::vector<double> maxPackingsOf(const std::vector<SolidsPhase>& solids) {
+  std::vector<double> packings;
+  for (const SolidsPhase& s : solids) packings.push_back(s.maxPacking);
+  return packings;
+}
+
+std::vector<double> diametersOf(const std::vector<SolidsPhase>& solids) {
+  std::vector<double> diameters;
+  for (const SolidsPhase& s : solids) diameters.push_back(s.diameter);
+  return diameters;
+}
+
+}  // namespace
+
 MultiFluidModel::MultiFluidModel(MultiFluidParams params)
     : params_(std::move(params)),
       dissipationScale_(params_.solids.size() + 1, 1.0),
-      wallEffective_(params_.solids.size() + 1) {
-  for (const SolidsPhase& s : params_.solids) diameters_.push_back(s.diameter);
+      diameters_(diametersOf(params_.solids)),
+      wallEffective_(params_.solids.size() + 1),
+      packing_(params_.packingLimit, params_.plastic.params.criticalVoidFraction, diameters_,
+               maxPackingsOf(params_.solids)) {
   if (params_.granularEnergy == GranularEnergyForm::Algebraic && (params_.rotation || params_.wall)) {
     throw Error(
         "multi-fluid model: the rotation model and Johnson-Jackson walls need the granular-energy equation "
@@ -139,6 +157,28 @@ closures::JohnsonJackson MultiFluidModel::wallFor(std::size_t m) const {
   jj.params.wallRestitution = params_.solids[m - 1].wallRestitution;
   jj.params.wallEffectiveRestitution = wallEffective_[m];
   return jj;
+}
+
+double MultiFluidModel::criticalVoidFraction(const fluid::FlowState& state, std::size_t c) const {
+  if (!packing_.byComposition()) return params_.plastic.params.criticalVoidFraction;
+  const CellSolidFractions fractions(state, c);
+  return packing_.criticalVoidFraction(fractions.values());
+}
+
+double MultiFluidModel::plasticSolidsShare(const fluid::FlowState& state) const {
+  const fluid::StaggeredGrid& grid = state.grid();
+  double plastic = 0.0, total = 0.0;
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const std::size_t c = grid.index(i, j, k);
+        const double solids = 1.0 - closureVoidFraction(state, c);
+        total += solids;
+        if (closureVoidFraction(state, c) < criticalVoidFraction(state, c)) plastic += solids;
+      }
+    }
+  }
+  return total > 0.0 ? plastic / total : 0.0;
 }
 
 std::vector<std::array<std::size_t, 2>> MultiFluidModel::solidsPairs() const {
@@ -182,6 +222,8 @@ void MultiFluidModel::evaluateCells(const Drag& drag, const fluid::FlowState& st
         p.phases[0].compressibility[c] = params_.gas.compressibility();
         p.phases[0].shearViscosity[c] = epsG * params_.gas.viscosity;
         p.phases[0].bulkViscosity[c] = -2.0 / 3.0 * epsG * params_.gas.viscosity;
+        const double epsGStar = criticalVoidFraction(state, c);
+        if (p.packedFraction) (*p.packedFraction)[c] = 1.0 - epsGStar;  // Eq. 3.68's eps_p
         for (std::size_t m = 1; m < state.phases.size(); ++m) {
           const SolidsPhase& solids = params_.solids[m - 1];
           p.phases[m].density[c] = solids.density;
@@ -191,9 +233,9 @@ void MultiFluidModel::evaluateCells(const Drag& drag, const fluid::FlowState& st
                                        rhoG,  params_.gas.viscosity,            slip};
           p.dragCoefficient[m][c] = drag.evaluate(ds).beta;
           if (params_.granularEnergy == GranularEnergyForm::Algebraic) {
-            evaluateAlgebraic(state, p, m, c, epsG);
+            evaluateAlgebraic(state, p, m, c, epsG, epsGStar);
           } else {
-            evaluatePde(state, p, m, c, epsG);
+            evaluatePde(state, p, m, c, epsG, epsGStar);
           }
         }
         if (!p.solidsDrag.empty()) evaluateSolidsDrag(state, p, c);
@@ -203,21 +245,22 @@ void MultiFluidModel::evaluateCells(const Drag& drag, const fluid::FlowState& st
 }
 
 void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m,
-                                        std::size_t c, double epsG) const {
+                                        std::size_t c, double epsG, double epsGStar) const {
   const auto& plastic = params_.plastic.params;
   fluid::PhaseProperties& out = p.phases[m];
   const SolidsState now = solidsState(state, m, c);
   const double eps = now.solidFraction, theta = now.theta;
   const closures::SyamlalCoefficients& kc = now.coefficients;
-  const closures::PlasticRegime::Result pl = params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant());
+  const closures::PlasticRegime::Result pl =
+      params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant(), epsGStar);
   out.solidsPressure[c] = kc.k1 * eps * eps * theta + pl.pressure;  // Eqs. 3.21 + 3.26
   out.plasticPressure[c] = pl.pressure;
   out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + plasticViscosityShare(state, m, c) * pl.viscosity;
   out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
   double slope = 2.0 * kc.k1 * eps * theta;
   if (pl.plastic) {
-    slope += pl.pStar +
-             eps * plastic.exponent * plastic.coefficient * std::pow(plastic.criticalVoidFraction - epsG, plastic.exponent - 1.0);
+    slope +=
+        pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - epsG, plastic.exponent - 1.0);
   }
   out.solidsPressureSlope[c] = slope;
 }
@@ -251,6 +294,12 @@ void MultiFluidModel::setMixtureContacts(const fluid::FlowState& state, std::siz
   fractions[own] += shift;
   const closures::LebowitzMixture mixture(fractions.values(), diameters_);
   ks.g0 = mixture.g0(own, own);
+  if (params_.mixtureKineticTheory == MixtureKineticTheory::PerPhase) {
+    // Eqs. 3.21-3.25, 5.7 and 5.20 as printed: eps_sm g0_mm, the phase's own contacts.
+    ks.contactSum = fractions[own] * ks.g0;
+    ks.dissipationSum = ks.contactSum;
+    return;
+  }
   ks.contactSum = 0.0;
   ks.dissipationSum = 0.0;
   for (std::size_t l = 0; l < fractions.size(); ++l) {
@@ -259,14 +308,14 @@ void MultiFluidModel::setMixtureContacts(const fluid::FlowState& state, std::siz
   }
 }
 
-void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m,
-                                  std::size_t c, double epsG) const {
+void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c,
+                                  double epsG, double epsGStar) const {
   const auto& plastic = params_.plastic.params;
   fluid::PhaseProperties& out = p.phases[m];
   const KineticCell kin = kineticCell(state, p, m, c);
   const double eps = kin.state.solidFraction;
   const closures::PlasticRegime::Result pl =
-      params_.plastic.evaluate(epsG, eps, fluid::strainRate(state.phases[m], c).deviatorInvariant());
+      params_.plastic.evaluate(epsG, eps, fluid::strainRate(state.phases[m], c).deviatorInvariant(), epsGStar);
   out.solidsPressure[c] = kin.transport.pressure + pl.pressure;  // kinetic + Eq. 3.26
   out.plasticPressure[c] = pl.pressure;
   out.shearViscosity[c] = kin.transport.shearViscosity + plasticViscosityShare(state, m, c) * pl.viscosity;
@@ -284,8 +333,8 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   const double p1 = closures::evaluate(params_.closure.kineticModel(), shifted).pressure;
   double slope = std::max((p1 - p0) / (shifted.solidFraction - eps), 0.0);
   if (pl.plastic) {
-    slope += pl.pStar +
-             eps * plastic.exponent * plastic.coefficient * std::pow(plastic.criticalVoidFraction - epsG, plastic.exponent - 1.0);
+    slope +=
+        pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - epsG, plastic.exponent - 1.0);
   }
   out.solidsPressureSlope[c] = slope;
   if (params_.wall) {
@@ -316,7 +365,7 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
         for (int i = 0; i < grid.cells(0); ++i) {
           const std::size_t c = grid.index(i, j, k);
           if (params_.plasticTheta == PlasticTheta::Pinned &&
-              closureVoidFraction(state, c) < params_.plastic.params.criticalVoidFraction) {
+              closureVoidFraction(state, c) < criticalVoidFraction(state, c)) {
             terms.pinned[c] = 1;
             continue;
           }

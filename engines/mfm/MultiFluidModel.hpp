@@ -35,6 +35,7 @@
 #include "engines/closures/ClosureModel.hpp"
 #include "engines/closures/GasSolidsDrag.hpp"
 #include "engines/closures/JohnsonJackson.hpp"
+#include "engines/closures/MixturePacking.hpp"
 #include "engines/closures/PlasticRegime.hpp"
 #include "engines/closures/SolidsSolidsDrag.hpp"
 #include "engines/closures/SyamlalAlgebraic.hpp"
@@ -71,6 +72,9 @@ struct SolidsPhase {
   double friction = 0.0;
   double wallFriction = 0.0;
   double tangentialRestitution = 0.33;
+  // The packing fraction of this kind alone, which a packing limit by composition starts from
+  // (MixturePacking.hpp): MFiX's ep_s_max, 0.6 by default in its 2003-05 init_namelist.f.
+  double maxPacking = 0.6;
 };
 
 enum class GranularEnergyForm { Pde, Algebraic };
@@ -93,6 +97,14 @@ struct SolidsPair {
 // values of theta_m to zero when Ep_g < EP_star (Schaeffer, 1987)").
 enum class PlasticTheta { Solved, Pinned };
 
+// How a phase of a mixture counts contacts in its kinetic theory (Lebowitz g0):
+// Summed, MFiX's form since 2005 (SUM_EpsGo, KineticState.hpp): eps_s g0 becomes sum_l eps_l g0_ml
+// in the pressure, viscosities and conductivity and sum_l eps_l g0_ll in the dissipation, so two
+// identical phases add up to one; PerPhase, the equations as printed (Eqs. 3.21-3.25, 5.7, 5.20)
+// and as MFiX ran them before 2005-06: each phase's own eps_sm g0_mm throughout, so a phase
+// collides with its own kind only (two identical halves of a bed dissipate half as much).
+enum class MixtureKineticTheory { Summed, PerPhase };
+
 struct MultiFluidParams {
   GasPhase gas;
   std::vector<SolidsPhase> solids;
@@ -112,6 +124,12 @@ struct MultiFluidParams {
   std::optional<closures::JohnsonJackson::Params> wall;
   bool rotation = false;  // the particle-rotation model (pde form)
   PlasticTheta plasticTheta = PlasticTheta::Solved;  // (pde form)
+  MixtureKineticTheory mixtureKineticTheory = MixtureKineticTheory::Summed;  // (pde form, Lebowitz g0)
+  // eps_g* of each cell: the plastic regime's criticalVoidFraction (fixed), or the packing limit of
+  // the cell's composition from each phase's maxPacking (MixturePacking.hpp), in the plastic
+  // pressure and viscosity (Eqs. 3.26-3.27), the theta pinning threshold and Eq. 3.68's packed
+  // fraction (FlowProperties::packedFraction).
+  closures::PackingLimit packingLimit = closures::PackingLimit::Fixed;
   // The theta of a pinned cell: MFIX's smallTheta, ZERO_EP_S = 1e-8 in cm^2/s^2 [m^2/s^2].
   double pinnedTheta = 1e-12;
   // The gas's terms in the granular energy (gamma_slip, J_vis) and in the transport coefficients
@@ -130,6 +148,12 @@ class MultiFluidModel final : public fluid::FlowModel {
   [[nodiscard]] const MultiFluidParams& params() const { return params_; }
   void evaluate(const fluid::FlowState& state, fluid::FlowProperties& properties) const override;
   [[nodiscard]] std::vector<std::array<std::size_t, 2>> solidsPairs() const override;
+  [[nodiscard]] bool packedFractionByCell() const override { return packing_.byComposition(); }
+  // eps_g* at interior cell c: the fixed one, or the packing limit of the cell's composition.
+  [[nodiscard]] double criticalVoidFraction(const fluid::FlowState& state, std::size_t c) const;
+  // The share of all solids (every phase, by volume) in cells packed beyond their eps_g*, where
+  // the plastic regime holds (Eqs. 3.26-3.27); 0 without solids.
+  [[nodiscard]] double plasticSolidsShare(const fluid::FlowState& state) const;
   // The pde form's granular energy of every solids phase (Eq. 3.34).
   std::vector<fluid::TransportResidual> solveTransport(fluid::FlowState& state, const fluid::FlowState& old,
                                                        const fluid::FlowProperties& properties,
@@ -166,10 +190,11 @@ class MultiFluidModel final : public fluid::FlowModel {
   [[nodiscard]] KineticCell kineticCell(const fluid::FlowState& state, const fluid::FlowProperties& properties,
                                         std::size_t m, std::size_t c) const;
   [[nodiscard]] closures::JohnsonJackson wallFor(std::size_t m) const;
+  // Phase m's stresses at cell c of void fraction epsG and critical void fraction epsGStar.
   void evaluateAlgebraic(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c,
-                         double epsG) const;
-  void evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c,
-                   double epsG) const;
+                         double epsG, double epsGStar) const;
+  void evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c, double epsG,
+                   double epsGStar) const;
 
   // What the solids stress of phase m at cell c is built from: the fractions the closures see
   // (clamped into range, the state itself is not), Eqs. 3.23-3.25's coefficients, the strain
@@ -186,6 +211,7 @@ class MultiFluidModel final : public fluid::FlowModel {
   std::vector<double> dissipationScale_;              // per phase, [0] unused
   std::vector<double> diameters_;                     // d_p of each solids phase, [m - 1] (Lebowitz's g0)
   std::vector<std::optional<double>> wallEffective_;  // per phase, [0] unused
+  closures::MixturePacking packing_;
 };
 
 // The algebraic granular temperature of MFiX's gt_algebraic: the positive root x = sqrt(theta) of

@@ -32,6 +32,7 @@ SolidsPhase solidsPhaseOf(const json& sp) {
   phase.friction = sp.at("friction");
   phase.wallFriction = sp.at("wall_friction");
   phase.tangentialRestitution = sp.at("tangential_restitution");
+  phase.maxPacking = sp.at("max_packing");
   return phase;
 }
 
@@ -85,6 +86,11 @@ void from_json(const json& p, MultiFluidSetup& s) {
   model.plasticTheta =
       p.at("plastic_theta").get<std::string>() == "pinned" ? PlasticTheta::Pinned : PlasticTheta::Solved;
   model.plastic.params.criticalVoidFraction = p.at("critical_void_fraction").get<double>();
+  model.mixtureKineticTheory = p.at("mixture_kinetic_theory").get<std::string>() == "per_phase"
+                                   ? MixtureKineticTheory::PerPhase
+                                   : MixtureKineticTheory::Summed;
+  model.packingLimit = closures::packingLimitFromString(p.at("packing_limit").get<std::string>());
+  s.packedFractionGiven = p.contains("packed_solids_fraction");
   model.plastic.params.internalFrictionAngle = p.at("friction_angle").get<double>();
   s.plasticViscosity.inertial = p.at("plastic").get<std::string>() == "mu_i";
   s.plasticViscosity.rheology = p.value("rheology", std::string());
@@ -156,6 +162,19 @@ std::vector<SetupProblem> MultiFluidSetup::problems() const {
     if (model.wall) problem("/solids_walls", "Johnson-Jackson walls need granular_energy pde");
   }
   if (const auto why = model.plastic.params.problem(); !why.empty()) problem("/friction_angle", why);
+  // The packing limit by composition (MixturePacking.hpp).
+  if (model.packingLimit == closures::PackingLimit::Gera && M > 2)
+    problem("/packing_limit", "gera is Fedors and Landel's binary formula: it takes two solids phases, not " +
+                                  std::to_string(M) + " (yu_standish takes any number)");
+  if (model.packingLimit != closures::PackingLimit::Fixed && M > 1 && packedFractionGiven)
+    problem("/packed_solids_fraction",
+            "is one packed fraction for every cell, but packing_limit " +
+                std::string(closures::toString(model.packingLimit)) +
+                " packs each cell by its composition (Eq. 3.68 then takes 1 - eps_g* of the cell): leave it out");
+  if (model.mixtureKineticTheory == MixtureKineticTheory::PerPhase && model.granularEnergy != GranularEnergyForm::Pde)
+    problem("/mixture_kinetic_theory",
+            "per_phase is a form of the granular-energy equation's kinetic theory: needs "
+            "granular_energy pde");
   if (!plasticViscosity.inertial) {
     if (!plasticViscosity.rheology.empty()) problem("/rheology", "is read by plastic \"mu_i\" only");
   } else {

@@ -56,6 +56,7 @@ struct MultiFluidSetup {
   std::vector<SolidsPairRequest> pairRequests;
   std::optional<TableClosureChoice> table;
   PlasticViscosityChoice plasticViscosity;
+  bool packedFractionGiven = false;  // packed_solids_fraction written (not 1 - critical_void_fraction)
 
   // Every reason the engine cannot start, at the pointer of the `mfm` key at fault; empty when it
   // can. The closure tables and the rheology are checked when they are read (below).

@@ -42,7 +42,8 @@ TEST(MfmStage, GrainSmokeWritesFramesMeanFieldsSeriesAndAFluidizationCurve) {
     const std::string series = readText(bed / "series.csv");
     EXPECT_EQ(series.substr(0, series.find('\n')),
               "time,step,dp_bed,mean_height_grain,solids_volume_grain,dt,solver_steps,iterations,residual,"
-              "mass_gas,mass_in_gas,mass_out_gas,mass_out_gas_y_high,mass_grain,mass_in_grain,mass_out_grain,"
+              "plastic_solids_share,mass_gas,mass_in_gas,mass_out_gas,mass_out_gas_y_high,mass_grain,mass_in_grain,"
+              "mass_out_grain,"
               "mass_out_grain_y_high");
     // A row every output_interval (0.01 s: the solver's adaptive steps land on each), and the
     // throughput counts the solver's steps, not the rows (issue 54).

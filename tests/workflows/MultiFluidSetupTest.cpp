@@ -101,3 +101,35 @@ TEST(MultiFluidSetup, MuOfIPlasticTakesOnePhaseAndARheologyAndSchaefferNone) {
   const auto schaeffer = resolvedBed({{"rheology", "beads"}}).get<mfm::MultiFluidSetup>();
   EXPECT_EQ(pointersOf(schaeffer.problems()), std::vector<std::string>{"/rheology"});
 }
+
+TEST(MultiFluidSetup, TheMFiX2003To05MixtureReadsItsPackingAndKineticTheory) {
+  json changes = {{"packing_limit", "yu_standish"}, {"mixture_kinetic_theory", "per_phase"}};
+  const json config = json::parse(
+      grainbridge::testing::readText(grainbridge::testing::sourceDir() / "configs/goldschmidt-binary-smoke.json"));
+  json solids = config.at("stages").at("bed").at("params").at("solids");
+  for (auto& phase : solids) phase["max_packing"] = 0.583;
+  changes["solids"] = solids;
+  const auto setup = resolvedBed(changes).get<mfm::MultiFluidSetup>();
+  EXPECT_TRUE(setup.problems().empty()) << pointersOf(setup.problems()).front();
+  EXPECT_EQ(setup.model.packingLimit, closures::PackingLimit::YuStandish);
+  EXPECT_EQ(setup.model.mixtureKineticTheory, mfm::MixtureKineticTheory::PerPhase);
+  for (const auto& phase : setup.model.solids) EXPECT_EQ(phase.maxPacking, 0.583);
+  EXPECT_TRUE(modelBuilds(setup.model));
+  // Unset, each phase packs at MFiX's 0.6 and the limit is the fixed one.
+  const auto plain = resolvedBed().get<mfm::MultiFluidSetup>();
+  EXPECT_EQ(plain.model.packingLimit, closures::PackingLimit::Fixed);
+  EXPECT_EQ(plain.model.solids.front().maxPacking, 0.6);
+  EXPECT_EQ(plain.model.mixtureKineticTheory, mfm::MixtureKineticTheory::Summed);
+}
+
+TEST(MultiFluidSetup, APackingLimitByCompositionRefusesOneFixedPackedFractionAndPerPhaseNeedsThePde) {
+  const auto packed =
+      resolvedBed({{"packing_limit", "gera"}, {"packed_solids_fraction", 0.59}}).get<mfm::MultiFluidSetup>();
+  EXPECT_EQ(pointersOf(packed.problems()), std::vector<std::string>{"/packed_solids_fraction"});
+  const auto algebraic = resolvedBed({{"granular_energy", "algebraic"},
+                                      {"kinetic_model", "syamlal_algebraic"},
+                                      {"solids_walls", "no_slip"},
+                                      {"mixture_kinetic_theory", "per_phase"}})
+                             .get<mfm::MultiFluidSetup>();
+  EXPECT_EQ(pointersOf(algebraic.problems()), std::vector<std::string>{"/mixture_kinetic_theory"});
+}

@@ -62,6 +62,11 @@ MfmSeriesColumns::MfmSeriesColumns(const mfm::MfmEngine& engine, const MfmSetup&
   // of two rows give the iterations per step over an interval), the last step's worst residual.
   for (const char* n : {"dt", "solver_steps", "iterations", "residual"}) names_.push_back(n);
   if (setup.segregation) names_.push_back("segregation_percentage");
+  // Where the bed packs and how agitated each phase is (issue 55: what decides segregation).
+  names_.push_back("plastic_solids_share");
+  if (setup.engine.model.granularEnergy == mfm::GranularEnergyForm::Pde) {
+    for (const auto& s : setup.engine.model.solids) names_.push_back("theta_" + s.name);
+  }
   const auto sides = outletSidesOf(setup.engine.patches);
   for (std::size_t k = 0; k < sides.size(); ++k) {
     if (!sides[k].empty()) outlets_.push_back(k);
@@ -88,6 +93,10 @@ void MfmSeriesColumns::sample(driver::SeriesRow& row) {
   if (const auto& seg = setup_.segregation) {
     values.push_back(fluid::segregationPercentage(values[setup_.taps.size() + seg->small],
                                                   values[setup_.taps.size() + seg->large], seg->smallShare));
+  }
+  values.push_back(engine_.engine().model().plasticSolidsShare(state));
+  if (setup_.engine.model.granularEnergy == mfm::GranularEnergyForm::Pde) {
+    for (std::size_t m = 1; m <= M; ++m) values.push_back(fluid::meanGranularTemperature(state, m));
   }
   const auto held = engine_.engine().heldMass();
   for (std::size_t m = 0; m < held.size(); ++m) {

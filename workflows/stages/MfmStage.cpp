@@ -63,7 +63,13 @@ std::shared_ptr<const ParamSchema> solidsSchema() {
                .defaultValue(0.33)
                .min(-1.0)
                .max(1.0)
-               .doc("rotation model: beta0 of Eq. 5.17, both contacts (Table 5.1)"));
+               .doc("rotation model: beta0 of Eq. 5.17, both contacts (Table 5.1)"))
+      .add(ParamSpec::number("max_packing")
+               .defaultValue(0.6)
+               .min(0.0, false)
+               .max(1.0, false)
+               .doc("packing_limit yu_standish or gera: the packing fraction of this kind alone (MFiX's ep_s_max, "
+                    "0.6 by default)"));
   return s;
 }
 
@@ -171,6 +177,18 @@ MfmStage::MfmStage() {
                .options({"solved", "pinned"})
                .doc("theta where eps_g < critical_void_fraction: solved there too (kinetic stress adds to the "
                     "plastic one), or pinned near zero as MFiX does (the plastic stress alone)"))
+      .add(ParamSpec::string("mixture_kinetic_theory")
+               .defaultValue("summed")
+               .options({"summed", "per_phase"})
+               .doc("several solids phases: each phase's contacts with every phase, sum_l eps_l g0_ml (MFiX since "
+                    "2005), or with its own kind, eps_sm g0_mm, as Eqs. 3.21-3.25, 5.7 and 5.20 are printed "
+                    "(granular_energy pde)"))
+      .add(ParamSpec::string("packing_limit")
+               .defaultValue("fixed")
+               .options({"fixed", "yu_standish", "gera"})
+               .doc("eps_g* of several solids phases: critical_void_fraction everywhere, or each cell's from its "
+                    "composition and the phases' max_packing (Yu-Standish 1987; Gera's binary Fedors-Landel), as "
+                    "MFiX 2003-05 did; one phase keeps critical_void_fraction"))
       .add(ParamSpec::string("solids_walls")
                .defaultValue("no_slip")
                .options({"no_slip", "johnson_jackson"})
@@ -241,7 +259,8 @@ MfmStage::MfmStage() {
                .positive()
                .doc("largest step (dt_min = dt_max: a fixed step)"))
       .add(ParamSpec::number("courant").defaultValue(0.5).positive().doc("largest |v| dt / dx"))
-      .add(ParamSpec::number("tolerance").defaultValue(1e-4).positive().doc("normalised residuals of a converged step"));
+      .add(
+          ParamSpec::number("tolerance").defaultValue(1e-4).positive().doc("normalised residuals of a converged step"));
   addLinearSolveParams(schema_, "momentum", "direct", 1e-6,
                        "every phase's momentum systems: the band LU, or Jacobi-preconditioned BiCGSTAB or Gauss-Seidel "
                        "sweeps to momentum_solver_tolerance (the LU where they fail); iterative on 3D grids, whose "
@@ -534,6 +553,10 @@ std::optional<PlannedOutput> MfmStage::plannedOutput(const json& p) const {
     keys.push_back("segregation_percentage");
     keys.push_back("segregation_small_share");
     out.seriesColumns.push_back("segregation_percentage");
+  }
+  if (!solids.empty()) out.seriesColumns.push_back("plastic_solids_share");
+  if (p.value("granular_energy", "pde") == "pde") {
+    for (const auto& phase : solids) out.seriesColumns.push_back("theta_" + phase.at("name").get<std::string>());
   }
   keys.push_back("closure");
   keys.push_back("superficial_gas_velocity");

@@ -38,7 +38,9 @@ class MfmStage final : public StageType {
   //     by the size of a continuity residual.
   // 12: the summary records superficial_gas_velocity, which fluidization requires (a run cached
   //     without it could not feed one).
-  [[nodiscard]] int implVersion() const override { return 12; }
+  // 13: series.csv carries plastic_solids_share and each phase's theta_<phase>; the packing
+  //     limit by composition and the per-phase mixture kinetic theory (defaults unchanged).
+  [[nodiscard]] int implVersion() const override { return 13; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

@@ -3,6 +3,7 @@
 grainbridge_add_test(test_closures
   SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/RadialDistributionTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/MixturePackingTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/Lun1984Test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/SyamlalAlgebraicTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/KineticModelTest.cpp
