@@ -12,7 +12,9 @@
 //     (e_eff enters only Eqs. 5.20-5.21);
 //   - C_f: the coefficient of friction between the two phases' particles (Syamlal 1987 derives
 //     the pi^2/8 term from sliding collisions); default 0, the smooth-sphere value, so that a
-//     config states its friction: the Goldschmidt binary bed's is mu of Table 5.1 (0.15 / 0.10).
+//     config states its friction. The reference gives none and MFiX refuses two solids phases
+//     without it: configs/goldschmidt-binary.json takes 0, its MFiX 2003-05 arm
+//     (goldschmidt-binary-mfix2005.json) 0.1, about Table 5.1's particle friction (0.15 / 0.10).
 // MFIX's extra C(10) P* term for two close-packed phases is not included.
 #include <string_view>
 
