@@ -28,14 +28,17 @@ using nlohmann::json;
 namespace {
 
 // A bed that is not a multi-fluid run: one phase "sand" whose frames, series and summary say the
-// bed stands `height` high. With `products` false it declares and writes only its summary.
+// bed stands `height` high, `seed` millimetres more, with a segregation percentage of 0.5 + seed /
+// 100. With `products` false it declares and writes only its summary.
 class ToyBed final : public stages::StageType {
  public:
   ToyBed(std::string name, bool products) : name_(std::move(name)), products_(products) {
-    schema_.add(params::ParamSpec::quantity("height", core::units::Dimension::lengthDim())
-                    .defaultValue(0.02)
-                    .positive()
-                    .doc("mean particle height"));
+    schema_
+        .add(params::ParamSpec::quantity("height", core::units::Dimension::lengthDim())
+                 .defaultValue(0.02)
+                 .positive()
+                 .doc("mean particle height"))
+        .add(params::ParamSpec::integer("seed").defaultValue(0).min(0).doc("a realisation: shifts the outputs"));
   }
   [[nodiscard]] std::string name() const override { return name_; }
   [[nodiscard]] int implVersion() const override { return 1; }
@@ -44,15 +47,18 @@ class ToyBed final : public stages::StageType {
   [[nodiscard]] stages::InputMode inputMode() const override { return stages::InputMode::None; }
   [[nodiscard]] std::optional<stages::PlannedOutput> plannedOutput(const json& /*resolved*/) const override {
     stages::PlannedOutput out;
-    out.summaryKeys = {"mean_height", "pressure_drop", "pressure_drop_tap", "dp_bed", "closure"};
+    out.summaryKeys = {"mean_height", "pressure_drop", "pressure_drop_tap",
+                       "dp_bed",      "closure",       "segregation_percentage"};
     if (products_) {
       out.fieldFrames = out.meanFieldFrames = true;
-      out.seriesColumns = {"dp_bed", "mean_height_sand"};
+      out.seriesColumns = {"dp_bed", "mean_height_sand", "segregation_percentage"};
     }
     return out;
   }
   void run(stages::StageContext& ctx) const override {
-    const double h = ctx.params().at("height");
+    const int seed = ctx.params().at("seed");
+    const double h = ctx.params().at("height").get<double>() + 1e-3 * seed;
+    const double sp = 0.5 + seed / 100.0;
     if (products_) {
       core::data::FieldFrame frame;
       frame.grid.cells = {2, 4, 1};
@@ -70,8 +76,10 @@ class ToyBed final : public stages::StageType {
       ctx.addArtifact(frames.write(frame).lexically_relative(ctx.outputDir()).string(), "field_frame");
       core::io::FieldFrameWriter mean(ctx.outputDir() / "mean", stamp);
       ctx.addArtifact(mean.write(frame).lexically_relative(ctx.outputDir()).string(), "mean_field_frame");
-      core::writeFileAtomically(ctx.outputDir() / "series.csv", "time,dp_bed,mean_height_sand\n0,100,0.01\n0.5,110," +
-                                                                    std::to_string(h) + "\n");
+      core::writeFileAtomically(ctx.outputDir() / "series.csv",
+                                "time,dp_bed,mean_height_sand,segregation_percentage\n"
+                                "0,100,0.01,0\n0.5,110," +
+                                    std::to_string(h) + "," + std::to_string(sp) + "\n");
       ctx.addArtifact("series.csv", "csv");
     }
     ctx.setSummary({{"mean_height", h},
@@ -79,7 +87,8 @@ class ToyBed final : public stages::StageType {
                     {"pressure_drop", 110.0},
                     {"pressure_drop_tap", "bed"},
                     {"dp_bed", 110.0},
-                    {"closure", "toy"}});
+                    {"closure", "toy"},
+                    {"segregation_percentage", sp}});
   }
 
  private:
@@ -105,6 +114,13 @@ json workflow(const std::string& bedType, const std::string& match) {
               {"from", "bed"},
               {"params",
                {{"references", {{{"label", "Table 5.3"}, {"mean_height", "2.1 cm"}, {"match", {match}}}}}}}}}}}};
+}
+
+// The instance folder of a stage that ran once.
+fs::path instanceOf(const fs::path& stageDir) {
+  fs::path dir;
+  for (const auto& e : fs::directory_iterator(stageDir)) dir = e.path();
+  return dir;
 }
 
 // Every problem of a config, or "" when it loads.
@@ -158,4 +174,49 @@ TEST(BedCompareContract, RefusesAtCheckAReferenceWhoseMatchSelectsNoRun) {
   // The values the sweep wrote are named, so the typo shows.
   EXPECT_NE(problems.find("\"3 cm\""), std::string::npos) << problems;
   EXPECT_EQ(loadProblems(toyRegistry(), workflow("toy_bed", "height=0.02")), "");
+}
+
+// Issue 55: runs that differ only in their seed are realisations of one arm. Two heights, two
+// seeds each: arms.csv has a row per arm with both seeds, a finite standard error, and the
+// findings give the difference the height makes in standard errors.
+TEST(BedCompareContract, GroupsRunsDifferingOnlyInTheSeedIntoArmsWithTheirStandardErrors) {
+  const auto registry = toyRegistry();
+  TempDir work;
+  const json doc = {{"name", "contract"},
+                    {"stages",
+                     {{"bed", {{"type", "toy_bed"}, {"sweep", {{"height", {0.02, "3 cm"}}, {"seed", {1, 2}}}}}},
+                      {"beds", {{"type", "bed_compare"}, {"from", "bed"}}}}}};
+  const auto cfg = config::parseWorkflow(doc, "contract.json", registry);
+  exec::RunOptions options;
+  options.workDir = work.path();
+  exec::SerialDispatcher dispatcher(registry, exec::resultsRoot(work.path()), exec::stopFlag());
+  ASSERT_EQ(exec::runWorkflow(cfg, plan::makePlan(cfg), options, dispatcher, 1).exitCode(), 0);
+
+  const fs::path beds = instanceOf(work.path() / "results/contract/beds");
+  std::istringstream csv(readText(beds / "arms.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("arm,realisations,realisation_values,mean_height_mean,mean_height_sd,mean_height_se,", 0), 0u);
+  // Heights 0.021 and 0.022: mean 0.0215, standard error 0.0005.
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("bed (height 0.02),2,1;2,0.0215,", 0), 0u) << line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("bed (height 3 cm),2,1;2,0.0315,", 0), 0u) << line;
+  EXPECT_NE(line.find(",0.0005"), std::string::npos) << line;
+  EXPECT_FALSE(std::getline(csv, line));
+
+  const json manifest = json::parse(readText(beds / "manifest.json"));
+  EXPECT_EQ(manifest.at("summary").at("arms"), 2);
+  EXPECT_EQ(manifest.at("summary").at("beds"), 4);
+  const std::string headline = manifest.at("findings").at("headline");
+  EXPECT_NE(headline.find("bed (height 3 cm): s_p 0.5150 ± 0.0050, mean height 0.03150 ± 0.00050 m (mean and "
+                          "standard error over 2 realisations: seed 1, 2)"),
+            std::string::npos)
+      << headline;
+  // 0.01 m ± sqrt(2) 0.0005: 14 standard errors.
+  EXPECT_NE(headline.find("bed: height 0.02 → 3 cm raises s_p by 0.0000 ± 0.0071 (0 standard errors), raises mean "
+                          "height by 0.01000 ± 0.00071 m (14 standard errors); 2 realisations each."),
+            std::string::npos)
+      << headline;
+  EXPECT_TRUE(fs::exists(beds / "segregation_realisations.svg"));
 }

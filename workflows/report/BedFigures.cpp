@@ -1,6 +1,8 @@
 #include "workflows/report/BedFigures.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "core/Error.hpp"
 #include "workflows/contract/NumericCsv.hpp"
@@ -8,6 +10,52 @@
 namespace grainbridge::workflows::report {
 
 using contract::readNumericCsv;
+
+namespace {
+
+// The sample times all of an arm's runs share, and each run's sample index at each of them.
+struct CommonTimes {
+  std::vector<double> times;
+  std::vector<std::vector<std::size_t>> index;  // [run of the arm][common time]
+};
+
+CommonTimes commonTimes(const std::vector<BedRun>& runs, const Arm& arm) {
+  const auto timeOf = [&](std::size_t r) -> const std::vector<double>& {
+    const auto time = runs.at(r).series.find("time");
+    if (time == runs.at(r).series.end()) throw Error("bed figures: the series of " + runs.at(r).label + " has no time");
+    return time->second;
+  };
+  CommonTimes common;
+  common.times = timeOf(arm.runs.front());
+  common.index.emplace_back(common.times.size());
+  std::iota(common.index.front().begin(), common.index.front().end(), std::size_t{0});
+  for (std::size_t i = 1; i < arm.runs.size(); ++i) {
+    const std::vector<double>& t = timeOf(arm.runs[i]);
+    CommonTimes kept;
+    kept.index.resize(i + 1);
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < common.times.size(); ++k) {
+      // Equal times as written (round-trip text), up to a sum of steps' rounding.
+      const double tolerance = 1e-9 * std::max(1.0, std::abs(common.times[k]));
+      while (j < t.size() && t[j] < common.times[k] - tolerance) ++j;
+      if (j == t.size() || std::abs(t[j] - common.times[k]) > tolerance) continue;
+      kept.times.push_back(common.times[k]);
+      for (std::size_t p = 0; p < i; ++p) kept.index[p].push_back(common.index[p][k]);
+      kept.index[i].push_back(j);
+    }
+    common = std::move(kept);
+  }
+  if (common.times.size() < 2) {
+    std::string names;
+    for (const std::size_t r : arm.runs) names += (names.empty() ? "" : ", ") + runs.at(r).label;
+    throw Error("bed figures: the realisations of " + arm.label + " (" + names + ") share " +
+                std::to_string(common.times.size()) +
+                " sample time(s) in their series' time column: give them one output_interval");
+  }
+  return common;
+}
+
+}  // namespace
 
 Figure averagedHeightFigure(const std::vector<BedRun>& runs) {
   Figure figure{"Time-averaged mean particle height", {"run (row of the table)", "–"},
@@ -146,6 +194,34 @@ SegregationFigures segregationFigures(const std::vector<BedRun>& runs) {
     }
   }
   return out;
+}
+
+Figure realisationsFigure(const std::vector<BedRun>& runs, const std::vector<Arm>& arms, const std::string& column,
+                          const std::string& title, const Axis& y) {
+  Figure figure{title, {"time", "s"}, y, {}};
+  int variant = 0;
+  for (const Arm& arm : arms) {
+    const bool recorded = std::all_of(arm.runs.begin(), arm.runs.end(),
+                                      [&](std::size_t r) { return runs.at(r).series.contains(column); });
+    if (arm.runs.size() < 2 || !recorded) continue;
+    const CommonTimes common = commonTimes(runs, arm);
+    const std::string over = ", mean over " + std::to_string(arm.runs.size()) + " realisations";
+    Series mean{arm.label + over, arm.label, Series::Style::Line, variant, common.times, {}, {}};
+    Series band{arm.label + ", ± 1 standard error", arm.label, Series::Style::Band, variant++, common.times, {}, {}};
+    for (std::size_t k = 0; k < common.times.size(); ++k) {
+      std::vector<double> values;
+      for (std::size_t i = 0; i < arm.runs.size(); ++i)
+        values.push_back(runs.at(arm.runs[i]).series.at(column).at(common.index[i][k]));
+      const RealisationStatistics s = overRealisations(values);
+      mean.y.push_back(s.mean);
+      band.y.push_back(s.mean);
+      band.yError.push_back(s.se);
+    }
+    // The band first, so the line is drawn over it.
+    figure.series.push_back(std::move(band));
+    figure.series.push_back(std::move(mean));
+  }
+  return figure;
 }
 
 }  // namespace grainbridge::workflows::report

@@ -7,6 +7,7 @@
 
 #include "workflows/report/BedRun.hpp"
 #include "workflows/report/Plot.hpp"
+#include "workflows/report/Realisations.hpp"
 
 namespace grainbridge::workflows::report {
 
@@ -32,5 +33,14 @@ struct SegregationFigures {
   Figure segregation, profiles;
 };
 [[nodiscard]] SegregationFigures segregationFigures(const std::vector<BedRun>& runs);
+
+// Statistics over realisations against time (issue 55): per arm of at least two realisations
+// whose runs all record the series column `column`, the mean over its runs (a line) and ± one
+// standard error across them (a band) at each time, a colour (the arm's label as model key) and a
+// dash per arm. Taken at the times all of an arm's runs sampled (all of them, at one
+// output_interval); throws naming the runs when those are fewer than two. No series when no arm
+// qualifies. `arms` are grouped from `runs` (report/groupArms).
+[[nodiscard]] Figure realisationsFigure(const std::vector<BedRun>& runs, const std::vector<Arm>& arms,
+                                        const std::string& column, const std::string& title, const Axis& y);
 
 }  // namespace grainbridge::workflows::report

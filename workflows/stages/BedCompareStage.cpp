@@ -8,10 +8,13 @@
 #include "core/io/FieldFrameReader.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/FrameMaps.hpp"
+#include "workflows/report/BedArms.hpp"
 #include "workflows/report/BedFigures.hpp"
 #include "workflows/report/BedFindings.hpp"
 #include "workflows/report/FindingsPage.hpp"
 #include "workflows/report/Plot.hpp"
+#include "workflows/report/Realisations.hpp"
+#include "workflows/report/SweepLabel.hpp"
 #include "workflows/stages/ClosureSamples.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -19,6 +22,7 @@ namespace grainbridge::workflows::stages {
 using nlohmann::json;
 using params::ParamSchema;
 using params::ParamSpec;
+using report::writtenText;
 namespace units = core::units;
 
 namespace {
@@ -46,9 +50,6 @@ std::optional<std::pair<std::string, std::string>> splitMatch(const std::string&
   if (eq == std::string::npos || eq == 0 || eq + 1 == m.size()) return std::nullopt;
   return std::make_pair(m.substr(0, eq), m.substr(eq + 1));
 }
-
-// A JSON value as a sweep entry writes it: strings verbatim, the rest as JSON text.
-std::string writtenText(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
 // Whether a run (its stage name and its sweep point as written) meets every "k=v" of a match.
 bool matchesRun(const std::vector<std::pair<std::string, std::string>>& match, const std::string& stage,
@@ -80,11 +81,6 @@ struct Bed {
   [[nodiscard]] bool matches(const Reference& r) const { return matchesRun(r.match, instance->stage(), written); }
 };
 
-std::string lastComponent(const std::string& pointer) {
-  const auto slash = pointer.rfind('/');
-  return slash == std::string::npos ? pointer : pointer.substr(slash + 1);
-}
-
 // The time-averaged solid fraction (all phases) over the horizontal and vertical axes of the
 // run's mean fields, averaged over the third axis.
 report::FieldMap solidFractionMap(const Bed& bed) {
@@ -112,6 +108,11 @@ BedCompareStage::BedCompareStage() {
                .doc("published or measured mean particle heights, each for the runs it matches"))
       .add(ParamSpec::string("tap").defaultValue("").doc(
           "the pressure tap whose drop is compared and plotted (\"\": each run's first, its pressure_drop)"))
+      .add(ParamSpec::string("realisations")
+               .defaultValue("seed")
+               .doc("the swept parameter whose values are independent realisations of one setting (the seed of the "
+                    "initial perturbation): runs of a stage that differ only in it form an arm, given as mean, "
+                    "standard deviation and standard error over its runs (arms.csv)"))
       .add(ParamSpec::string("title")
                .defaultValue("Multi-fluid beds side by side")
                .doesNotAffectResults()
@@ -154,6 +155,17 @@ void BedCompareStage::checkAgainstUpstream(const json& p, const std::string& ptr
     d.add(ptr + (tap.empty() || up.records("dp_" + tap) ? "" : "/tap"),
           from + " does not produce " + what + ": bed_compare takes bed runs that do (mfm with solids, tfdem)");
     return;
+  }
+  // A realisation parameter named but swept by no upstream stage is a typo: every run would be an
+  // arm of one. The default may select nothing (a comparison of single runs).
+  const std::string realisations = p.at("realisations");
+  const bool swept = std::any_of(upstream.begin(), upstream.end(), [&](const UpstreamPlan& up) {
+    return (up.sweepWritten.empty() ? up.sweepPoint : up.sweepWritten).contains(realisations);
+  });
+  if (!swept && realisations != "seed") {
+    d.add(ptr + "/realisations",
+          "no upstream stage is swept over \"" + realisations +
+              "\": name the swept parameter whose values are realisations, as the sweep writes it");
   }
   // A reference whose match selects no run (a parameter no run is swept over, a value not written
   // as in the sweep) would silently drop out of the comparison: refuse it now, not after the beds ran.
@@ -239,14 +251,9 @@ void BedCompareStage::run(StageContext& ctx) const {
       throw Error("bed_compare: upstream " + up.stage() + " (" + up.shortKey() + ") has no pressure tap");
     }
     bed.dp = "dp_" + (tap.empty() ? firstTap : tap);
-    std::string sweep;
     bed.panelTitle = up.stage();
-    for (const auto& [k, v] : bed.written.items()) {
-      const std::string part = lastComponent(k) + " " + writtenText(v);
-      sweep += (sweep.empty() ? "" : ", ") + part;
-      bed.panelTitle += "\n" + part;
-    }
-    bed.label = up.stage() + (sweep.empty() ? "" : " (" + sweep + ")");
+    for (const auto& part : report::sweepParts(bed.written)) bed.panelTitle += "\n" + part;
+    bed.label = report::sweepLabel(up.stage(), bed.written);
     beds.push_back(std::move(bed));
   }
   std::sort(beds.begin(), beds.end(), [](const Bed& a, const Bed& b) { return a.label < b.label; });
@@ -332,6 +339,17 @@ void BedCompareStage::run(StageContext& ctx) const {
   core::writeFileAtomically(ctx.outputDir() / "beds.csv", report::bedsCsv(runs, referenceLabels));
   ctx.addArtifact("beds.csv", "csv");
 
+  // Realisations (issue 55): the runs that differ only in `realisations` are one setting, an arm,
+  // and the spread over them is what tells two settings apart; the findings lead with it.
+  const std::string realisation = p.at("realisations");
+  std::vector<report::SweptRun> swept;
+  for (const auto& bed : beds) swept.push_back({bed.instance->stage(), bed.written});
+  const std::vector<report::Arm> arms = report::groupArms(swept, realisation);
+  const auto bedArms = report::bedArms(runs, arms);
+  core::writeFileAtomically(ctx.outputDir() / "arms.csv", report::armsCsv(bedArms));
+  ctx.addArtifact("arms.csv", "csv");
+  findings.headline = report::armsHeadline(bedArms, realisation) + findings.headline;
+
   // Figures: the maps side by side, then the height and the pressure drop against time.
   auto addFigure = [&](const report::DrawnFigure& drawn, const std::string& caption) {
     ctx.addArtifact(drawn.svg, "svg");
@@ -366,6 +384,14 @@ void BedCompareStage::run(StageContext& ctx) const {
     addFigure(report::drawFigure(binary.segregation, ctx.outputDir(), "segregation_percentage"),
               "Segregation percentage against time: the samples (lines) and their 1 s means (points)");
   }
+  const auto realised =
+      report::realisationsFigure(runs, arms, "segregation_percentage", "Segregation percentage over realisations",
+                                 {"segregation percentage s_p", "–"});
+  if (!realised.series.empty()) {
+    addFigure(report::drawFigure(realised, ctx.outputDir(), "segregation_realisations"),
+              "Segregation percentage against time: per arm the mean over its realisations (line) ± one standard "
+              "error across them (band)");
+  }
   if (!binary.profiles.series.empty()) {
     addFigure(report::drawFigure(binary.profiles, ctx.outputDir(), "profiles"),
               "Each phase's time-averaged solid fraction over the width against height");
@@ -374,7 +400,7 @@ void BedCompareStage::run(StageContext& ctx) const {
 
   report::writeFindingsPage(findings, "beds.csv", ctx.outputDir() / "bed_compare.html");
   ctx.addArtifact("bed_compare.html", "report_html");
-  ctx.setSummary(json{{"beds", beds.size()}});
+  ctx.setSummary(json{{"beds", beds.size()}, {"arms", arms.size()}});
 }
 
 }  // namespace grainbridge::workflows::stages

@@ -7,7 +7,9 @@
 // share of the bed a closure table covered (by cell-steps and by solids volume). Figures: the
 // time-averaged solid-fraction maps side by side on one colour scale, the time-averaged heights
 // beside the reference values, and the mean particle height and the pressure drop against
-// time. Findings lead the report; beds.csv has every number.
+// time. Runs that differ only in a seed (`realisations`) form an arm: its mean, standard deviation
+// and standard error over them, and the difference between two arms in standard errors (arms.csv).
+// Findings lead the report; beds.csv has every number.
 #include "workflows/stages/StageType.hpp"
 
 namespace grainbridge::workflows::stages {
@@ -22,8 +24,10 @@ class BedCompareStage final : public StageType {
   // 5: closure samples (issue 31) join their nominal run: beds.csv gains closure_samples and each
   //    output's spread from the DEM closures with each table quantity's share; the findings lead
   //    with it and the heights figure draws it beside the block-averaging error.
-  [[nodiscard]] int implVersion() const override { return 6; }
-  [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}}; }
+  // 7: statistics over realisations (issue 55): arms.csv, the arms' means and standard errors
+  //    and their differences in the findings, the figure segregation_realisations; summary arms.
+  [[nodiscard]] int implVersion() const override { return 7; }
+  [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}, {"arms", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "bed runs (mfm, tfdem) side by side: heights and pressure drops against references, solid-fraction maps";
   }
