@@ -48,7 +48,25 @@ def runs_in(folder):
         series = read_series(series_csv)
         if "segregation_percentage" not in series:
             continue
-        yield m, series
+        yield run, m, series
+
+
+def profile_ratios(path, phases):  # phases: [small, large]
+    """(large/small in the lowest 2 cm, small/large in the top 2 cm of the bed), by solids volume:
+    the bed's top is the highest height where the two phases together exceed 0.05."""
+    if not os.path.exists(path) or None in phases:
+        return None
+    with open(path) as f:
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    small, large = (f"ep_s_{ph}" for ph in phases)
+    bed = [r for r in rows if r[small] + r[large] > 0.05]
+    if not bed:
+        return None
+    top = max(r["height"] for r in bed)
+    low = [r for r in rows if r["height"] <= 0.02]
+    high = [r for r in bed if r["height"] >= top - 0.02]
+    ratio = lambda rs, a, b: sum(r[a] for r in rs) / max(sum(r[b] for r in rs), 1e-300)
+    return ratio(low, large, small), ratio(high, small, large)
 
 
 def mean_se(values):
@@ -70,7 +88,7 @@ def main(argv):
         sys.exit(__doc__)
     arms = {}
     for folder in folders:
-        for m, series in runs_in(folder):
+        for run, m, series in runs_in(folder):
             p = m["params"]
             start = float(p.get("average_from", 10.0))
             end = float(p.get("duration", 20.0))
@@ -87,6 +105,12 @@ def main(argv):
                 row[f"h_{ph} (m)"] = window_mean(series, f"mean_height_{ph}", start, end)
                 if f"theta_{ph}" in series:
                     row[f"theta_{ph} (m2/s2)"] = window_mean(series, f"theta_{ph}", start, end)
+            # Statement (c) of the reference (line 1257): more large than small solids in the lowest
+            # 2 cm, more small at the bed top, from the window's profiles (profiles.csv).
+            roles = p.get("segregation", {})
+            lows = profile_ratios(os.path.join(run, "profiles.csv"), [roles.get("small"), roles.get("large")])
+            if lows:
+                row["large/small, lowest 2 cm"], row["small/large, top 2 cm"] = lows
             rate = blocks(series, "segregation_percentage", min(10.0, series["time"][-1]))
             row["retries"] = m["summary"].get("retries", math.nan)
             row["reached (s)"] = series["time"][-1]
