@@ -20,9 +20,9 @@ while (($#)); do
   esac
 done
 echo "== mono bed (bench/mfm-goldschmidt.sh --bed mono --duration $duration)"
-mono=$("$here/mfm-goldschmidt.sh" --bed mono --duration "$duration" "${args[@]}" | tee /dev/stderr | tail -1)
+mono=$("$here/mfm-goldschmidt.sh" --bed mono --duration "$duration" "${args[@]}" | tee -a /dev/stderr | tail -1)
 echo "== binary bed (bench/mfm-goldschmidt.sh --bed binary --duration $duration)"
-binary=$("$here/mfm-goldschmidt.sh" --bed binary --duration "$duration" "${args[@]}" | tee /dev/stderr | tail -1)
+binary=$("$here/mfm-goldschmidt.sh" --bed binary --duration "$duration" "${args[@]}" | tee -a /dev/stderr | tail -1)
 mono=${mono##*= }
 binary=${binary##*= }
 echo "mono: wall_seconds_per_simulated_second = $mono"
