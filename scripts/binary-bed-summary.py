@@ -63,8 +63,8 @@ def profile_ratios(path, phases):  # phases: [small, large]
     if not bed:
         return None
     top = max(r["height"] for r in bed)
-    low = [r for r in rows if r["height"] <= 0.02]
-    high = [r for r in bed if r["height"] >= top - 0.02]
+    low = [r for r in rows if r["height"] < 0.02]
+    high = [r for r in bed if r["height"] > top - 0.02 + 1e-9]  # the cells whose centres lie in the top 2 cm
     ratio = lambda rs, a, b: sum(r[a] for r in rs) / max(sum(r[b] for r in rs), 1e-300)
     return ratio(low, large, small), ratio(high, small, large)
 

@@ -12,18 +12,28 @@ namespace grainbridge::closures {
 
 namespace {
 
-void checkMixture(std::string_view what, std::span<const double> fractions, std::span<const double> diameters,
-                  std::span<const double> packings) {
-  const std::string where = std::string(what) + " packing: ";
-  if (diameters.size() != fractions.size() || packings.size() != fractions.size())
-    throw Error(where + std::to_string(fractions.size()) + " solids fractions, " + std::to_string(diameters.size()) +
-                " diameters and " + std::to_string(packings.size()) + " maximum packings");
-  double total = 0.0;
-  for (std::size_t k = 0; k < fractions.size(); ++k) {
-    if (!(fractions[k] >= 0.0)) throw Error(where + "solids fraction " + std::to_string(k) + " is negative or NaN");
+// The phases' diameters (> 0) and maximum packings (in (0, 1)), one of each per phase.
+void checkPhases(const std::string& where, std::span<const double> diameters, std::span<const double> packings) {
+  if (packings.size() != diameters.size())
+    throw Error(where + std::to_string(diameters.size()) + " diameters and " + std::to_string(packings.size()) +
+                " maximum packings");
+  for (std::size_t k = 0; k < diameters.size(); ++k) {
     if (!(diameters[k] > 0.0)) throw Error(where + "diameter " + std::to_string(k) + " is not positive");
     if (!(packings[k] > 0.0 && packings[k] < 1.0))
       throw Error(where + "maximum packing " + std::to_string(k) + " is not in (0, 1)");
+  }
+}
+
+void checkMixture(std::string_view what, std::span<const double> fractions, std::span<const double> diameters,
+                  std::span<const double> packings) {
+  const std::string where = std::string(what) + " packing: ";
+  if (diameters.size() != fractions.size())
+    throw Error(where + std::to_string(fractions.size()) + " solids fractions and " + std::to_string(diameters.size()) +
+                " diameters");
+  checkPhases(where, diameters, packings);
+  double total = 0.0;
+  for (std::size_t k = 0; k < fractions.size(); ++k) {
+    if (!(fractions[k] >= 0.0)) throw Error(where + "solids fraction " + std::to_string(k) + " is negative or NaN");
     total += fractions[k];
   }
   if (!(total > 0.0)) throw Error(where + "no solids: a composition needs a positive solids fraction");
@@ -61,10 +71,12 @@ PackingLimit packingLimitFromString(std::string_view name) {
 
 namespace {
 
-// Eqs. 22-25 with the phases' order from coarsest to finest given.
+// Eqs. 22-25 with the phases' order from coarsest to finest given. A fraction a hair below zero
+// (round-off in a cell a phase leaves) is no share of the mix.
 double yuStandishOrdered(std::span<const double> solidFractions, std::span<const double> diameters,
                          std::span<const double> maxPackings, std::span<const std::size_t> order) {
-  const double total = std::accumulate(solidFractions.begin(), solidFractions.end(), 0.0);
+  double total = 0.0;
+  for (double eps : solidFractions) total += std::max(eps, 0.0);
   double packing = 1.0;
   for (std::size_t i = 0; i < order.size(); ++i) {
     const std::size_t pi = order[i];
@@ -78,7 +90,7 @@ double yuStandishOrdered(std::span<const double> solidFractions, std::span<const
       const double Pij = Pi + Pi * (1.0 - Pi) * (1.0 - 2.35 * r + 1.35 * r * r);                         // (23)
       const double shift = (1.0 - r * r) / (2.0 - Pi);
       const double Xij = j < i ? shift : 1.0 - shift;  // (24): j coarser than i, or finer
-      sum += (1.0 - Pi / Pij) * (solidFractions[pj] / total) / Xij;
+      sum += (1.0 - Pi / Pij) * (std::max(solidFractions[pj], 0.0) / total) / Xij;
     }
     packing = std::min(packing, Pi / (1.0 - sum));  // (22)
   }
@@ -116,15 +128,10 @@ MixturePacking::MixturePacking(PackingLimit limit, double fixedVoidFraction, std
       diameters_(std::move(diameters)),
       maxPackings_(std::move(maxPackings)) {
   if (limit_ == PackingLimit::Fixed) return;
-  if (maxPackings_.size() != diameters_.size())
-    throw Error("packing limit " + std::string(toString(limit_)) + ": " + std::to_string(maxPackings_.size()) +
-                " maximum packings for " + std::to_string(diameters_.size()) + " solids phases");
+  checkPhases("packing limit " + std::string(toString(limit_)) + ": ", diameters_, maxPackings_);
   if (limit_ == PackingLimit::Gera && diameters_.size() > 2)
     throw Error("packing limit gera is of a binary mixture, not of " + std::to_string(diameters_.size()) + " phases");
   order_ = coarseToFine(diameters_);
-  for (std::size_t k = 0; k < maxPackings_.size(); ++k)
-    checkMixture(toString(limit_), std::array<double, 1>{1.0}, std::span(diameters_).subspan(k, 1),
-                 std::span(maxPackings_).subspan(k, 1));
   if (!diameters_.empty()) coarsestPacking_ = maxPackings_[order_.front()];
 }
 
@@ -133,18 +140,8 @@ double MixturePacking::criticalVoidFraction(std::span<const double> solidFractio
   double total = 0.0;
   for (double eps : solidFractions) total += std::max(eps, 0.0);
   if (!(total > 0.0)) return 1.0 - coarsestPacking_;
-  if (limit_ == PackingLimit::YuStandish) {
-    // A fraction a hair below zero (round-off in a cell a phase leaves) is no share of the mix.
-    std::array<double, 8> clipped{};
-    std::vector<double> heap;
-    std::span<double> eps(clipped.data(), solidFractions.size());
-    if (solidFractions.size() > clipped.size()) {
-      heap.resize(solidFractions.size());
-      eps = heap;
-    }
-    for (std::size_t k = 0; k < eps.size(); ++k) eps[k] = std::max(solidFractions[k], 0.0);
-    return 1.0 - yuStandishOrdered(eps, diameters_, maxPackings_, order_);
-  }
+  if (limit_ == PackingLimit::YuStandish)
+    return 1.0 - yuStandishOrdered(solidFractions, diameters_, maxPackings_, order_);
   const std::array<double, 2> eps{std::max(solidFractions[0], 0.0), std::max(solidFractions[1], 0.0)};
   return std::max(kGeraLeastVoidFraction, 1.0 - fedorsLandelPacking(eps, diameters_, maxPackings_));
 }

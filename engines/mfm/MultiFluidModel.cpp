@@ -354,6 +354,18 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
   const fluid::StaggeredGrid& grid = state.grid();
   const int dims = grid.dimensions();
   const closures::GranularEnergyGasTerms gasTerms;
+  // Pinned theta: the cells packed beyond their eps_g*, the same for every phase (the fractions do
+  // not change here), found once.
+  std::vector<char> plasticCells;
+  if (params_.plasticTheta == PlasticTheta::Pinned) {
+    plasticCells.assign(grid.paddedCount(), 0);
+    for (int k = 0; k < grid.cells(2); ++k)
+      for (int j = 0; j < grid.cells(1); ++j)
+        for (int i = 0; i < grid.cells(0); ++i) {
+          const std::size_t c = grid.index(i, j, k);
+          plasticCells[c] = closureVoidFraction(state, c) < criticalVoidFraction(state, c) ? 1 : 0;
+        }
+  }
   for (std::size_t m = 1; m < state.phases.size(); ++m) {
     fluid::PhaseFields& phase = state.phases[m];
     const SolidsPhase& solids = params_.solids[m - 1];
@@ -364,8 +376,7 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
       for (int j = 0; j < grid.cells(1); ++j) {
         for (int i = 0; i < grid.cells(0); ++i) {
           const std::size_t c = grid.index(i, j, k);
-          if (params_.plasticTheta == PlasticTheta::Pinned &&
-              closureVoidFraction(state, c) < criticalVoidFraction(state, c)) {
+          if (!plasticCells.empty() && plasticCells[c] != 0) {
             terms.pinned[c] = 1;
             continue;
           }
