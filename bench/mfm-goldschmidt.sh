@@ -87,7 +87,7 @@ if any(s["mass_in_" + p] > 0 for p in phases if p != "gas"):
     print("fed / out (kg): " + ", ".join(f"{p} {s['mass_in_' + p]:.4g} / {s['mass_out_' + p]:.4g}" for p in phases))
     print("balances: " + ", ".join(f"{p} {s['mass_balance_' + p]:.1e}" for p in phases))
 if "segregation_percentage" in s:
-    print(f"segregation percentage: {s['segregation_percentage']:.3f} +- {s['segregation_percentage_err']:.3f}")
+    print(f"segregation percentage: {s['segregation_percentage']:.1f} +- {s['segregation_percentage_err']:.1f} %")
 print(f"wall: {wall:.1f} s (stage); cell updates per second: {cells * steps / wall:.4g} "
       f"(x outer iterations: {cells * iterations / wall:.4g})")
 print(f"wall_seconds_per_simulated_second = {wall / duration:.2f}")

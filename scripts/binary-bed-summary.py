@@ -6,7 +6,8 @@ bed's series.csv (segregation_percentage) and prints, per run (its sweep point),
 window's means of s_p, each phase's theta and Eq. 5.22 height and the share of solids in packed
 cells (series.csv columns theta_<phase>, mean_height_<phase>, plastic_solids_share), the 1 s block
 means of s_p over 0-10 s (the rate), then per arm (the runs that differ only in `seed`) the mean
-over realisations with its standard error.
+over realisations with its standard error. s_p in percent: mfm runs before impl 14 wrote Eq. 5.23's
+fraction, which is read as 100 times that.
 
 Usage: scripts/binary-bed-summary.py RESULTS_DIR [RESULTS_DIR ...] [--markdown]
 """
@@ -48,6 +49,8 @@ def runs_in(folder):
         series = read_series(series_csv)
         if "segregation_percentage" not in series:
             continue
+        if m.get("stage_type") == "mfm" and m.get("impl_version", 14) < 14:  # Eq. 5.23's fraction then
+            series["segregation_percentage"] = [100.0 * v for v in series["segregation_percentage"]]
         yield run, m, series
 
 
@@ -98,7 +101,7 @@ def main(argv):
             workflow = m.get("workflow")
             workflow = workflow.get("name", "") if isinstance(workflow, dict) else str(workflow)
             arm = f"{workflow}: " + ", ".join(f"{k} {v}" for k, v in sorted(point.items()))
-            row = {"s_p": window_mean(series, "segregation_percentage", start, end),
+            row = {"s_p (%)": window_mean(series, "segregation_percentage", start, end),
                    "plastic share": window_mean(series, "plastic_solids_share", start, end)
                    if "plastic_solids_share" in series else math.nan}
             for ph in phases:
@@ -125,7 +128,7 @@ def main(argv):
             cells = [f"{row[k]:.4g}" for k in keys]
             print(("| " if markdown else "") + f"{seed}" + (" | " if markdown else "  ") +
                   (" | " if markdown else "  ").join(cells) + (" |" if markdown else ""))
-            print(("  " if not markdown else "") + "s_p 1 s blocks 0-10 s: " + " ".join(f"{v:.3f}" for v in rate)
+            print(("  " if not markdown else "") + "s_p 1 s blocks 0-10 s (%): " + " ".join(f"{v:.1f}" for v in rate)
                   + ("\n" if markdown else ""))
         for k in keys:
             mean, se, n = mean_se([row[k] for _, row, _ in runs])

@@ -123,7 +123,7 @@ double segregationPercentage(double smallHeight, double largeHeight, double smal
                 std::to_string(largeHeight) + " m (large) must be positive");
   const double ratio = smallHeight / largeHeight;                   // Eq. 5.24
   const double ratioMax = (2.0 - smallShare) / (1.0 - smallShare);  // Eq. 5.25
-  return (ratio - 1.0) / (ratioMax - 1.0);                          // Eq. 5.23
+  return 100.0 * (ratio - 1.0) / (ratioMax - 1.0);                  // Eq. 5.23, in percent
 }
 
 }  // namespace grainbridge::fluid

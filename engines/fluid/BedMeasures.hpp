@@ -37,11 +37,13 @@ struct VerticalAxis {
 // mean; 0 when the bed holds no solids.
 [[nodiscard]] double mixtureMeanHeight(const std::vector<double>& heights, const std::vector<double>& volumes);
 
-// The segregation percentage of a binary bed, Eqs. 5.23-5.25: s_p = (S_p - 1) / (S_p,max - 1)
-// with S_p = <h_small> / <h_large> (Eq. 5.22 of each phase) and S_p,max = (2 - x) / (1 - x), the
-// S_p of a fully separated bed with the small particles on top, x the small particles' share of
-// the solids volume. 0 for a perfectly mixed bed, 1 for a fully separated one. Throws
-// grainbridge::Error for x outside (0, 1) or heights that are not positive.
+// The segregation percentage of a binary bed, Eqs. 5.23-5.25, in percent: s_p = 100 (S_p - 1) /
+// (S_p,max - 1) with S_p = <h_small> / <h_large> (Eq. 5.22 of each phase) and S_p,max = (2 - x) /
+// (1 - x), the S_p of a fully separated bed with the small particles on top, x the small
+// particles' share of the solids volume. 0 for a perfectly mixed bed, 100 for a fully separated
+// one. Eq. 5.23 writes the fraction; its name (Goldschmidt et al. 2003) says percent, and every
+// output, table and figure gives it so (issue 62). Throws grainbridge::Error for x outside (0, 1)
+// or heights that are not positive.
 [[nodiscard]] double segregationPercentage(double smallHeight, double largeHeight, double smallShare);
 
 // The volume of solids phase m in the domain [m^3] (per unit depth in 2D: the cell volume uses

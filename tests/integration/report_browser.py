@@ -26,9 +26,19 @@ Every failure is collected and printed with what failed and where; exit 1 if the
 Exit 77 (ctest: skipped) when Chromium, chromedriver or Selenium is missing, unless
 GRAINBRIDGE_REQUIRE_BROWSER=1 (scripts/test.sh sets it, having installed them): then exit 1.
 
-Without --report it runs the quickstart into --work (emptied first): `grainbridge run` then
-`grainbridge report`, whose first .html line on stdout is the report's path. With --report it
-checks that file as it is. --screenshot saves the first screen (1280x800 PNG), pass or fail.
+With --bed-compare it also checks a comparison of bed runs (a bed_compare stage, issue 62):
+
+  h. one colour per run: the s_p and mean-height-against-time figures each draw at least as many
+     distinct line colours (grid, frame and black text aside) as the comparison has runs;
+  i. runs by name: the time-averaged height figure names every run along x (its legend's names)
+     and has no numeric "run (row of the table)" axis;
+  j. s_p named for what it is: the findings table heads it "segregation percentage s_p [%]" and
+     its figure's axis reads the same.
+
+Without --report it runs --config (default configs/quickstart.json) into --work (emptied first):
+`grainbridge run` then `grainbridge report`, whose first .html line on stdout is the report's
+path. With --report it checks that file as it is. --screenshot saves the first screen (1280x800
+PNG; --full-page: the whole page), pass or fail.
 """
 import argparse
 import os
@@ -104,18 +114,18 @@ def prerequisites():
 
 # ---------------------------------------------------------------- the report
 
-def produce_report(grainbridge, repo, work):
-    """Run the quickstart into an empty `work` and write its report; return report.html's path."""
+def produce_report(grainbridge, repo, work, config_name):
+    """Run the config into an empty `work` and write its report; return report.html's path."""
     if work.exists():
         shutil.rmtree(work)
     work.mkdir(parents=True)
-    config = str(repo / "configs" / "quickstart.json")
+    config = str(repo / "configs" / config_name)
     try:
         subprocess.run([grainbridge, "-q", "run", config, "--workdir", str(work)], cwd=work, check=True)
         out = subprocess.run([grainbridge, "report", config, "--workdir", str(work)], cwd=work, check=True,
                              stdout=subprocess.PIPE, text=True).stdout
     except (OSError, subprocess.CalledProcessError) as error:
-        sys.exit(f"report_browser: the quickstart did not run through: {error}")
+        sys.exit(f"report_browser: {config_name} did not run through: {error}")
     for line in out.splitlines():
         if line.strip().endswith(".html"):
             return pathlib.Path(line.strip())
@@ -406,6 +416,65 @@ def check_width(driver):
             f"viewport; sticking out: {culprits}"]
 
 
+# Grid, frame, text and background: drawn in every figure, whatever the runs.
+NON_DATA_STROKES = {"rgb(221,221,221)", "rgb(68,68,68)", "rgb(0,0,0)", "rgb(255,255,255)"}
+
+
+def stroke_colours(svg_text):
+    """The line colours of a gnuplot SVG, without spaces: {"rgb(0,114,178)", ...}."""
+    import re
+    return {re.sub(r"\s+", "", c) for c in re.findall(r"stroke='(rgb\([^)]*\))'", svg_text)}
+
+
+def check_bed_compare(driver, page):
+    """h-j on the page's bed_compare findings: (runs, failures)."""
+    failures = []
+    state = js(driver, """
+      const imgs = Array.from(document.querySelectorAll('#findings img')).map(i => i.src);
+      const heads = Array.from(document.querySelectorAll('#findings table.findings th')).map(t => t.textContent);
+      const runs = Array.from(document.querySelectorAll('#findings table.findings tr'))
+        .slice(1).map(r => r.cells.length ? r.cells[0].textContent : '');
+      return {imgs: imgs, heads: heads, runs: runs};""")
+    runs = len(state["runs"])
+    svgs = {}
+    for url in state["imgs"]:
+        parts = urllib.parse.urlsplit(url)
+        path = pathlib.Path(urllib.request.url2pathname(parts.path))
+        if path.suffix == ".svg":
+            svgs[path.name] = path.read_text(encoding="utf-8")
+    if runs < 2:
+        failures.append(f"h. the findings table shows {runs} run(s); a comparison needs two")
+    for name in ("segregation_percentage.svg", "mean_height.svg"):
+        if name not in svgs:
+            failures.append(f"h. the findings show no {name}")
+            continue
+        colours = stroke_colours(svgs[name]) - NON_DATA_STROKES
+        if len(colours) < runs:
+            failures.append(f"h. {name} draws {len(colours)} line colour(s) ({', '.join(sorted(colours))}) "
+                            f"for {runs} runs: one colour per run")
+    averaged = svgs.get("mean_height_averaged.svg")
+    if averaged is None:
+        failures.append("i. the findings show no mean_height_averaged.svg")
+    else:
+        if "row of the table" in averaged:
+            failures.append("i. mean_height_averaged.svg numbers the runs (\"run (row of the table)\")")
+        root = ET.fromstring(averaged)
+        texts = {"".join(t.itertext()).strip() for t in root.iter() if local_name(t) == "text"}
+        # The axis' labels: not a number, not an axis title (a unit in brackets) or the title.
+        names = [t for t in texts if t and not t.replace(".", "", 1).lstrip("-").isdigit() and "[" not in t
+                 and t not in ("run", "Time-averaged mean particle height")]
+        unnamed = [label for label in state["runs"] if not any(n in label for n in names)]
+        if unnamed:
+            failures.append(f"i. mean_height_averaged.svg names no part of {', '.join(unnamed)} along x "
+                            f"(its labels: {sorted(names)})")
+    label = "segregation percentage s_p [%]"
+    if label not in state["heads"]:
+        failures.append(f"j. the findings table has no column \"{label}\" (its heads: {state['heads']})")
+    if label not in svgs.get("segregation_percentage.svg", ""):
+        failures.append(f"j. segregation_percentage.svg's axis does not read \"{label}\"")
+    return runs, failures
+
+
 def run_checks(driver, page):
     """All checks on the open page: (counts, failures)."""
     images, failures = check_images(driver)
@@ -425,13 +494,17 @@ def run_checks(driver, page):
     return counts, failures
 
 
-def save_screenshot(driver, path):
+def save_screenshot(driver, path, full_page=False):
     path.parent.mkdir(parents=True, exist_ok=True)
     driver.execute_script("window.scrollTo(0, 0)")
+    if full_page:  # the whole page at 1280 px: the viewport stretched to its height (after the checks)
+        height = driver.execute_script("return document.documentElement.scrollHeight")
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                               {"width": VIEWPORT[0], "height": height, "deviceScaleFactor": 1, "mobile": False})
     if not driver.save_screenshot(str(path)):
         print(f"report_browser: could not save the screenshot {path}", file=sys.stderr)
         return False
-    print(f"report_browser: screenshot of the first screen in {path}")
+    print(f"report_browser: screenshot of the {'whole page' if full_page else 'first screen'} in {path}")
     return True
 
 
@@ -442,9 +515,15 @@ def parse_args():
     parser.add_argument("--grainbridge", help="grainbridge executable")
     parser.add_argument("--repo", type=pathlib.Path, help="source tree (for configs/quickstart.json)")
     parser.add_argument("--work", type=pathlib.Path, help="work folder (emptied) for the quickstart run")
+    parser.add_argument("--config", default="quickstart.json",
+                        help="the config under configs/ to run (default quickstart.json)")
+    parser.add_argument("--bed-compare", action="store_true",
+                        help="also check the comparison of bed runs (h-j): for a config with a bed_compare stage")
     parser.add_argument("--report", type=pathlib.Path,
                         help="check this report.html instead of running the quickstart (then the three above are not needed)")
     parser.add_argument("--screenshot", type=pathlib.Path, help="save the first screen (1280x800) as this PNG")
+    parser.add_argument("--full-page", action="store_true",
+                        help="with --screenshot: the whole page at 1280 px wide, not its first screen")
     args = parser.parse_args()
     if not args.report and not (args.grainbridge and args.repo and args.work):
         parser.error("give --grainbridge, --repo and --work (to run the quickstart), or --report")
@@ -459,7 +538,7 @@ def main():
         if not page.is_file():
             sys.exit(f"report_browser: no report at {page}")
     else:
-        page = produce_report(args.grainbridge, args.repo.resolve(), args.work.resolve())
+        page = produce_report(args.grainbridge, args.repo.resolve(), args.work.resolve(), args.config)
 
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="report_browser-profile-", ignore_cleanup_errors=True) as profile:
@@ -469,9 +548,12 @@ def main():
             open_page(driver, page)
             try:
                 counts, failures = run_checks(driver, page)
+                if args.bed_compare:
+                    counts["compared runs"], found = check_bed_compare(driver, page)
+                    failures += found
             finally:  # the screenshot is wanted most when something is wrong
                 if args.screenshot:
-                    shot_ok = save_screenshot(driver, args.screenshot.resolve())
+                    shot_ok = save_screenshot(driver, args.screenshot.resolve(), args.full_page)
         finally:
             driver.quit()
     elapsed = time.monotonic() - started

@@ -26,10 +26,10 @@ BedRun run(const std::string& label, double height, double sp, std::vector<doubl
 }
 
 struct Fixture {
-  std::vector<BedRun> runs = {run("bed (rotation_model false, seed 1)", 0.10, 0.50),
-                              run("bed (rotation_model false, seed 2)", 0.12, 0.54),
-                              run("bed (rotation_model true, seed 1)", 0.12, 0.64),
-                              run("bed (rotation_model true, seed 2)", 0.14, 0.70), run("mono", 0.09, NAN)};
+  std::vector<BedRun> runs = {run("bed (rotation_model false, seed 1)", 0.10, 50.0),
+                              run("bed (rotation_model false, seed 2)", 0.12, 54.0),
+                              run("bed (rotation_model true, seed 1)", 0.12, 64.0),
+                              run("bed (rotation_model true, seed 2)", 0.14, 70.0), run("mono", 0.09, NAN)};
   std::vector<Arm> arms = groupArms({{"bed", {{"rotation_model", false}, {"seed", 1}}},
                                      {"bed", {{"rotation_model", false}, {"seed", 2}}},
                                      {"bed", {{"rotation_model", true}, {"seed", 1}}},
@@ -49,12 +49,12 @@ TEST(BedArms, ArmsCsvHasARowPerArmWithItsRealisationsAndEmptyFieldsWhereThereIsN
   EXPECT_EQ(line,
             "arm,realisations,realisation_values,mean_height_mean,mean_height_sd,mean_height_se,"
             "segregation_percentage_mean,segregation_percentage_sd,segregation_percentage_se");
-  // 0.10 and 0.12: mean 0.11, sd 0.02 / sqrt(2), se 0.01; s_p 0.50 and 0.54: se 0.02.
+  // 0.10 and 0.12: mean 0.11, sd 0.02 / sqrt(2), se 0.01; s_p 50 and 54 %: se 2.
   std::getline(lines, line);
   EXPECT_EQ(line.rfind("bed (rotation_model false),2,1;2,0.11,", 0), 0u) << line;
   const auto arms = bedArms(f.runs, f.arms);
   EXPECT_NEAR(arms[0].outputs.at("mean_height").se, 0.01, 1e-15);
-  EXPECT_NEAR(arms[0].outputs.at("segregation_percentage").se, 0.02, 1e-15);
+  EXPECT_NEAR(arms[0].outputs.at("segregation_percentage").se, 2.0, 1e-13);
   std::getline(lines, line);
   EXPECT_EQ(line.rfind("bed (rotation_model true),2,1;2,", 0), 0u) << line;
   // The run without a seed: its height as the mean, no spread, no s_p recorded.
@@ -66,14 +66,14 @@ TEST(BedArms, ArmsCsvHasARowPerArmWithItsRealisationsAndEmptyFieldsWhereThereIsN
 TEST(BedArms, TheHeadlineGivesEachArmsMeansAndTheDifferenceOneSettingMakesInStandardErrors) {
   const Fixture f;
   const std::string headline = armsHeadline(bedArms(f.runs, f.arms), "seed");
-  EXPECT_NE(headline.find("bed (rotation_model false): s_p 0.520 ± 0.020, mean height 0.110 ± 0.010 m (mean and "
+  EXPECT_NE(headline.find("bed (rotation_model false): s_p 52.0 ± 2.0 %, mean height 0.110 ± 0.010 m (mean and "
                           "standard error over 2 realisations: seed 1, 2)"),
             std::string::npos)
       << headline;
-  // s_p: 0.67 - 0.52 = 0.15 ± sqrt(0.02^2 + 0.03^2) = 0.036, 4.2 standard errors; the height
+  // s_p: 67 - 52 = 15 ± sqrt(2^2 + 3^2) = 3.6 percentage points, 4.2 standard errors; the height
   // 0.13 - 0.11 = 0.02 ± sqrt(2) 0.01, 1.4 standard errors.
-  EXPECT_NE(headline.find("bed: rotation_model false → true raises s_p by 0.150 ± 0.036 (4.2 standard errors), "
-                          "raises mean height by 0.020 ± 0.014 m (1.4 standard errors); 2 realisations each."),
+  EXPECT_NE(headline.find("bed: rotation_model false → true raises s_p by 15.0 ± 3.6 percentage points (4.2 standard "
+                          "errors), raises mean height by 0.020 ± 0.014 m (1.4 standard errors); 2 realisations each."),
             std::string::npos)
       << headline;
   // An arm of one has no sentence.
@@ -92,10 +92,14 @@ TEST(BedArms, TheRealisationsFigureDrawsEachArmsMeanWithABandOfOneStandardError)
   EXPECT_EQ(line.model, "bed (rotation_model false)");
   EXPECT_EQ(band.model, line.model);
   EXPECT_NE(figure.series[2].model, line.model);
+  // A colour per arm, its band in its line's.
+  EXPECT_FALSE(line.colour.empty());
+  EXPECT_EQ(band.colour, line.colour);
+  EXPECT_NE(figure.series[3].colour, line.colour);
   EXPECT_EQ(line.x, (std::vector<double>{0.0, 0.1, 0.2}));
-  EXPECT_NEAR(line.y[2], 0.52, 1e-15);
-  EXPECT_NEAR(band.yError[2], 0.02, 1e-15);
-  EXPECT_NEAR(band.yError[1], 0.01, 1e-15);
+  EXPECT_NEAR(line.y[2], 52.0, 1e-13);
+  EXPECT_NEAR(band.yError[2], 2.0, 1e-13);
+  EXPECT_NEAR(band.yError[1], 1.0, 1e-13);
 }
 
 TEST(BedArms, TheRealisationsFigureUsesTheCommonTimesAndRefusesRunsThatShareTooFew) {

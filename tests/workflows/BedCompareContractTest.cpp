@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <set>
 
 #include "core/Files.hpp"
 #include "core/io/FieldFrameWriter.hpp"
@@ -155,7 +156,7 @@ TEST(BedCompareContract, TakesAnyStageThatProducesHeightsPressureDropsAndFieldFr
   EXPECT_NE(csv.find("bed (height 0.02),toy,0.02"), std::string::npos) << csv;
   // The maps' vertical axis came from the frames' gravity; the height plot from the phase's column.
   EXPECT_TRUE(fs::exists(beds / "solid_fraction_maps.svg"));
-  EXPECT_NE(readText(beds / "mean_height.svg").find("bed (height 3 cm)"), std::string::npos);
+  EXPECT_NE(readText(beds / "mean_height.svg").find("height 3 cm"), std::string::npos);
 }
 
 TEST(BedCompareContract, RefusesAtCheckAStageWithoutTheProductsNamingWhatIsMissing) {
@@ -209,14 +210,106 @@ TEST(BedCompareContract, GroupsRunsDifferingOnlyInTheSeedIntoArmsWithTheirStanda
   EXPECT_EQ(manifest.at("summary").at("arms"), 2);
   EXPECT_EQ(manifest.at("summary").at("beds"), 4);
   const std::string headline = manifest.at("findings").at("headline");
-  EXPECT_NE(headline.find("bed (height 3 cm): s_p 0.5150 ± 0.0050, mean height 0.03150 ± 0.00050 m (mean and "
+  EXPECT_NE(headline.find("bed (height 3 cm): s_p 0.5150 ± 0.0050 %, mean height 0.03150 ± 0.00050 m (mean and "
                           "standard error over 2 realisations: seed 1, 2)"),
             std::string::npos)
       << headline;
   // 0.01 m ± sqrt(2) 0.0005: 14 standard errors.
-  EXPECT_NE(headline.find("bed: height 0.02 → 3 cm raises s_p by 0.0000 ± 0.0071 (0 standard errors), raises mean "
-                          "height by 0.01000 ± 0.00071 m (14 standard errors); 2 realisations each."),
+  EXPECT_NE(headline.find("bed: height 0.02 → 3 cm raises s_p by 0.0000 ± 0.0071 percentage points (0 standard "
+                          "errors), raises mean height by 0.01000 ± 0.00071 m (14 standard errors); 2 realisations "
+                          "each."),
             std::string::npos)
       << headline;
   EXPECT_TRUE(fs::exists(beds / "segregation_realisations.svg"));
+}
+
+namespace {
+
+// The stroke colours of an SVG's lines, as gnuplot writes them: "rgb(  0, 114, 178)".
+std::set<std::string> strokeColours(const std::string& svg) {
+  std::set<std::string> colours;
+  for (std::size_t at = svg.find("stroke='rgb("); at != std::string::npos; at = svg.find("stroke='rgb(", at + 1))
+    colours.insert(svg.substr(at + 8, svg.find(')', at) - at - 7));
+  return colours;
+}
+
+// Runs the workflow `doc` of toy beds; the bed_compare instance's folder.
+fs::path runToyComparison(const json& doc, const fs::path& work) {
+  const auto registry = toyRegistry();
+  const auto cfg = config::parseWorkflow(doc, "contract.json", registry);
+  exec::RunOptions options;
+  options.workDir = work;
+  exec::SerialDispatcher dispatcher(registry, exec::resultsRoot(work), exec::stopFlag());
+  EXPECT_EQ(exec::runWorkflow(cfg, plan::makePlan(cfg), options, dispatcher, 1).exitCode(), 0);
+  return instanceOf(work / "results/contract/beds");
+}
+
+}  // namespace
+
+// Issue 62: a reader tells the runs apart at a glance. Each run gets its own colour in every
+// figure, named by what differs between the runs (the height; not the stage, which all share),
+// and the averaged heights put the runs along x by that name, not by row number.
+TEST(BedCompareContract, GivesEachRunItsColourAndNamesRunsAlongXByWhatTellsThemApart) {
+  TempDir work;
+  const fs::path beds = runToyComparison(workflow("toy_bed", "height=3 cm"), work.path());
+  const std::string height = readText(beds / "mean_height.svg");
+  EXPECT_NE(height.find(">height 3 cm<"), std::string::npos) << "the legend names the swept value";
+  EXPECT_EQ(height.find("bed (height"), std::string::npos) << "not the stage, which every run shares";
+  const std::string blue = "rgb(  0, 114, 178)", vermillion = "rgb(213,  94,   0)";
+  for (const char* figure : {"mean_height.svg", "pressure_drop.svg", "segregation_percentage.svg"}) {
+    const auto colours = strokeColours(readText(beds / figure));
+    EXPECT_TRUE(colours.contains(blue) && colours.contains(vermillion)) << figure << ": a colour per run";
+  }
+  const std::string averaged = readText(beds / "mean_height_averaged.svg");
+  EXPECT_EQ(averaged.find("row of the table"), std::string::npos);
+  EXPECT_NE(averaged.find(">height 0.02<"), std::string::npos) << "the runs are the axis' categories";
+  EXPECT_NE(averaged.find(">run<"), std::string::npos) << "the axis is titled without a unit";
+  // s_p in percent, and the figures against time take a page's full width.
+  EXPECT_NE(readText(beds / "segregation_percentage.svg").find("segregation percentage s_p [%]"), std::string::npos);
+  const json findings = json::parse(readText(beds / "manifest.json")).at("findings");
+  for (const auto& figure : findings.at("figures")) {
+    const std::string svg = figure.at("svg");
+    const bool overTime = svg == "mean_height.svg" || svg == "pressure_drop.svg" || svg == "segregation_percentage.svg";
+    EXPECT_EQ(figure.value("wide", false), overTime) << svg;
+  }
+  EXPECT_NE(std::string(findings.at("columns").back()).find("[%]"), std::string::npos);
+}
+
+// A measured curve and the reference's words beside the runs: the curve drawn in the figures of
+// its output with its label and citation, both named in the findings.
+TEST(BedCompareContract, DrawsAReferenceSeriesAndPrintsTheReferencesStatementsBesideTheRuns) {
+  TempDir work;
+  const fs::path csv = work.path() / "experiment.csv";
+  core::writeFileAtomically(csv, "time,value\n0.5,40\n1.5,55\n");
+  json doc = workflow("toy_bed", "height=3 cm");
+  json& p = doc["stages"]["beds"]["params"];
+  p["reference_series"] = csv.string();
+  p["reference_series_label"] = "the bed's 1 s means";
+  p["reference_series_citation"] = "a notebook, p. 3";
+  p["statements"] = {{{"text", "the taller bed segregates more"}, {"citation", "Sun (2007), line 1285"}}};
+  const fs::path beds = runToyComparison(doc, work.path());
+  const std::string sp = readText(beds / "segregation_percentage.svg");
+  EXPECT_NE(sp.find("the bed's 1 s means (a notebook, p. 3)"), std::string::npos);
+  EXPECT_EQ(readText(beds / "mean_height.svg").find("the bed's 1 s means"), std::string::npos) << "s_p's figures only";
+  const std::string headline =
+      json::parse(readText(beds / "manifest.json")).at("findings").at("headline").get<std::string>();
+  EXPECT_NE(headline.find("The reference: \u201cthe taller bed segregates more\u201d (Sun (2007), line 1285)."),
+            std::string::npos)
+      << headline;
+  EXPECT_NE(headline.find("Beside the runs: the bed's 1 s means (a notebook, p. 3), 2 points of segregation_percentage "
+                          "from experiment.csv."),
+            std::string::npos)
+      << headline;
+}
+
+TEST(BedCompareContract, RefusesAtCheckAReferenceSeriesWithoutItsSourceOrItsValueColumn) {
+  TempDir work;
+  const fs::path csv = work.path() / "experiment.csv";
+  core::writeFileAtomically(csv, "time,s_p\n0.5,40\n");
+  json doc = workflow("toy_bed", "height=3 cm");
+  doc["stages"]["beds"]["params"]["reference_series"] = csv.string();
+  const std::string problems = loadProblems(toyRegistry(), doc);
+  EXPECT_NE(problems.find("/stages/beds/params/reference_series_citation"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("has no column \"value\""), std::string::npos) << problems;
+  EXPECT_NE(problems.find(csv.string()), std::string::npos) << "names the file: " << problems;
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <regex>
+#include <set>
 
 #include "core/Error.hpp"
 #include "tests/support/Cli.hpp"
@@ -104,16 +105,60 @@ TEST(Plot, ModelColoursAreFixedAndDistinct) {
   EXPECT_NE(report::seriesColour("DEM"), report::seriesColour("experiment"));
 }
 
+// Runs side by side (issue 62): each its own colour, none of them a reference kind's, and runs
+// along x by name, the axis titled without a unit; a wide figure is drawn for a page's width.
+TEST(Plot, RunsHaveTheirOwnColoursAndAreCategoriesAlongX) {
+  std::set<std::string> colours;
+  for (std::size_t r = 0; r < 6; ++r) colours.insert(report::runColour(r));
+  EXPECT_EQ(colours.size(), 6u);
+  EXPECT_FALSE(colours.contains(report::seriesColour("experiment")));
+  EXPECT_FALSE(colours.contains(report::seriesColour("reference")));
+  EXPECT_EQ(report::runColour(6), report::runColour(0));
+
+  TempDir dir;
+  report::Figure fig{"heights",
+                     {"run", "", false, {"rotation_model false", "rotation_model true\nseed 2"}},
+                     {"mean particle height", "m"},
+                     {}};
+  for (std::size_t r = 0; r < 2; ++r) {
+    report::Series s{"run " + std::to_string(r),
+                     "lun1984",
+                     report::Series::Style::Points,
+                     0,
+                     {static_cast<double>(r + 1)},
+                     {0.1},
+                     {},
+                     report::runColour(r)};
+    fig.series.push_back(s);
+  }
+  const std::string svg = readText(dir.path() / report::drawFigure(fig, dir.path(), "runs").svg);
+  EXPECT_NE(svg.find(">rotation_model false<"), std::string::npos);
+  EXPECT_NE(svg.find(">seed 2<"), std::string::npos) << "a category's second line";
+  EXPECT_NE(svg.find(">run<"), std::string::npos);
+  EXPECT_EQ(svg.find("run ["), std::string::npos);
+  // Each series in its run's colour, not its model's (lun1984's blue is run 0's: run 1 tells).
+  EXPECT_NE(svg.find("rgb(213,  94,   0)"), std::string::npos);
+  EXPECT_EQ(svg.find("width=\"1200"), std::string::npos);
+  fig.wide = true;
+  EXPECT_NE(readText(dir.path() / report::drawFigure(fig, dir.path(), "wide").svg).find("width=\"1200"),
+            std::string::npos);
+  // Categories belong on x; a unitless y is refused as before.
+  fig.y.categories = {"a"};
+  EXPECT_THROW(report::drawFigure(fig, dir.path(), "f"), Error);
+}
+
 TEST(Findings, TravelThroughJsonAndPrintAsAlignedText) {
   contract::Findings f;
   f.title = "DEM against kinetic theory";
   f.headline = "Largest deviation from lun1984: −16.9 % in τ* at φ 0.1, e 0.8.";
   f.columns = {"largest deviation from", "τ*"};
   f.rows = {{"lun1984", "−16.9 % (φ 0.1, e 0.8)"}, {"syamlal_algebraic", "+624 % (φ 0.1, e 0.9)"}};
-  f.figures = {{"a.svg", "a.png", "τ*"}};
+  f.figures = {{"a.svg", "a.png", "τ*"}, {"b.svg", "b.png", "s_p against time", true}};
   f.firstScreen = 1;
   const auto back = contract::Findings::fromJson(json::parse(f.toJson().dump()));
   EXPECT_EQ(back.toJson(), f.toJson());
+  EXPECT_FALSE(back.figures[0].wide);
+  EXPECT_TRUE(back.figures[1].wide);
   const std::string text = contract::findingsText(f);
   EXPECT_NE(text.find(f.headline), std::string::npos);
   // The τ* column starts at the same character in every line, UTF-8 or not.

@@ -10,7 +10,10 @@ using nlohmann::json;
 
 json Findings::toJson() const {
   json figs = json::array();
-  for (const auto& f : figures) figs.push_back({{"svg", f.svg}, {"png", f.png}, {"caption", f.caption}});
+  for (const auto& f : figures) {
+    figs.push_back({{"svg", f.svg}, {"png", f.png}, {"caption", f.caption}});
+    if (f.wide) figs.back()["wide"] = true;  // absent when not: older manifests read the same
+  }
   return {{"title", title},  {"headline", headline},        {"columns", columns}, {"rows", rows},
           {"figures", figs}, {"first_screen", firstScreen}, {"details", details}};
 }
@@ -23,7 +26,7 @@ Findings Findings::fromJson(const json& j) {
     f.columns = j.value("columns", std::vector<std::string>{});
     f.rows = j.value("rows", std::vector<std::vector<std::string>>{});
     for (const auto& fig : j.value("figures", json::array())) {
-      f.figures.push_back({fig.at("svg"), fig.value("png", ""), fig.value("caption", "")});
+      f.figures.push_back({fig.at("svg"), fig.value("png", ""), fig.value("caption", ""), fig.value("wide", false)});
     }
     f.firstScreen = j.value("first_screen", 3);
     f.details = j.value("details", "");

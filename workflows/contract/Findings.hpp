@@ -13,6 +13,7 @@ namespace grainbridge::workflows::contract {
 struct FindingsFigure {
   std::string svg, png;  // relative to the stage's instance folder
   std::string caption;
+  bool wide = false;  // takes a page's full width (several runs against time), not a column
 };
 
 struct Findings {

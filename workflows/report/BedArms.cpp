@@ -13,12 +13,13 @@ namespace {
 
 std::string number(double v) { return std::isfinite(v) ? core::roundTripText(v) : std::string(); }
 
-// How the sentences name an output and its unit.
+// How the sentences name an output, its unit and the unit of a difference of two (s_p is in
+// percent: two of them differ by percentage points).
 struct OutputWords {
-  std::string name, unit;
+  std::string name, unit, difference;
 };
-const std::map<std::string, OutputWords> kWords = {{"segregation_percentage", {"s_p", ""}},
-                                                   {"mean_height", {"mean height", " m"}}};
+const std::map<std::string, OutputWords> kWords = {{"segregation_percentage", {"s_p", " %", " percentage points"}},
+                                                   {"mean_height", {"mean height", " m", " m"}}};
 
 // The outputs an arm has a mean of, s_p first: the study's quantity where it is recorded.
 std::vector<std::string> spokenOutputs(const BedArm& arm) {
@@ -97,7 +98,7 @@ std::string armsHeadline(const std::vector<BedArm>& arms, const std::string& rea
       const MeanDifference d = meanDifference(from.outputs.at(output), to.outputs.at(output));
       const OutputWords& words = kWords.at(output);
       text << (first ? " " : ", ") << (d.value >= 0 ? "raises " : "lowers ") << words.name << " by "
-           << core::humanWithError(std::abs(d.value), d.se) << words.unit;
+           << core::humanWithError(std::abs(d.value), d.se) << words.difference;
       if (std::isfinite(d.standardErrors())) {
         text << " (" << core::humanNumber(std::abs(d.standardErrors()), 2) << " standard errors)";
       }

@@ -31,7 +31,7 @@ struct BedArm {
 [[nodiscard]] std::string armsCsv(const std::vector<BedArm>& arms);
 
 // The findings' sentences: per arm of at least two realisations, its outputs' means with their
-// standard errors, "bed (rotation_model true): s_p 0.661 ± 0.012, mean height 0.1024 ± 0.0003 m
+// standard errors, "bed (rotation_model true): s_p 66.1 ± 1.2 %, mean height 0.1024 ± 0.0003 m
 // (mean and standard error over 3 realisations: seed 1, 2, 3)"; then per contrast
 // (report/armContrasts) the difference of the means, its standard error and how many standard
 // errors it is. "" when no arm has two realisations. `realisation` names the values ("seed").

@@ -57,41 +57,58 @@ CommonTimes commonTimes(const std::vector<BedRun>& runs, const Arm& arm) {
 
 }  // namespace
 
+namespace {
+
+// A series drawn in run `b`'s own colour.
+Series runSeries(const BedRun& run, std::size_t b, std::string label, Series::Style style, int variant) {
+  Series s{std::move(label), run.closure, style, variant, {}, {}, {}};
+  s.colour = runColour(b);
+  return s;
+}
+
+// The reference curves of one output, as points in their kind's colour, each labelled with its
+// citation; a point shape each.
+void addReferenceSeries(Figure& figure, const std::vector<ReferenceSeries>& references, const std::string& output) {
+  int variant = 0;
+  for (const auto& r : references) {
+    if (r.output != output) continue;
+    figure.series.push_back(
+        {r.label + " (" + r.citation + ")", r.kind, Series::Style::Points, variant++, r.time, r.value, {}});
+  }
+}
+
+}  // namespace
+
 Figure averagedHeightFigure(const std::vector<BedRun>& runs) {
-  Figure figure{"Time-averaged mean particle height", {"run (row of the table)", "–"},
-                {"mean particle height", "m"}, {}};
-  std::map<std::string, Series> byClosure, byReference;
+  Figure figure{"Time-averaged mean particle height", {"run", "", false, {}}, {"mean particle height", "m"}, {}};
+  std::map<std::string, Series> byReference;
+  std::vector<Series> byRun;
   for (std::size_t b = 0; b < runs.size(); ++b) {
     const BedRun& run = runs[b];
-    auto& points = byClosure[run.closure];
-    points.label = "runs, " + run.closure;
-    points.model = run.closure;
-    points.style = Series::Style::PointsWithErrors;
+    figure.x.categories.push_back(run.category);
+    Series points = runSeries(run, b, run.shortLabel, Series::Style::PointsWithErrors, 0);
     points.x.push_back(static_cast<double>(b + 1));
     points.y.push_back(run.meanHeight);
     points.yError.push_back(std::isfinite(run.meanHeightError) ? run.meanHeightError : 0.0);
+    byRun.push_back(std::move(points));
     // A particle run's mean height is its particles'; Eq. 5.22 of its deposited fraction beside it.
     if (const double deposited = run.value("mean_height_fields"); std::isfinite(deposited)) {
-      auto& fields = byClosure[run.closure + " (Eq. 5.22)"];
-      fields.label = "runs, " + run.closure + ", Eq. 5.22 of the deposited fraction";
-      fields.model = run.closure;
-      fields.style = Series::Style::PointsWithErrors;
-      fields.variant = 1;
-      fields.x.push_back(static_cast<double>(b + 1));
+      Series fields = runSeries(run, b, run.shortLabel + ", Eq. 5.22 of the deposited fraction",
+                                Series::Style::PointsWithErrors, 1);
+      fields.x.push_back(static_cast<double>(b + 1) - 0.2);
       fields.y.push_back(deposited);
       const double err = run.value("mean_height_fields_err");
       fields.yError.push_back(std::isfinite(err) ? err : 0.0);
+      byRun.push_back(std::move(fields));
     }
     // Beside it, the spread its closure samples give (the DEM closures' statistical error).
     if (const auto it = run.closureSpreads.find("mean_height"); it != run.closureSpreads.end()) {
-      auto& spread = byClosure[run.closure + " (DEM closure spread)"];
-      spread.label = "runs, " + run.closure + ", spread over the closure samples";
-      spread.model = run.closure;
-      spread.style = Series::Style::PointsWithErrors;
-      spread.variant = 2;
+      Series spread =
+          runSeries(run, b, run.shortLabel + ", spread over the closure samples", Series::Style::PointsWithErrors, 2);
       spread.x.push_back(static_cast<double>(b + 1) + 0.2);
       spread.y.push_back(run.meanHeight);
       spread.yError.push_back(it->second.spread);
+      byRun.push_back(std::move(spread));
     }
     for (const auto& r : run.references) {
       const bool first = !byReference.contains(r.label);
@@ -106,108 +123,131 @@ Figure averagedHeightFigure(const std::vector<BedRun>& runs) {
       ref.y.push_back(r.height);
     }
   }
-  for (auto& [k, series] : byClosure) figure.series.push_back(std::move(series));
+  for (auto& series : byRun) figure.series.push_back(std::move(series));
   for (auto& [k, series] : byReference) figure.series.push_back(std::move(series));
   return figure;
 }
 
-TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap) {
-  TimeFigures out{{"Mean particle height (Eq. 5.22)", {"time", "s"}, {"mean particle height", "m"}, {}},
-                  {"Pressure drop" + (tap.empty() ? std::string() : " (" + tap + ")"), {"time", "s"},
-                   {"pressure drop", "Pa"}, {}}};
-  std::map<std::string, int> variants;  // per closure: a dash per run and phase
-  for (const auto& run : runs) {
+TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap,
+                        const std::vector<ReferenceSeries>& references) {
+  TimeFigures out{{"Mean particle height (Eq. 5.22)", {"time", "s"}, {"mean particle height", "m"}, {}, true},
+                  {"Pressure drop" + (tap.empty() ? std::string() : " (" + tap + ")"),
+                   {"time", "s"},
+                   {"pressure drop", "Pa"},
+                   {},
+                   true}};
+  for (std::size_t b = 0; b < runs.size(); ++b) {
+    const BedRun& run = runs[b];
     const auto time = run.series.find("time");
     if (time == run.series.end()) throw Error("bed figures: the series of " + run.label + " has no time");
-    // One line per solids phase (a mixture's segregate), each with the phase's name beside the run's.
-    const int runVariant = variants[run.closure]++;
-    int variant = runVariant;
+    // A colour per run, a dash per solids phase (a mixture's segregate) named beside the run.
+    int variant = 0;
     for (std::size_t m = 0; m < run.phases.size(); ++m) {
       const auto h = run.series.find("mean_height_" + run.phases[m]);
       if (h == run.series.end()) continue;
-      if (m > 0) variant = variants[run.closure]++;
-      const std::string label = run.label + (run.phases.size() > 1 ? ", " + run.phases[m] : "");
-      out.height.series.push_back({label, run.closure, Series::Style::Line, variant, time->second, h->second, {}});
+      Series line = runSeries(run, b, run.shortLabel + (run.phases.size() > 1 ? ", " + run.phases[m] : ""),
+                              Series::Style::Line, variant++);
+      line.x = time->second;
+      line.y = h->second;
+      out.height.series.push_back(std::move(line));
     }
     // A particle run: its particles' arithmetic mean height, and Eq. 5.22 of its deposited fraction.
     for (const auto& [column, what] : {std::pair{"mean_height", ", particles"},
                                        std::pair{"mean_height_fields", ", Eq. 5.22 of the deposited fraction"}}) {
       const auto h = run.series.find(column);
       if (h == run.series.end()) continue;
-      out.height.series.push_back({run.label + what, run.closure, Series::Style::Line, variants[run.closure]++,
-                                   time->second, h->second, {}});
+      Series line = runSeries(run, b, run.shortLabel + what, Series::Style::Line, variant++);
+      line.x = time->second;
+      line.y = h->second;
+      out.height.series.push_back(std::move(line));
     }
     if (const auto dp = run.series.find(run.pressureDrop); dp != run.series.end()) {
-      out.pressureDrop.series.push_back(
-          {run.label, run.closure, Series::Style::Line, runVariant, time->second, dp->second, {}});
+      Series line = runSeries(run, b, run.shortLabel, Series::Style::Line, 0);
+      line.x = time->second;
+      line.y = dp->second;
+      out.pressureDrop.series.push_back(std::move(line));
     }
   }
+  addReferenceSeries(out.height, references, "mean_height");
   return out;
 }
 
 Figure contactFigure(const std::vector<BedRun>& runs) {
-  Figure figure{"Contact numbers (Figs. 7.5, 7.6, 7.11)", {"time", "s"}, {"coordination / multi-contact ratio", "–"},
-                {}};
-  std::map<std::string, int> variants;
-  for (const auto& run : runs) {
+  Figure figure{
+      "Contact numbers (Figs. 7.5, 7.6, 7.11)", {"time", "s"}, {"coordination / multi-contact ratio", "–"}, {}, true};
+  for (std::size_t b = 0; b < runs.size(); ++b) {
+    const BedRun& run = runs[b];
     const auto time = run.series.find("time");
     if (time == run.series.end()) continue;
+    int variant = 0;
     for (const auto& [column, what] : {std::pair{"coordination", ", coordination"},
                                        std::pair{"multi_contact_ratio", ", multi-contact ratio"}}) {
       const auto v = run.series.find(column);
       if (v == run.series.end()) continue;
-      figure.series.push_back(
-          {run.label + what, run.closure, Series::Style::Line, variants[run.closure]++, time->second, v->second, {}});
+      Series line = runSeries(run, b, run.shortLabel + what, Series::Style::Line, variant++);
+      line.x = time->second;
+      line.y = v->second;
+      figure.series.push_back(std::move(line));
     }
   }
   return figure;
 }
 
-SegregationFigures segregationFigures(const std::vector<BedRun>& runs) {
-  SegregationFigures out{{"Segregation percentage (Eqs. 5.23-5.25): every sample and 1 s means", {"time", "s"},
-                          {"segregation percentage s_p", "–"}, {}},
-                         {"Time-averaged solid fraction over the width (Fig. 5.6)", {"solid fraction", "–"},
-                          {"height", "m"}, {}}};
-  std::map<std::string, int> variants;
-  for (const auto& run : runs) {
+SegregationFigures segregationFigures(const std::vector<BedRun>& runs, const std::vector<ReferenceSeries>& references) {
+  SegregationFigures out{
+      {"Segregation percentage s_p (Eqs. 5.23-5.25): every sample and 1 s means",
+       {"time", "s"},
+       kSegregationAxis,
+       {},
+       true},
+      {"Time-averaged solid fraction over the width (Fig. 5.6)", {"solid fraction", "–"}, {"height", "m"}, {}}};
+  for (std::size_t b = 0; b < runs.size(); ++b) {
+    const BedRun& run = runs[b];
     const auto sp = run.series.find("segregation_percentage");
     if (sp == run.series.end()) continue;
-    const int variant = variants[run.closure]++;
-    out.segregation.series.push_back(
-        {run.label, run.closure, Series::Style::Line, variant, run.series.at("time"), sp->second, {}});
+    Series line = runSeries(run, b, run.shortLabel, Series::Style::Line, 0);
+    line.x = run.series.at("time");
+    line.y = sp->second;
+    out.segregation.series.push_back(std::move(line));
     for (const auto& file : run.segregationBlocks) {
       const auto blocks = readNumericCsv(file);
-      std::vector<double> middle;
+      Series means = runSeries(run, b, run.shortLabel + ", 1 s means", Series::Style::Points, 1);
       for (std::size_t k = 0; k < blocks.at("block_start").size(); ++k)
-        middle.push_back(0.5 * (blocks.at("block_start")[k] + blocks.at("block_end")[k]));
-      out.segregation.series.push_back({run.label + ", 1 s means", run.closure, Series::Style::Points, variant,
-                                        middle, blocks.at("segregation_percentage"), {}});
+        means.x.push_back(0.5 * (blocks.at("block_start")[k] + blocks.at("block_end")[k]));
+      means.y = blocks.at("segregation_percentage");
+      out.segregation.series.push_back(std::move(means));
     }
     for (const auto& file : run.profiles) {
       const auto columns = readNumericCsv(file);
       int phaseVariant = 0;
       for (const auto& [name, values] : columns) {
         if (name.rfind("ep_s_", 0) != 0) continue;
-        out.profiles.series.push_back({run.label + ", " + name.substr(5), run.closure, Series::Style::Line,
-                                       2 * variant + phaseVariant++, values, columns.at("height"), {}});
+        Series profile = runSeries(run, b, run.shortLabel + ", " + name.substr(5), Series::Style::Line, phaseVariant++);
+        profile.x = values;
+        profile.y = columns.at("height");
+        out.profiles.series.push_back(std::move(profile));
       }
     }
   }
+  if (!out.segregation.series.empty()) addReferenceSeries(out.segregation, references, "segregation_percentage");
   return out;
 }
 
 Figure realisationsFigure(const std::vector<BedRun>& runs, const std::vector<Arm>& arms, const std::string& column,
-                          const std::string& title, const Axis& y) {
-  Figure figure{title, {"time", "s"}, y, {}};
-  int variant = 0;
+                          const std::string& title, const Axis& y, const std::vector<ReferenceSeries>& references) {
+  Figure figure{title, {"time", "s"}, y, {}, true};
+  std::size_t drawn = 0;
   for (const Arm& arm : arms) {
     const bool recorded = std::all_of(arm.runs.begin(), arm.runs.end(),
                                       [&](std::size_t r) { return runs.at(r).series.contains(column); });
     if (arm.runs.size() < 2 || !recorded) continue;
     const CommonTimes common = commonTimes(runs, arm);
     const std::string over = ", mean over " + std::to_string(arm.runs.size()) + " realisations";
-    Series mean{arm.label + over, arm.label, Series::Style::Line, variant, common.times, {}, {}};
-    Series band{arm.label + ", ± 1 standard error", arm.label, Series::Style::Band, variant++, common.times, {}, {}};
+    // A colour per arm, as a run has its own in the figures of single runs.
+    Series mean{arm.label + over, arm.label, Series::Style::Line, 0, common.times, {}, {}, runColour(drawn)};
+    Series band{
+        arm.label + ", ± 1 standard error", arm.label, Series::Style::Band, 0, common.times, {}, {}, runColour(drawn)};
+    ++drawn;
     for (std::size_t k = 0; k < common.times.size(); ++k) {
       std::vector<double> values;
       for (std::size_t i = 0; i < arm.runs.size(); ++i)
@@ -221,6 +261,7 @@ Figure realisationsFigure(const std::vector<BedRun>& runs, const std::vector<Arm
     figure.series.push_back(std::move(band));
     figure.series.push_back(std::move(mean));
   }
+  if (!figure.series.empty()) addReferenceSeries(figure, references, column);
   return figure;
 }
 

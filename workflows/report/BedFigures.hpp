@@ -11,8 +11,15 @@
 
 namespace grainbridge::workflows::report {
 
-// The time-averaged mean heights, the runs in order along x, with the reference values matched
-// to each: a legend entry per closure and per reference label.
+// s_p as every figure and table shows it: Eq. 5.23 in percent (0 mixed, 100 fully segregated).
+inline const Axis kSegregationAxis{"segregation percentage s_p", "%"};
+
+// Every figure gives each run its colour (runColour of its index) and names it by its shortLabel;
+// where runs are along x they are categories, labelled by their `category`. The reference curves
+// (`references`) of the figure's output are drawn beside the runs, each in its kind's colour.
+
+// The time-averaged mean heights, a run per category along x, with the reference values matched
+// to each: a legend entry per run and per reference label.
 [[nodiscard]] Figure averagedHeightFigure(const std::vector<BedRun>& runs);
 
 // Each run's mean height against time, a line per solids phase, and its compared pressure drop
@@ -20,7 +27,8 @@ namespace grainbridge::workflows::report {
 struct TimeFigures {
   Figure height, pressureDrop;
 };
-[[nodiscard]] TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap);
+[[nodiscard]] TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap,
+                                      const std::vector<ReferenceSeries>& references = {});
 
 // The coordination number and the multi-contact ratio against time (Figs. 7.5, 7.6, 7.11) of the
 // runs whose series record them (particle runs), a line each; no series when none does.
@@ -32,15 +40,17 @@ struct TimeFigures {
 struct SegregationFigures {
   Figure segregation, profiles;
 };
-[[nodiscard]] SegregationFigures segregationFigures(const std::vector<BedRun>& runs);
+[[nodiscard]] SegregationFigures segregationFigures(const std::vector<BedRun>& runs,
+                                                    const std::vector<ReferenceSeries>& references = {});
 
 // Statistics over realisations against time (issue 55): per arm of at least two realisations
 // whose runs all record the series column `column`, the mean over its runs (a line) and ± one
-// standard error across them (a band) at each time, a colour (the arm's label as model key) and a
-// dash per arm. Taken at the times all of an arm's runs sampled (all of them, at one
+// standard error across them (a band) at each time, a colour per arm (runColour of its place
+// among the arms drawn). Taken at the times all of an arm's runs sampled (all of them, at one
 // output_interval); throws naming the runs when those are fewer than two. No series when no arm
 // qualifies. `arms` are grouped from `runs` (report/groupArms).
 [[nodiscard]] Figure realisationsFigure(const std::vector<BedRun>& runs, const std::vector<Arm>& arms,
-                                        const std::string& column, const std::string& title, const Axis& y);
+                                        const std::string& column, const std::string& title, const Axis& y,
+                                        const std::vector<ReferenceSeries>& references = {});
 
 }  // namespace grainbridge::workflows::report

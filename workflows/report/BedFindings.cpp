@@ -115,7 +115,7 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
   if (anyTable) findings.columns.emplace_back("table coverage (cell-steps / solids)");
   const bool anyBinary = std::any_of(runs.begin(), runs.end(),
                                      [](const BedRun& r) { return std::isfinite(r.value("segregation_percentage")); });
-  if (anyBinary) findings.columns.emplace_back("segregation percentage s_p");
+  if (anyBinary) findings.columns.emplace_back("segregation percentage s_p [%]");
   const bool anySamples = std::any_of(runs.begin(), runs.end(), [](const BedRun& r) { return r.closureSamples > 0; });
   if (anySamples) findings.columns.emplace_back("height spread from the DEM closures [m]");
   std::ostringstream headline;
@@ -131,7 +131,7 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
     }
     if (std::isfinite(run.value("segregation_percentage"))) {
       headline << "; segregation percentage " << core::humanNumber(run.value("segregation_percentage"), 3) << " ± "
-               << core::humanNumber(run.value("segregation_percentage_err"), 2)
+               << core::humanNumber(run.value("segregation_percentage_err"), 2) << " %"
                << closurePart(run, "segregation_percentage", 2);
     }
     headline << " (" << run.closureSamples << " closure samples). ";
@@ -195,7 +195,8 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
     }
     if (std::isfinite(coordination)) headline << ", coordination " << core::humanNumber(coordination, 3);
     if (run.closure == "table") headline << ", the table covering " << coverage << " of the cell-steps / solids";
-    if (std::isfinite(sp)) headline << ", segregation percentage " << withError(sp, run.value("segregation_percentage_err"), 3);
+    if (std::isfinite(sp))
+      headline << ", segregation percentage " << withError(sp, run.value("segregation_percentage_err"), 3) << " %";
     headline << ". ";
   }
   headline << "Time-averaged over each run's averaging window, errors by block averaging; deviation = (run − "

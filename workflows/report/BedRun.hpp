@@ -21,7 +21,11 @@ struct ReferenceHeight {
 
 // One bed run as the figures read it.
 struct BedRun {
-  std::string label;    // the legend entry: "bed (gas_inflow 1.92 m/s)"
+  std::string label;  // the table's entry: "bed (gas_inflow 1.92 m/s, rotation_model true)"
+  // What tells it from the other runs compared, the legend's entry: "rotation_model true" (the
+  // swept values that differ between the runs; the stage's name where the stages differ); and
+  // the same a line per part, an axis category's label. The label when nothing differs.
+  std::string shortLabel, category;
   std::string closure;  // the colour key: a kinetic model, or "table"
   double meanHeight = 0.0, meanHeightError = 0.0;
   std::vector<ReferenceHeight> references;                  // the values matched to this run
@@ -40,6 +44,16 @@ struct BedRun {
   std::map<std::string, ClosureSpread> closureSpreads;
   int closureSamples = 0;
   [[nodiscard]] double value(const std::string& column) const;
+};
+
+// A measured or published curve drawn beside the runs (bed_compare's reference_series): the
+// experiment's 1 s means of s_p, say, read from a CSV of time and value.
+struct ReferenceSeries {
+  std::string label;     // the legend's words: "Goldschmidt et al. (2003), 1 s means"
+  std::string citation;  // where the numbers come from, printed beside the label
+  std::string kind;      // "experiment" | "reference": the colour key
+  std::string output;    // the series column it is of: "segregation_percentage" | "mean_height"
+  std::vector<double> time, value;
 };
 
 inline double BedRun::value(const std::string& column) const {

@@ -39,7 +39,7 @@ const char* const kStyle =
     "th{background:#eef1f4;font-weight:600}td.l,th.l{text-align:left}"
     ".si{color:#777;font-size:.9em}.common{color:#444;font-size:13px}"
     ".figures{display:grid;grid-template-columns:repeat(3,minmax(0,1fr));gap:.4em;margin:.4em 0}"
-    ".figures figure{margin:0}.figures img{width:100%;height:auto;display:block}"
+    ".figures figure{margin:0}.figures figure.wide{grid-column:1/-1}.figures img{width:100%;height:auto;display:block}"
     "footer{margin-top:2em;border-top:1px solid #ccc;padding-top:.4em;color:#666;font-size:12px}";
 
 // A column heading: a closure form's symbol (p*, τ*), else the summary key as written.
@@ -171,9 +171,9 @@ std::string outputsCell(const contract::UpstreamInstance& inst, const fs::path& 
 }
 
 // A figure links to its PNG (for slides); it carries its own title, so the caption is alt text.
-std::string figureHtml(const std::string& svg, const std::string& png, const std::string& caption) {
-  std::string out = "<figure><a href=\"" + esc(png.empty() ? svg : png) + "\"><img src=\"" + esc(svg) + "\" alt=\"" +
-                    esc(caption) + "\"></a>";
+std::string figureHtml(const std::string& svg, const std::string& png, const std::string& caption, bool wide = false) {
+  std::string out = std::string(wide ? "<figure class=\"wide\">" : "<figure>") + "<a href=\"" +
+                    esc(png.empty() ? svg : png) + "\"><img src=\"" + esc(svg) + "\" alt=\"" + esc(caption) + "\"></a>";
   return out + "</figure>\n";
 }
 
@@ -202,7 +202,7 @@ void writeFindings(std::ostringstream& html, const Findings& f, const fs::path& 
     for (std::size_t i = from; i < to; ++i) {
       const auto& fig = f.figures[i];
       html << figureHtml((link / fig.svg).generic_string(), fig.png.empty() ? "" : (link / fig.png).generic_string(),
-                         fig.caption);
+                         fig.caption, fig.wide);
     }
     html << "</div>\n";
   };

@@ -39,13 +39,15 @@ std::string gnuplotLines(std::string_view s) {
   return out + "\"";
 }
 
-std::string axisTitle(const Axis& axis) { return axis.label + " [" + axis.unit + "]"; }
+std::string axisTitle(const Axis& axis) {
+  return axis.categories.empty() ? axis.label + " [" + axis.unit + "]" : axis.label;
+}
 
 // Filled circle, square, triangle, diamond, inverted triangle, pentagon (gnuplot pt codes).
 constexpr std::array<int, 6> kPointTypes = {7, 5, 9, 13, 11, 15};
 
 std::string plotClause(const Series& s, std::size_t block) {
-  const std::string colour = "lc rgb '" + seriesColour(s.model) + "'";
+  const std::string colour = "lc rgb '" + (s.colour.empty() ? seriesColour(s.model) : s.colour) + "'";
   const std::string data = "$s" + std::to_string(block);
   const int variant = s.variant < 0 ? 0 : s.variant;
   switch (s.style) {
@@ -66,9 +68,10 @@ std::string plotClause(const Series& s, std::size_t block) {
 }
 
 void checkFigure(const Figure& f, const std::string& name) {
-  if (f.x.unit.empty() || f.y.unit.empty()) {
+  if ((f.x.unit.empty() && f.x.categories.empty()) || f.y.unit.empty()) {
     throw Error("figure " + name + ": every axis needs a unit (\"–\" when dimensionless)");
   }
+  if (!f.y.categories.empty()) throw Error("figure " + name + ": only the x axis can hold categories");
   for (const auto& s : f.series) {
     const bool errors = s.style == Series::Style::PointsWithErrors || s.style == Series::Style::Band;
     if (s.y.size() != s.x.size() || (errors && s.yError.size() != s.x.size())) {
@@ -117,6 +120,13 @@ std::string seriesColour(std::string_view model) {
   return others[h % others.size()];
 }
 
+std::string runColour(std::size_t index) {
+  // Okabe–Ito without its reddish purple and grey (experiment, reference) and its yellow (too
+  // pale on white): blue, vermillion, bluish green, orange, sky blue, black.
+  static constexpr std::array<const char*, 6> runs = {"#0072B2", "#D55E00", "#009E73", "#E69F00", "#56B4E9", "#000000"};
+  return runs[index % runs.size()];
+}
+
 DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::string& stem) {
   checkFigure(figure, stem);
   std::vector<const Series*> plotted;
@@ -135,8 +145,20 @@ DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::str
   const std::size_t keyColumns = (plotted.size() + keyRows - 1) / keyRows;
   std::size_t longestLabel = 0;
   for (const Series* s : plotted) longestLabel = std::max(longestLabel, s->label.size());
-  const std::size_t width =
-      std::max<std::size_t>({540, keyColumns * (10 * longestLabel + 80), 7 * figure.title.size() + 80});
+  // A wide figure (several runs against time) is drawn for a page's full width, so that scaled
+  // to it its text stays at the page's size.
+  // Categories (runs by name) take about 8 px per character of their longest line, and a gap.
+  std::size_t longestCategoryLine = 0;
+  for (const auto& category : figure.x.categories) {
+    std::size_t line = 0;
+    for (char c : category) {
+      line = c == '\n' ? 0 : line + 1;
+      longestCategoryLine = std::max(longestCategoryLine, line);
+    }
+  }
+  const std::size_t width = std::max<std::size_t>({figure.wide ? std::size_t{1200} : std::size_t{540},
+                                                   keyColumns * (10 * longestLabel + 80), 7 * figure.title.size() + 80,
+                                                   figure.x.categories.size() * (8 * longestCategoryLine + 24) + 120});
   const std::size_t height = 430 + 20 * (keyRows > 4 ? keyRows - 4 : 0);
 
   std::ostringstream script;
@@ -162,6 +184,14 @@ DrawnFigure drawFigure(const Figure& figure, const fs::path& dir, const std::str
   script << "set offsets graph " << (figure.x.logarithmic ? "0" : "0.02") << ", graph "
          << (figure.x.logarithmic ? "0" : "0.02") << ", graph " << (figure.y.logarithmic ? "0" : "0.05") << ", graph "
          << (figure.y.logarithmic ? "0" : "0.05") << "\n";
+  if (!figure.x.categories.empty()) {
+    // Runs by name: category k at x = k + 1, half a category of room at either end.
+    script << "set xrange [0.5:" << core::roundTripText(static_cast<double>(figure.x.categories.size()) + 0.5)
+           << "]\nset offsets 0, 0, graph 0.05, graph 0.05\nset xtics (";
+    for (std::size_t k = 0; k < figure.x.categories.size(); ++k)
+      script << (k ? ", " : "") << gnuplotLines(figure.x.categories[k]) << ' ' << k + 1;
+    script << ")\n";
+  }
   if (figure.x.logarithmic) script << "set logscale x\n";
   if (figure.y.logarithmic) script << "set logscale y\n";
   std::string plot = "plot ";

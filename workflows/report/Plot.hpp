@@ -9,7 +9,9 @@
 // - a unit on both axes (`Axis::unit`; "–" for a dimensionless quantity), required;
 // - the legend below the plot, never on the data;
 // - one colour per model across all figures (`seriesColour`), the series' `variant` (a
-//   restitution, a friction) picking the dash or point shape within that colour;
+//   restitution, a friction) picking the dash or point shape within that colour; a comparison of
+//   runs gives each run its own colour instead (`Series::colour`, `runColour`);
+// - runs along x by name (`Axis::categories`), never as row numbers;
 // - no timestamp, so equal data give byte-equal files.
 #include <filesystem>
 #include <string>
@@ -20,8 +22,11 @@ namespace grainbridge::workflows::report {
 
 struct Axis {
   std::string label;  // "solid fraction", "p*"
-  std::string unit;   // "Pa", "m/s"; "–" when dimensionless
+  std::string unit;   // "Pa", "m/s"; "–" when dimensionless; none on a categorical axis
   bool logarithmic = false;
+  // A categorical axis (x only): category k (from 0) at x = k + 1, labelled by its text ('\n'
+  // breaks it into lines), the axis titled by `label` alone. Runs side by side are categories.
+  std::vector<std::string> categories{};
 };
 
 struct Series {
@@ -31,12 +36,14 @@ struct Series {
   enum class Style { Points, PointsWithErrors, Line, Band } style = Style::Points;
   int variant = 0;                   // dash type (lines) or point shape (points) within the model's colour
   std::vector<double> x, y, yError;  // yError only for PointsWithErrors and Band
+  std::string colour{};              // "#rrggbb" instead of the model's: a run's own (runColour)
 };
 
 struct Figure {
   std::string title;
   Axis x, y;
   std::vector<Series> series;
+  bool wide = false;  // drawn for a page's full width: several runs against time
 };
 
 struct DrawnFigure {
@@ -65,5 +72,10 @@ DrawnFigure drawFieldMaps(const std::vector<FieldMap>& maps, const Axis& x, cons
 // The colour (#rrggbb) of a model in every figure: fixed for the models the reports know,
 // a stable choice from the Okabe–Ito palette for any other name.
 std::string seriesColour(std::string_view model);
+
+// The colour of the `index`-th run (from 0) of a comparison, each run its own: the Okabe–Ito
+// colours that the reference kinds do not take (experiment, reference), in a fixed order, cycling
+// after six.
+std::string runColour(std::size_t index);
 
 }  // namespace grainbridge::workflows::report

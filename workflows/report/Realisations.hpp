@@ -13,13 +13,9 @@
 #include <string>
 #include <vector>
 
-namespace grainbridge::workflows::report {
+#include "workflows/report/SweepLabel.hpp"
 
-// A run as the grouping reads it: its stage and its sweep point as the config wrote it.
-struct SweptRun {
-  std::string stage;
-  nlohmann::json written;
-};
+namespace grainbridge::workflows::report {
 
 struct Arm {
   std::string label;                      // its runs' label without the realisation: "bed (rotation_model true)"

@@ -8,6 +8,7 @@
 #include "core/io/FieldFrameReader.hpp"
 #include "core/text/NumberText.hpp"
 #include "engines/fluid/FrameMaps.hpp"
+#include "workflows/contract/NumericCsv.hpp"
 #include "workflows/report/BedArms.hpp"
 #include "workflows/report/BedFigures.hpp"
 #include "workflows/report/BedFindings.hpp"
@@ -42,6 +43,36 @@ std::shared_ptr<const ParamSchema> referenceSchema() {
           "the runs it applies to, as \"<swept parameter>=<value as written in the sweep>\" or "
           "\"stage=<name>\", all of them to hold; none: every run"));
   return s;
+}
+
+std::shared_ptr<const ParamSchema> statementSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::string("text").required().doc(
+             "what the reference says the runs should show, in its words (\"rotation lowers s_p at 1.30 m/s\")"))
+      .add(ParamSpec::string("citation").required().doc("where it says so (\"Sun (2007), lines 1285-1294\")"));
+  return s;
+}
+
+// The series a reference curve can be of, and the series column each is.
+const std::vector<std::string> kReferenceOutputs = {"segregation_percentage", "mean_height"};
+
+// A reference series' CSV: its time and value columns, or an Error naming the file and what is
+// wrong with it.
+std::pair<std::vector<double>, std::vector<double>> readReferenceSeries(const std::string& path) {
+  const auto columns = contract::readNumericCsv(path);
+  for (const char* column : {"time", "value"}) {
+    if (!columns.contains(column))
+      throw Error("reference series '" + path + "' has no column \"" + column + "\" (its header: time,value)");
+  }
+  const auto& time = columns.at("time");
+  const auto& value = columns.at("value");
+  if (time.empty()) throw Error("reference series '" + path + "' has no rows");
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (!std::isfinite(time[k]) || !std::isfinite(value[k]))
+      throw Error("reference series '" + path + "': row " + std::to_string(k + 2) +
+                  " holds a value that is not finite");
+  }
+  return {time, value};
 }
 
 // "k=v" split at the first '='; nullopt when there is none or either side is empty.
@@ -113,6 +144,26 @@ BedCompareStage::BedCompareStage() {
                .doc("the swept parameter whose values are independent realisations of one setting (the seed of the "
                     "initial perturbation): runs of a stage that differ only in it form an arm, given as mean, "
                     "standard deviation and standard error over its runs (arms.csv)"))
+      .add(ParamSpec::inputFile("reference_series")
+               .doc("a measured or published curve drawn beside the runs: a CSV with a header line time,value (s, "
+                    "and the output's unit: % for s_p, m for a height), e.g. the experiment's 1 s means of s_p"))
+      .add(ParamSpec::string("reference_series_of")
+               .defaultValue("segregation_percentage")
+               .options(kReferenceOutputs)
+               .doc("the output the reference series is of, drawn in that output's figures"))
+      .add(ParamSpec::string("reference_series_label")
+               .defaultValue("experiment")
+               .doc("the reference series' legend entry (\"Goldschmidt et al. (2003), 1 s means\")"))
+      .add(ParamSpec::string("reference_series_citation")
+               .defaultValue("")
+               .doc("where the reference series' numbers come from, printed beside its label; required with it"))
+      .add(ParamSpec::string("reference_series_kind")
+               .defaultValue("experiment")
+               .options({"reference", "experiment"})
+               .doc("a measurement or a model's published values (the figures' colour)"))
+      .add(ParamSpec::objectList("statements", statementSchema())
+               .doc("what the reference says the runs should show, each with its source: printed in the findings "
+                    "beside the runs' numbers"))
       .add(ParamSpec::string("title")
                .defaultValue("Multi-fluid beds side by side")
                .doesNotAffectResults()
@@ -120,6 +171,18 @@ BedCompareStage::BedCompareStage() {
 }
 
 void BedCompareStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
+  if (p.contains("reference_series")) {
+    if (p.at("reference_series_citation").get<std::string>().empty()) {
+      d.add(
+          ptr + "/reference_series_citation",
+          "a reference series needs its source: give reference_series_citation (\"Goldschmidt et al. 2003, Fig. 9\")");
+    }
+    try {
+      (void)readReferenceSeries(p.at("reference_series").at("path").get<std::string>());
+    } catch (const Error& e) {
+      d.add(ptr + "/reference_series", e.what());
+    }
+  }
   const json refs = p.value("references", json::array());
   for (std::size_t r = 0; r < refs.size(); ++r) {
     const json match = refs[r].value("match", json::array());
@@ -155,6 +218,14 @@ void BedCompareStage::checkAgainstUpstream(const json& p, const std::string& ptr
     d.add(ptr + (tap.empty() || up.records("dp_" + tap) ? "" : "/tap"),
           from + " does not produce " + what + ": bed_compare takes bed runs that do (mfm with solids, tfdem)");
     return;
+  }
+  // A reference series of s_p beside runs that record none would be drawn alone.
+  if (p.contains("reference_series") && p.at("reference_series_of") == "segregation_percentage" &&
+      std::none_of(upstream.begin(), upstream.end(),
+                   [](const UpstreamPlan& up) { return up.writesSeriesColumn("segregation_percentage"); })) {
+    d.add(ptr + "/reference_series_of",
+          "no upstream run records segregation_percentage (a binary bed with `segregation`): the reference series "
+          "would have no runs beside it");
   }
   // A realisation parameter named but swept by no upstream stage is a typo: every run would be an
   // arm of one. The default may select nothing (a comparison of single runs).
@@ -257,6 +328,11 @@ void BedCompareStage::run(StageContext& ctx) const {
     beds.push_back(std::move(bed));
   }
   std::sort(beds.begin(), beds.end(), [](const Bed& a, const Bed& b) { return a.label < b.label; });
+  // What tells each run from the others: the swept values that differ between them (and the
+  // stage where stages differ), for the legends and the axes that name runs.
+  std::vector<report::SweptRun> swept;
+  for (const auto& bed : beds) swept.push_back({bed.instance->stage(), bed.written});
+  const std::vector<std::vector<std::string>> distinct = report::distinguishingParts(swept);
   for (std::size_t r = 0; r < references.size(); ++r) {
     if (std::none_of(beds.begin(), beds.end(), [&](const Bed& b) { return b.matches(references[r]); })) {
       throw Error("bed_compare: /references/" + std::to_string(r) + " (" + references[r].label +
@@ -282,6 +358,10 @@ void BedCompareStage::run(StageContext& ctx) const {
     const Bed& bed = beds[b];
     report::BedRun run;
     run.label = bed.label;
+    for (const auto& part : distinct[b]) {
+      run.shortLabel += (run.shortLabel.empty() ? "" : ", ") + part;
+      run.category += (run.category.empty() ? "" : "\n") + part;
+    }
     run.closure = bed.closure;
     run.meanHeight = bed.value("mean_height");
     run.meanHeightError = bed.value("mean_height_err");
@@ -342,19 +422,35 @@ void BedCompareStage::run(StageContext& ctx) const {
   // Realisations (issue 55): the runs that differ only in `realisations` are one setting, an arm,
   // and the spread over them is what tells two settings apart; the findings lead with it.
   const std::string realisation = p.at("realisations");
-  std::vector<report::SweptRun> swept;
-  for (const auto& bed : beds) swept.push_back({bed.instance->stage(), bed.written});
   const std::vector<report::Arm> arms = report::groupArms(swept, realisation);
   const auto bedArms = report::bedArms(runs, arms);
   core::writeFileAtomically(ctx.outputDir() / "arms.csv", report::armsCsv(bedArms));
   ctx.addArtifact("arms.csv", "csv");
-  findings.headline = report::armsHeadline(bedArms, realisation) + findings.headline;
+  // What the reference says and measured, beside the runs' numbers: its statements, then its curve.
+  std::string reference;
+  for (const auto& statement : p.value("statements", json::array())) {
+    reference += "The reference: \u201c" + statement.at("text").get<std::string>() + "\u201d (" +
+                 statement.at("citation").get<std::string>() + "). ";
+  }
+  std::vector<report::ReferenceSeries> referenceSeries;
+  if (p.contains("reference_series")) {
+    const std::string path = p.at("reference_series").at("path");
+    auto [time, value] = readReferenceSeries(path);
+    referenceSeries.push_back({p.at("reference_series_label"), p.at("reference_series_citation"),
+                               p.at("reference_series_kind"), p.at("reference_series_of"), std::move(time),
+                               std::move(value)});
+    reference += "Beside the runs: " + referenceSeries.back().label + " (" + referenceSeries.back().citation + "), " +
+                 std::to_string(referenceSeries.back().time.size()) + " points of " + referenceSeries.back().output +
+                 " from " + std::filesystem::path(path).filename().string() + ". ";
+  }
+  findings.headline = report::armsHeadline(bedArms, realisation) + reference + findings.headline;
 
-  // Figures: the maps side by side, then the height and the pressure drop against time.
-  auto addFigure = [&](const report::DrawnFigure& drawn, const std::string& caption) {
+  // Figures: first, in a page's columns, the maps side by side, the averaged heights by run and a
+  // binary bed's profiles; then, each at a page's full width, what several runs draw against time.
+  auto addFigure = [&](const report::DrawnFigure& drawn, const std::string& caption, bool wide) {
     ctx.addArtifact(drawn.svg, "svg");
     ctx.addArtifact(drawn.png, "png");
-    findings.figures.push_back({drawn.svg, drawn.png, caption});
+    findings.figures.push_back({drawn.svg, drawn.png, caption, wide});
   };
   std::vector<report::FieldMap> maps;
   double highest = 0.0;
@@ -364,37 +460,43 @@ void BedCompareStage::run(StageContext& ctx) const {
   }
   addFigure(report::drawFieldMaps(maps, {"x", "m"}, {"height", "m"}, {"time-averaged solid fraction", "–"}, 0.0,
                                   std::max(0.6, highest), ctx.outputDir(), "solid_fraction_maps"),
-            "Time-averaged solid fraction (all solids phases), one panel per run");
+            "Time-averaged solid fraction (all solids phases), one panel per run", false);
 
   addFigure(
       report::drawFigure(report::averagedHeightFigure(runs), ctx.outputDir(), "mean_height_averaged"),
       std::string("Time-averaged mean particle height per run (block-averaging errors) beside the reference values") +
-          (samples.empty() ? "" : "; offset to its right, each sampled run's spread over its closure samples"));
-  const auto overTime = report::timeFigures(runs, tap);
-  addFigure(report::drawFigure(overTime.height, ctx.outputDir(), "mean_height"), "Mean particle height against time");
-  addFigure(report::drawFigure(overTime.pressureDrop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time");
+          (samples.empty() ? "" : "; offset to its right, each sampled run's spread over its closure samples"),
+      false);
+  const auto binary = report::segregationFigures(runs, referenceSeries);
+  if (!binary.profiles.series.empty()) {
+    addFigure(report::drawFigure(binary.profiles, ctx.outputDir(), "profiles"),
+              "Each phase's time-averaged solid fraction over the width against height", false);
+  }
+  findings.firstScreen = static_cast<int>(findings.figures.size());
+  const auto realised =
+      report::realisationsFigure(runs, arms, "segregation_percentage", "Segregation percentage s_p over realisations",
+                                 report::kSegregationAxis, referenceSeries);
+  if (!realised.series.empty()) {
+    addFigure(report::drawFigure(realised, ctx.outputDir(), "segregation_realisations"),
+              "Segregation percentage against time: per arm the mean over its realisations (line) ± one standard "
+              "error across them (band)",
+              true);
+  }
+  if (!binary.segregation.series.empty()) {
+    addFigure(report::drawFigure(binary.segregation, ctx.outputDir(), "segregation_percentage"),
+              "Segregation percentage against time: the samples (lines) and their 1 s means (points)", true);
+  }
+  const auto overTime = report::timeFigures(runs, tap, referenceSeries);
+  addFigure(report::drawFigure(overTime.height, ctx.outputDir(), "mean_height"), "Mean particle height against time",
+            true);
+  addFigure(report::drawFigure(overTime.pressureDrop, ctx.outputDir(), "pressure_drop"), "Pressure drop against time",
+            true);
   const auto contacts = report::contactFigure(runs);
   if (!contacts.series.empty()) {
     addFigure(report::drawFigure(contacts, ctx.outputDir(), "contact_numbers"),
               "Coordination number and multi-contact ratio against time, of the runs that record them (particle "
-              "runs)");
-  }
-  const auto binary = report::segregationFigures(runs);
-  if (!binary.segregation.series.empty()) {
-    addFigure(report::drawFigure(binary.segregation, ctx.outputDir(), "segregation_percentage"),
-              "Segregation percentage against time: the samples (lines) and their 1 s means (points)");
-  }
-  const auto realised =
-      report::realisationsFigure(runs, arms, "segregation_percentage", "Segregation percentage over realisations",
-                                 {"segregation percentage s_p", "–"});
-  if (!realised.series.empty()) {
-    addFigure(report::drawFigure(realised, ctx.outputDir(), "segregation_realisations"),
-              "Segregation percentage against time: per arm the mean over its realisations (line) ± one standard "
-              "error across them (band)");
-  }
-  if (!binary.profiles.series.empty()) {
-    addFigure(report::drawFigure(binary.profiles, ctx.outputDir(), "profiles"),
-              "Each phase's time-averaged solid fraction over the width against height");
+              "runs)",
+              true);
   }
   ctx.setFindings(findings);
 

@@ -26,7 +26,9 @@ class BedCompareStage final : public StageType {
   //    with it and the heights figure draws it beside the block-averaging error.
   // 7: statistics over realisations (issue 55): arms.csv, the arms' means and standard errors
   //    and their differences in the findings, the figure segregation_realisations; summary arms.
-  [[nodiscard]] int implVersion() const override { return 7; }
+  // 8: a colour per run, runs by name along x, s_p in percent, figures against time at a page's
+  //    full width, the reference series and statements beside the runs (issue 62).
+  [[nodiscard]] int implVersion() const override { return 8; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}, {"arms", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "bed runs (mfm, tfdem) side by side: heights and pressure drops against references, solid-fraction maps";

@@ -40,7 +40,8 @@ class MfmStage final : public StageType {
   //     without it could not feed one).
   // 13: series.csv carries plastic_solids_share and each phase's theta_<phase>; the packing
   //     limit by composition and the per-phase mixture kinetic theory (defaults unchanged).
-  [[nodiscard]] int implVersion() const override { return 13; }
+  // 14: segregation_percentage in percent (Eq. 5.23 times 100), as its name says (issue 62).
+  [[nodiscard]] int implVersion() const override { return 14; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

@@ -11,7 +11,8 @@ class ReportStage final : public StageType {
   ReportStage();
   [[nodiscard]] std::string name() const override { return "report"; }
   // 2: findings first, compact per-stage tables, stage CSVs, plots through report/Plot (issue 16)
-  [[nodiscard]] int implVersion() const override { return 2; }
+  // 3: a findings figure marked wide takes the page's full width (issue 62)
+  [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::string summary() const override {
     return "HTML + CSV + SVG report over every instance of the upstream stages";
   }

@@ -74,9 +74,9 @@ namespace {
 
 // Eqs. 5.23-5.25 on beds whose heights are known by hand: the mixed start of a binary bed (both
 // phases everywhere in the bed) gives s_p = 0; the same inventory fully separated, the large
-// particles below the small with their interface on a cell face, gives s_p = 1, at equal and at
-// unequal shares x_small.
-TEST(BedMeasures, SegregationPercentageIsZeroMixedAndOneSeparated) {
+// particles below the small with their interface on a cell face, gives s_p = 100 %, at equal and
+// at unequal shares x_small.
+TEST(BedMeasures, SegregationPercentageIsZeroMixedAndOneHundredSeparated) {
   const core::data::GridGeometry geometry = [] {
     core::data::GridGeometry g;
     g.spacing = Vec3(0.01, 0.01, 0.015);
@@ -100,9 +100,8 @@ TEST(BedMeasures, SegregationPercentageIsZeroMixedAndOneSeparated) {
     EXPECT_NEAR(segregationPercentage(meanParticleHeight(mixed, up, 1), meanParticleHeight(mixed, up, 2), x), 0.0,
                 1e-12)
         << "x_small " << x;
-    EXPECT_NEAR(
-        segregationPercentage(meanParticleHeight(separated, up, 1), meanParticleHeight(separated, up, 2), x), 1.0,
-        1e-12)
+    EXPECT_NEAR(segregationPercentage(meanParticleHeight(separated, up, 1), meanParticleHeight(separated, up, 2), x),
+                100.0, 1e-10)
         << "x_small " << x;
   }
   EXPECT_THROW((void)segregationPercentage(0.1, 0.1, 1.0), Error);
