@@ -273,6 +273,9 @@ TEST(BedCompareContract, GivesEachRunItsColourAndNamesRunsAlongXByWhatTellsThemA
     EXPECT_EQ(figure.value("wide", false), overTime) << svg;
   }
   EXPECT_NE(std::string(findings.at("columns").back()).find("[%]"), std::string::npos);
+  // The table names the runs as the legends do; beds.csv keeps the full label.
+  EXPECT_EQ(findings.at("rows")[0][0], "height 0.02");
+  EXPECT_NE(readText(beds / "beds.csv").find("bed (height 0.02)"), std::string::npos);
 }
 
 // A measured curve and the reference's words beside the runs: the curve drawn in the figures of

@@ -139,7 +139,10 @@ Findings bedFindings(const std::vector<BedRun>& runs, const std::vector<std::str
   for (const auto& run : runs) {
     const double h = run.meanHeight, hErr = run.meanHeightError;
     const double frequency = run.value("dp_frequency");
-    std::vector<std::string> row = {run.label, run.closure, withError(h, hErr)};
+    // The table names a run as the legends do (what differs between the runs): a table of long
+    // sweep labels ran off a 1280 px page; beds.csv keeps the full label.
+    std::vector<std::string> row = {run.shortLabel.empty() ? run.label : run.shortLabel, run.closure,
+                                    withError(h, hErr)};
     std::ostringstream compared;
     for (const auto& l : referenceLabels) {
       std::string cell = "–";

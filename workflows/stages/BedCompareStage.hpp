@@ -28,7 +28,8 @@ class BedCompareStage final : public StageType {
   //    and their differences in the findings, the figure segregation_realisations; summary arms.
   // 8: a colour per run, runs by name along x, s_p in percent, figures against time at a page's
   //    full width, the reference series and statements beside the runs (issue 62).
-  [[nodiscard]] int implVersion() const override { return 8; }
+  // 9: the findings table names a run as the legends do (what differs between the runs).
+  [[nodiscard]] int implVersion() const override { return 9; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"beds", "–"}, {"arms", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "bed runs (mfm, tfdem) side by side: heights and pressure drops against references, solid-fraction maps";
