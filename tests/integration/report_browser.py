@@ -32,8 +32,8 @@ With --bed-compare it also checks a comparison of bed runs (a bed_compare stage,
      distinct line colours (grid, frame and black text aside) as the comparison has runs;
   i. runs by name: the time-averaged height figure names every run along x (its legend's names)
      and has no numeric "run (row of the table)" axis;
-  j. s_p named for what it is: the findings table heads it "segregation percentage s_p [%]" and
-     its figure's axis reads the same.
+  j. s_p named for what it is (a binary bed's page): the findings table heads it "segregation
+     percentage s_p [%]", not a bare fraction's name, and its figure's axis reads the same.
 
 Without --report it runs --config (default configs/quickstart.json) into --work (emptied first):
 `grainbridge run` then `grainbridge report`, whose first .html line on stdout is the report's
@@ -444,7 +444,9 @@ def check_bed_compare(driver, page):
             svgs[path.name] = path.read_text(encoding="utf-8")
     if runs < 2:
         failures.append(f"h. the findings table shows {runs} run(s); a comparison needs two")
-    for name in ("segregation_percentage.svg", "mean_height.svg"):
+    label = "segregation percentage s_p [%]"
+    binary = "segregation_percentage.svg" in svgs  # a binary bed's page; a mono bed has no s_p
+    for name in ("segregation_percentage.svg", "mean_height.svg") if binary else ("mean_height.svg",):
         if name not in svgs:
             failures.append(f"h. the findings show no {name}")
             continue
@@ -467,10 +469,9 @@ def check_bed_compare(driver, page):
         if unnamed:
             failures.append(f"i. mean_height_averaged.svg names no part of {', '.join(unnamed)} along x "
                             f"(its labels: {sorted(names)})")
-    label = "segregation percentage s_p [%]"
-    if label not in state["heads"]:
+    if binary and label not in state["heads"]:
         failures.append(f"j. the findings table has no column \"{label}\" (its heads: {state['heads']})")
-    if label not in svgs.get("segregation_percentage.svg", ""):
+    if binary and label not in svgs.get("segregation_percentage.svg", ""):
         failures.append(f"j. segregation_percentage.svg's axis does not read \"{label}\"")
     return runs, failures
 
