@@ -43,6 +43,7 @@ PNG; --full-page: the whole page), pass or fail.
 import argparse
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -422,7 +423,6 @@ NON_DATA_STROKES = {"rgb(221,221,221)", "rgb(68,68,68)", "rgb(0,0,0)", "rgb(255,
 
 def stroke_colours(svg_text):
     """The line colours of a gnuplot SVG, without spaces: {"rgb(0,114,178)", ...}."""
-    import re
     return {re.sub(r"\s+", "", c) for c in re.findall(r"stroke='(rgb\([^)]*\))'", svg_text)}
 
 

@@ -55,15 +55,10 @@ CommonTimes commonTimes(const std::vector<BedRun>& runs, const Arm& arm) {
   return common;
 }
 
-}  // namespace
-
-namespace {
-
 // A series drawn in run `b`'s own colour.
-Series runSeries(const BedRun& run, std::size_t b, std::string label, Series::Style style, int variant) {
-  Series s{std::move(label), run.closure, style, variant, {}, {}, {}};
-  s.colour = runColour(b);
-  return s;
+Series runSeries(const BedRun& run, std::size_t b, std::string label, Series::Style style, int variant,
+                 std::vector<double> x = {}, std::vector<double> y = {}) {
+  return {std::move(label), run.closure, style, variant, std::move(x), std::move(y), {}, runColour(b)};
 }
 
 // The reference curves of one output, as points in their kind's colour, each labelled with its
@@ -145,27 +140,21 @@ TimeFigures timeFigures(const std::vector<BedRun>& runs, const std::string& tap,
     for (std::size_t m = 0; m < run.phases.size(); ++m) {
       const auto h = run.series.find("mean_height_" + run.phases[m]);
       if (h == run.series.end()) continue;
-      Series line = runSeries(run, b, run.shortLabel + (run.phases.size() > 1 ? ", " + run.phases[m] : ""),
-                              Series::Style::Line, variant++);
-      line.x = time->second;
-      line.y = h->second;
-      out.height.series.push_back(std::move(line));
+      out.height.series.push_back(runSeries(run, b,
+                                            run.shortLabel + (run.phases.size() > 1 ? ", " + run.phases[m] : ""),
+                                            Series::Style::Line, variant++, time->second, h->second));
     }
     // A particle run: its particles' arithmetic mean height, and Eq. 5.22 of its deposited fraction.
     for (const auto& [column, what] : {std::pair{"mean_height", ", particles"},
                                        std::pair{"mean_height_fields", ", Eq. 5.22 of the deposited fraction"}}) {
       const auto h = run.series.find(column);
       if (h == run.series.end()) continue;
-      Series line = runSeries(run, b, run.shortLabel + what, Series::Style::Line, variant++);
-      line.x = time->second;
-      line.y = h->second;
-      out.height.series.push_back(std::move(line));
+      out.height.series.push_back(
+          runSeries(run, b, run.shortLabel + what, Series::Style::Line, variant++, time->second, h->second));
     }
     if (const auto dp = run.series.find(run.pressureDrop); dp != run.series.end()) {
-      Series line = runSeries(run, b, run.shortLabel, Series::Style::Line, 0);
-      line.x = time->second;
-      line.y = dp->second;
-      out.pressureDrop.series.push_back(std::move(line));
+      out.pressureDrop.series.push_back(
+          runSeries(run, b, run.shortLabel, Series::Style::Line, 0, time->second, dp->second));
     }
   }
   addReferenceSeries(out.height, references, "mean_height");
@@ -180,14 +169,12 @@ Figure contactFigure(const std::vector<BedRun>& runs) {
     const auto time = run.series.find("time");
     if (time == run.series.end()) continue;
     int variant = 0;
-    for (const auto& [column, what] : {std::pair{"coordination", ", coordination"},
-                                       std::pair{"multi_contact_ratio", ", multi-contact ratio"}}) {
+    for (const auto& [column, what] :
+         {std::pair{"coordination", ", coordination"}, std::pair{"multi_contact_ratio", ", multi-contact ratio"}}) {
       const auto v = run.series.find(column);
       if (v == run.series.end()) continue;
-      Series line = runSeries(run, b, run.shortLabel + what, Series::Style::Line, variant++);
-      line.x = time->second;
-      line.y = v->second;
-      figure.series.push_back(std::move(line));
+      figure.series.push_back(
+          runSeries(run, b, run.shortLabel + what, Series::Style::Line, variant++, time->second, v->second));
     }
   }
   return figure;
@@ -205,10 +192,8 @@ SegregationFigures segregationFigures(const std::vector<BedRun>& runs, const std
     const BedRun& run = runs[b];
     const auto sp = run.series.find("segregation_percentage");
     if (sp == run.series.end()) continue;
-    Series line = runSeries(run, b, run.shortLabel, Series::Style::Line, 0);
-    line.x = run.series.at("time");
-    line.y = sp->second;
-    out.segregation.series.push_back(std::move(line));
+    out.segregation.series.push_back(
+        runSeries(run, b, run.shortLabel, Series::Style::Line, 0, run.series.at("time"), sp->second));
     for (const auto& file : run.segregationBlocks) {
       const auto blocks = readNumericCsv(file);
       Series means = runSeries(run, b, run.shortLabel + ", 1 s means", Series::Style::Points, 1);
@@ -222,10 +207,8 @@ SegregationFigures segregationFigures(const std::vector<BedRun>& runs, const std
       int phaseVariant = 0;
       for (const auto& [name, values] : columns) {
         if (name.rfind("ep_s_", 0) != 0) continue;
-        Series profile = runSeries(run, b, run.shortLabel + ", " + name.substr(5), Series::Style::Line, phaseVariant++);
-        profile.x = values;
-        profile.y = columns.at("height");
-        out.profiles.series.push_back(std::move(profile));
+        out.profiles.series.push_back(runSeries(run, b, run.shortLabel + ", " + name.substr(5), Series::Style::Line,
+                                                phaseVariant++, values, columns.at("height")));
       }
     }
   }
