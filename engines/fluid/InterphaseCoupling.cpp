@@ -20,12 +20,18 @@ struct FaceTerms {
 
 // The buffers of a face's point-coupled solves, kept over the faces of an axis: sized once to
 // the phases with an equation, they need no allocation per face (which, with an inverse and an
-// LU per face, took a tenth of a binary bed's run time).
+// LU per face, took a tenth of a binary bed's run time). Up to kStackPhases phases they live on
+// the stack (Eigen's matrices of a bounded size: the same arithmetic, bit for bit, and 1.5 % off
+// the binary bed's run); beyond, on the heap.
+constexpr int kStackPhases = 8;
+template <int MaxPhases>
 struct PointWork {
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, MaxPhases, MaxPhases>;
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxPhases, 1>;
   std::vector<std::size_t> coupled;  // the phases with an equation here (not dilute)
-  Eigen::MatrixXd K, inverse;
-  Eigen::VectorXd r, explicitPart, fractions, d, unit, column;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  Matrix K, inverse;
+  Vector r, explicitPart, fractions, d, unit, column;
+  Eigen::PartialPivLU<Matrix> lu;
   // Selects the coupled phases of the face and zeroes K and explicitPart for them; their count.
   Eigen::Index select(const FaceTerms& t) {
     coupled.clear();
@@ -64,7 +70,8 @@ void coupleGasAndOneSolids(std::vector<StencilSystem>& systems, const FaceTerms&
 //   u_m / (K^-1)_mm = r_m + sum_{l != m} (K^-1)_ml / (K^-1)_mm r_l,
 // so each phase sees every exchange implicitly (Syamlal 1998's partial elimination, of which
 // coupleGasAndOneSolids is the two-phase case).
-void couplePointMatrix(std::vector<StencilSystem>& systems, const FaceTerms& t, std::size_t f, PointWork& w) {
+template <class Work>
+void couplePointMatrix(std::vector<StencilSystem>& systems, const FaceTerms& t, std::size_t f, Work& w) {
   const std::size_t M = systems.size();
   const Eigen::Index n = w.select(t);
   w.r.resize(n);
@@ -117,26 +124,20 @@ void coupleGasBesideGivenPhase(StencilSystem& gas, const FlowState& state, const
   }
 }
 
-}  // namespace
-
-CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
-                                      const FlowProperties& properties, int axis, double relaxation,
-                                      double diluteFraction, const std::vector<char>& given) {
+// Every face's point-coupled solve (the momentum exchange partially eliminated) and its correction
+// coefficients, with the buffers Work.
+template <class Work>
+void coupleFaces(std::vector<StencilSystem>& systems, const FlowState& state, const FlowProperties& properties,
+                 int axis, double relaxation, double diluteFraction, const std::vector<char>& given,
+                 CorrectionCoefficients& out) {
   const StaggeredGrid& grid = state.grid();
   const std::size_t M = systems.size();
   const double V = grid.cellVolume(), A = grid.faceArea(axis);
-  CorrectionCoefficients out;
-  for (std::size_t m = 0; m < M; ++m) {
-    out.pressure.emplace_back(grid, axis);
-    out.solidsPressure.emplace_back(grid, axis);
-  }
   const auto isGiven = [&given](std::size_t m) { return !given.empty() && given[m] != 0; };
   const bool closedForm = M == 2 && properties.solidsDrag.empty();
   FaceTerms t(M);
-  PointWork work;
-  const bool gasBesideGiven = closedForm && isGiven(1);
-  if (gasBesideGiven) coupleGasBesideGivenPhase(systems[0], state, properties, axis, relaxation, out);
-  for (std::size_t f = 0; f < grid.paddedCount() && !gasBesideGiven; ++f) {
+  Work work;
+  for (std::size_t f = 0; f < grid.paddedCount(); ++f) {
     if (!systems[0].active(f)) continue;
     t.X.setZero();
     for (std::size_t m = 0; m < M; ++m) {
@@ -194,6 +195,30 @@ CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const
         out.solidsPressure[m][f] = work.column[i];
       }
     }
+  }
+}
+
+}  // namespace
+
+CorrectionCoefficients coupleAndRelax(std::vector<StencilSystem>& systems, const FlowState& state,
+                                      const FlowProperties& properties, int axis, double relaxation,
+                                      double diluteFraction, const std::vector<char>& given) {
+  const StaggeredGrid& grid = state.grid();
+  const std::size_t M = systems.size();
+  CorrectionCoefficients out;
+  for (std::size_t m = 0; m < M; ++m) {
+    out.pressure.emplace_back(grid, axis);
+    out.solidsPressure.emplace_back(grid, axis);
+  }
+  const auto isGiven = [&given](std::size_t m) { return !given.empty() && given[m] != 0; };
+  const bool closedForm = M == 2 && properties.solidsDrag.empty();
+  const bool gasBesideGiven = closedForm && isGiven(1);
+  if (gasBesideGiven) {
+    coupleGasBesideGivenPhase(systems[0], state, properties, axis, relaxation, out);
+  } else if (M <= static_cast<std::size_t>(kStackPhases)) {
+    coupleFaces<PointWork<kStackPhases>>(systems, state, properties, axis, relaxation, diluteFraction, given, out);
+  } else {
+    coupleFaces<PointWork<Eigen::Dynamic>>(systems, state, properties, axis, relaxation, diluteFraction, given, out);
   }
   for (std::size_t m = 0; m < M; ++m) {
     if (!isGiven(m)) systems[m].relax(relaxation, state.phases[m].velocity[static_cast<std::size_t>(axis)].values());

@@ -245,6 +245,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
   const double bound = velocityBound(boundaries);
   StepResult result;
   std::vector<CorrectionCoefficients> corrections;  // the last iteration's, for the closing
+  double windowResidual = 0.0;                      // at the last multiple of stallWindow
   for (int iteration = 1; iteration <= settings.maxIterations; ++iteration) {
     result.iterations = iteration;
     Worst worst;
@@ -376,6 +377,13 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     if (!result.failure.empty()) {
       result.cell = badCell;
       return result;
+    }
+    if (worst.value >= settings.tolerance && settings.stallWindow > 0 && iteration % settings.stallWindow == 0) {
+      if (iteration > 2 * settings.stallWindow && windowResidual <= worst.value) {
+        result.stalledAt = iteration;
+        return result;
+      }
+      windowResidual = worst.value;
     }
     if (worst.value < settings.tolerance) {
       result.converged = true;

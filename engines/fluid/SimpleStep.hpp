@@ -89,6 +89,12 @@ struct SimpleSettings {
   // phase's inventory: what keeps a long run's mass balance to round-off.
   double massTolerance = 1e-10;
   int maxIterations = 50;
+  // MFiX's DETECT_STALL (check_convergence.f, on by default there since 1999): every
+  // `stallWindow` iterations past the second window, a step whose largest residual has not fallen
+  // below what it was one window earlier gives up, to be retried at a smaller step, instead of
+  // running on to maxIterations. A failed step otherwise costs maxIterations iterations: a fifth of
+  // all iterations of the Goldschmidt binary bed with rotation (issue 55). 0: off.
+  int stallWindow = 0;
   // How each momentum component's system, the gas pressure correction and the solids fraction
   // systems (Eq. 3.69's correction and the step's closing continuity, solveFractionNonNegative)
   // are solved (StencilSystem.hpp).
@@ -107,6 +113,8 @@ struct StepResult {
   std::array<int, 3> cell{0, 0, 0};
   // A non-finite value or a fraction outside [0, 1] stops the iterations at once; its reason.
   std::string failure;
+  // The step gave up on a stalled residual (SimpleSettings::stallWindow) at this iteration; 0 if not.
+  int stalledAt = 0;
   // A converged transient step's flow through each boundary patch, per phase (the gas first) and
   // patch [kg/s]: a solids phase's from the fluxes its closing continuity solve moved mass with
   // (so its held mass changes by exactly in - out over the step), the gas's from the state its

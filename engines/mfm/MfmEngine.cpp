@@ -43,7 +43,7 @@ std::string MfmEngine::throughputNote() const {
   out.precision(3);
   // The driver's line already counts the solver steps (workSteps).
   out << (s.steps > 0 ? static_cast<double>(s.iterations) / s.steps : 0.0) << " iterations per step, " << s.retries
-      << " retried, last dt " << s.lastDt << " s";
+      << " retried (" << s.retriedIterations << " iterations), last dt " << s.lastDt << " s";
   return out.str();
 }
 
@@ -89,6 +89,7 @@ void MfmEngine::saveState(const fs::path& path, const std::string& fingerprint) 
     f.writeAttribute("/", "solver_steps", static_cast<std::int64_t>(stats.steps));
     f.writeAttribute("/", "retries", static_cast<std::int64_t>(stats.retries));
     f.writeAttribute("/", "iterations", static_cast<std::int64_t>(stats.iterations));
+    f.writeAttribute("/", "retried_iterations", static_cast<std::int64_t>(stats.retriedIterations));
     f.writeAttribute("/", "last_dt", stats.lastDt);
     f.writeAttribute("/", "table_cell_steps", static_cast<std::int64_t>(stats.tableCellSteps));
     f.writeAttribute("/", "covered_cell_steps", static_cast<std::int64_t>(stats.coveredCellSteps));
@@ -120,6 +121,9 @@ std::unique_ptr<MfmEngine> MfmEngine::restore(const MultiFluidSetup& setup, cons
   stats.steps = f.readIntAttribute("/", "solver_steps");
   stats.retries = f.readIntAttribute("/", "retries");
   stats.iterations = f.readIntAttribute("/", "iterations");
+  // Checkpoints written before the count was kept (issue 55) resume with it at zero.
+  if (f.hasAttribute("/", "retried_iterations"))
+    stats.retriedIterations = f.readIntAttribute("/", "retried_iterations");
   stats.lastDt = f.readDoubleAttribute("/", "last_dt");
   stats.tableCellSteps = f.readIntAttribute("/", "table_cell_steps");
   stats.coveredCellSteps = f.readIntAttribute("/", "covered_cell_steps");

@@ -34,7 +34,11 @@ double MultiFluidEngine::speedOverSpacing() const {
 void MultiFluidEngine::step(double limit) {
   for (;;) {
     const double dt = std::min(control_.next(speedOverSpacing()), limit - state_->time);
-    const fluid::StepResult r = fluid::advance(*state_, dt, model_, *boundaries_, settings_);
+    // A step that cannot be retried (half of it below the minimum) runs to maxIterations, as MFiX
+    // forces the iterations at DT_MIN.
+    fluid::SimpleSettings settings = settings_;
+    if (dt * 0.5 < control_.limits().minimum) settings.stallWindow = 0;
+    const fluid::StepResult r = fluid::advance(*state_, dt, model_, *boundaries_, settings);
     if (r.converged) {
       control_.converged(r.iterations);
       ++stats_.steps;
@@ -46,12 +50,14 @@ void MultiFluidEngine::step(double limit) {
       return;
     }
     ++stats_.retries;
+    stats_.retriedIterations += r.iterations;
     const bool retry = control_.failed(dt);
     if (retry && onRetry_) {
       std::ostringstream msg;
       msg << "t = " << state_->time << " s: the step of " << dt << " s did not converge ("
-          << (r.failure.empty() ? "the " + r.equation + " residual " + std::to_string(r.residual) : r.failure)
-          << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")); retrying with "
+          << (r.failure.empty() ? "the " + r.equation + " residual " + std::to_string(r.residual) : r.failure);
+      if (r.stalledAt > 0) msg << ", stalled at iteration " << r.stalledAt;
+      msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")); retrying with "
           << control_.current() << " s";
       onRetry_(msg.str());
     }

@@ -18,6 +18,7 @@ struct StepStatistics {
   long steps = 0;       // converged steps
   long retries = 0;     // steps retried at a smaller time step
   long iterations = 0;  // outer iterations over all converged steps
+  long retriedIterations = 0;  // outer iterations of the steps that failed and were retried
   double lastDt = 0.0;  // [s]
   double lastResidual = 0.0;
   // A `table` closure's coverage, over converged steps and the cells holding solids (above the

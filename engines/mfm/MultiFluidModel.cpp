@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -73,9 +74,8 @@ class CellSolidFractions {
 // Phase m's share of the plastic viscosity (Eq. 3.27). Schaeffer's mu^p is written with P*, not
 // eps_sm P* (PlasticRegime.hpp), so each phase of a mixture takes eps_sm / eps_s of it, as MFIX
 // does (calc_mu_s.f: EP_s(M)/SUM_EPS_CP), and identical phases add up to one; one phase takes it all.
-double plasticViscosityShare(const fluid::FlowState& state, std::size_t m, std::size_t c) {
-  if (state.phases.size() == 2) return 1.0;
-  const CellSolidFractions fractions(state, c);
+double plasticViscosityShare(const CellSolidFractions& fractions, std::size_t m) {
+  if (fractions.size() == 1) return 1.0;
   double total = 0.0;
   for (double eps : fractions.values()) total += eps;
   return total > 0.0 ? fractions[m - 1] / total : 0.0;
@@ -96,6 +96,16 @@ double slipSpeed(const fluid::PhaseFields& gas, const fluid::PhaseFields& solids
 }
 
 }  // namespace
+
+class MultiFluidModel::CellMixture {
+ public:
+  CellMixture(const fluid::FlowState& state, std::size_t c, const std::vector<double>& diameters, bool lebowitz)
+      : fractions(state, c) {
+    if (lebowitz) mixture.emplace(fractions.values(), diameters);
+  }
+  const CellSolidFractions fractions;
+  std::optional<closures::LebowitzMixture> mixture;  // under Lebowitz's g0
+};
 
 namespace {
 
@@ -187,10 +197,11 @@ std::vector<std::array<std::size_t, 2>> MultiFluidModel::solidsPairs() const {
   return pairs;
 }
 
-void MultiFluidModel::evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& p,
-                                         std::size_t c) const {
-  const CellSolidFractions fractions(state, c);
-  const closures::LebowitzMixture mixture(fractions.values(), diameters_);
+void MultiFluidModel::evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t c,
+                                         const CellMixture& cell) const {
+  const CellSolidFractions& fractions = cell.fractions;
+  const closures::LebowitzMixture mixture =
+      cell.mixture ? *cell.mixture : closures::LebowitzMixture(fractions.values(), diameters_);
   for (std::size_t k = 0; k < params_.solidsPairs.size(); ++k) {
     const SolidsPair& pair = params_.solidsPairs[k];
     const SolidsPhase& l = params_.solids[pair.l - 1];
@@ -222,30 +233,31 @@ void MultiFluidModel::evaluateCells(const Drag& drag, const fluid::FlowState& st
         p.phases[0].compressibility[c] = params_.gas.compressibility();
         p.phases[0].shearViscosity[c] = epsG * params_.gas.viscosity;
         p.phases[0].bulkViscosity[c] = -2.0 / 3.0 * epsG * params_.gas.viscosity;
-        const double epsGStar = criticalVoidFraction(state, c);
+        const CellMixture cell(state, c, diameters_, params_.radialDistribution == RadialDistributionModel::Lebowitz);
+        const double epsGStar = packing_.byComposition() ? packing_.criticalVoidFraction(cell.fractions.values())
+                                                         : params_.plastic.params.criticalVoidFraction;
         if (p.packedFraction) (*p.packedFraction)[c] = 1.0 - epsGStar;  // Eq. 3.68's eps_p
         for (std::size_t m = 1; m < state.phases.size(); ++m) {
           const SolidsPhase& solids = params_.solids[m - 1];
           p.phases[m].density[c] = solids.density;
           // Drag first: Lun et al.'s viscosity and conductivity read it (Ma-Ahmadi).
           const double slip = slipSpeed(gas, state.phases[m], c);
-          const closures::DragState ds{epsG, closureSolidFraction(state, m, c), solids.diameter,
-                                       rhoG,  params_.gas.viscosity,            slip};
+          const closures::DragState ds{epsG, cell.fractions[m - 1], solids.diameter, rhoG, params_.gas.viscosity, slip};
           p.dragCoefficient[m][c] = drag.evaluate(ds).beta;
           if (params_.granularEnergy == GranularEnergyForm::Algebraic) {
-            evaluateAlgebraic(state, p, m, c, epsG, epsGStar);
+            evaluateAlgebraic(state, p, m, c, epsG, epsGStar, cell);
           } else {
-            evaluatePde(state, p, m, c, epsG, epsGStar);
+            evaluatePde(state, p, m, c, epsG, epsGStar, cell);
           }
         }
-        if (!p.solidsDrag.empty()) evaluateSolidsDrag(state, p, c);
+        if (!p.solidsDrag.empty()) evaluateSolidsDrag(state, p, c, cell);
       }
     }
   }
 }
 
 void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m,
-                                        std::size_t c, double epsG, double epsGStar) const {
+                                        std::size_t c, double epsG, double epsGStar, const CellMixture& cell) const {
   const auto& plastic = params_.plastic.params;
   fluid::PhaseProperties& out = p.phases[m];
   const SolidsState now = solidsState(state, m, c);
@@ -255,7 +267,7 @@ void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::Fl
       params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant(), epsGStar);
   out.solidsPressure[c] = kc.k1 * eps * eps * theta + pl.pressure;  // Eqs. 3.21 + 3.26
   out.plasticPressure[c] = pl.pressure;
-  out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + plasticViscosityShare(state, m, c) * pl.viscosity;
+  out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + plasticViscosityShare(cell.fractions, m) * pl.viscosity;
   out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
   double slope = 2.0 * kc.k1 * eps * theta;
   if (pl.plastic) {
@@ -267,17 +279,17 @@ void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::Fl
 
 MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState& state,
                                                           const fluid::FlowProperties& properties, std::size_t m,
-                                                          std::size_t c) const {
+                                                          std::size_t c, const CellMixture& cell) const {
   const SolidsPhase& solids = params_.solids[m - 1];
   KineticCell k;
-  k.state.solidFraction = closureSolidFraction(state, m, c);
+  k.state.solidFraction = cell.fractions[m - 1];
   k.state.granularTemperature = std::max(state.phases[m].granularTemperature[c], 0.0);
   k.state.diameter = solids.diameter;
   k.state.density = solids.density;
   k.state.restitution = solids.restitution;
   k.state.gasDragCoefficient = params_.granularGasCoupling ? properties.dragCoefficient[m][c] : 0.0;
   if (params_.radialDistribution == RadialDistributionModel::Lebowitz) {
-    setMixtureContacts(state, m, c, 0.0, k.state);
+    setMixtureContacts(cell, m, 0.0, k.state);
     k.g0 = k.state.g0;
   } else {
     k.g0 = closures::carnahanStarlingG0(k.state.solidFraction);
@@ -287,12 +299,17 @@ MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState
   return k;
 }
 
-void MultiFluidModel::setMixtureContacts(const fluid::FlowState& state, std::size_t m, std::size_t c, double shift,
+void MultiFluidModel::setMixtureContacts(const CellMixture& cell, std::size_t m, double shift,
                                          closures::KineticState& ks) const {
-  CellSolidFractions fractions(state, c);
   const std::size_t own = m - 1;
+  // The shifted state's fractions; up to 8 phases on the stack, as CellSolidFractions keeps them.
+  std::array<double, 8> inline_{};
+  std::vector<double> heap(cell.fractions.size() > inline_.size() ? cell.fractions.size() : 0);
+  const std::span<double> fractions(heap.empty() ? inline_.data() : heap.data(), cell.fractions.size());
+  std::copy(cell.fractions.values().begin(), cell.fractions.values().end(), fractions.begin());
   fractions[own] += shift;
-  const closures::LebowitzMixture mixture(fractions.values(), diameters_);
+  const closures::LebowitzMixture mixture =
+      shift == 0.0 && cell.mixture ? *cell.mixture : closures::LebowitzMixture(fractions, diameters_);
   ks.g0 = mixture.g0(own, own);
   if (params_.mixtureKineticTheory == MixtureKineticTheory::PerPhase) {
     // Eqs. 3.21-3.25, 5.7 and 5.20 as printed: eps_sm g0_mm, the phase's own contacts.
@@ -309,16 +326,16 @@ void MultiFluidModel::setMixtureContacts(const fluid::FlowState& state, std::siz
 }
 
 void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c,
-                                  double epsG, double epsGStar) const {
+                                  double epsG, double epsGStar, const CellMixture& cell) const {
   const auto& plastic = params_.plastic.params;
   fluid::PhaseProperties& out = p.phases[m];
-  const KineticCell kin = kineticCell(state, p, m, c);
+  const KineticCell kin = kineticCell(state, p, m, c, cell);
   const double eps = kin.state.solidFraction;
   const closures::PlasticRegime::Result pl =
       params_.plastic.evaluate(epsG, eps, fluid::strainRate(state.phases[m], c).deviatorInvariant(), epsGStar);
   out.solidsPressure[c] = kin.transport.pressure + pl.pressure;  // kinetic + Eq. 3.26
   out.plasticPressure[c] = pl.pressure;
-  out.shearViscosity[c] = kin.transport.shearViscosity + plasticViscosityShare(state, m, c) * pl.viscosity;
+  out.shearViscosity[c] = kin.transport.shearViscosity + plasticViscosityShare(cell.fractions, m) * pl.viscosity;
   out.bulkViscosity[c] = kin.transport.secondViscosity();  // lambda_s; the plastic regime has none
   // The kinetic slope at the cell's theta, by a one-sided difference of the kinetic-theory
   // model's pressure (never the table's: the slope only steers the fraction correction, and the
@@ -327,7 +344,7 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   const double step = 1e-7;
   shifted.solidFraction = std::min(eps + step, 1.0 - 1e-12);
   if (params_.radialDistribution == RadialDistributionModel::Lebowitz)
-    setMixtureContacts(state, m, c, shifted.solidFraction - eps, shifted);
+    setMixtureContacts(cell, m, shifted.solidFraction - eps, shifted);
   // Where no table supplies the pressure the closure's is the model's: no second evaluation.
   const double p0 = params_.closure.modelPressure(kin.state, kin.transport);
   const double p1 = closures::evaluate(params_.closure.kineticModel(), shifted).pressure;
@@ -366,21 +383,31 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
           plasticCells[c] = closureVoidFraction(state, c) < criticalVoidFraction(state, c) ? 1 : 0;
         }
   }
-  for (std::size_t m = 1; m < state.phases.size(); ++m) {
-    fluid::PhaseFields& phase = state.phases[m];
-    const SolidsPhase& solids = params_.solids[m - 1];
-    GranularEnergyTerms terms(grid);
-    terms.pinnedTheta = params_.pinnedTheta;
-    double scale = 1e-6;  // the residual's theta scale: the phase's largest, or this floor [m^2/s^2]
-    for (int k = 0; k < grid.cells(2); ++k) {
-      for (int j = 0; j < grid.cells(1); ++j) {
-        for (int i = 0; i < grid.cells(0); ++i) {
-          const std::size_t c = grid.index(i, j, k);
-          if (!plasticCells.empty() && plasticCells[c] != 0) {
-            terms.pinned[c] = 1;
-            continue;
-          }
-          const KineticCell kin = kineticCell(state, props, m, c);
+  // Every phase's terms in one sweep over the cells, each cell's mixture read once: a phase's terms
+  // read its own theta and the fractions, which no phase's solve below changes.
+  const std::size_t M = state.phases.size();
+  std::vector<GranularEnergyTerms> phaseTerms;
+  phaseTerms.reserve(M - 1);
+  std::vector<double> scales(M, 1e-6);  // the residuals' theta scale: the phase's largest, or this floor [m^2/s^2]
+  for (std::size_t m = 1; m < M; ++m) {
+    phaseTerms.emplace_back(grid);
+    phaseTerms.back().pinnedTheta = params_.pinnedTheta;
+  }
+  for (int k = 0; k < grid.cells(2); ++k) {
+    for (int j = 0; j < grid.cells(1); ++j) {
+      for (int i = 0; i < grid.cells(0); ++i) {
+        const std::size_t c = grid.index(i, j, k);
+        if (!plasticCells.empty() && plasticCells[c] != 0) {
+          for (GranularEnergyTerms& terms : phaseTerms) terms.pinned[c] = 1;
+          continue;
+        }
+        const CellMixture cell(state, c, diameters_, params_.radialDistribution == RadialDistributionModel::Lebowitz);
+        for (std::size_t m = 1; m < M; ++m) {
+          const fluid::PhaseFields& phase = state.phases[m];
+          const SolidsPhase& solids = params_.solids[m - 1];
+          GranularEnergyTerms& terms = phaseTerms[m - 1];
+          double& scale = scales[m];
+          const KineticCell kin = kineticCell(state, props, m, c, cell);
           const closures::KineticTransport& t = kin.transport;
           const double theta = kin.state.granularTemperature;
           const double eps = kin.state.solidFraction;
@@ -428,6 +455,11 @@ std::vector<fluid::TransportResidual> MultiFluidModel::solveTransport(fluid::Flo
         }
       }
     }
+  }
+  for (std::size_t m = 1; m < M; ++m) {
+    fluid::PhaseFields& phase = state.phases[m];
+    const GranularEnergyTerms& terms = phaseTerms[m - 1];
+    const double scale = scales[m];
     GranularEnergyInputs in;
     in.state = &state;
     in.old = &old;

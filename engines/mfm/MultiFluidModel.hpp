@@ -177,24 +177,29 @@ class MultiFluidModel final : public fluid::FlowModel {
     closures::KineticTransport transport;
     double g0 = 1.0;
   };
-  // Phase m's g0_mm and mixture sums at cell c under the Lebowitz distribution, with eps_m raised
-  // by `shift` (the pressure slope's neighbouring state).
-  void setMixtureContacts(const fluid::FlowState& state, std::size_t m, std::size_t c, double shift,
-                          closures::KineticState& ks) const;
+  // A cell's solids as the closures see them, read once per cell and sweep: every phase's closure
+  // fraction and, under Lebowitz's g0, their mixture. The kinetic theory, its pressure slope, the
+  // plastic viscosity's share and the solids drag each read them anew before, seven times per cell
+  // and iteration in the binary bed (issue 55); the values are the same, bit for bit.
+  class CellMixture;
+  // Phase m's g0_mm and mixture sums under the Lebowitz distribution, with eps_m raised by
+  // `shift` (the pressure slope's neighbouring state; 0: the cell's own mixture).
+  void setMixtureContacts(const CellMixture& cell, std::size_t m, double shift, closures::KineticState& ks) const;
   // F_sml of every solids pair at cell c (Eq. 3.18, g0_lm of the mixture).
-  void evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& properties, std::size_t c) const;
+  void evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& properties, std::size_t c,
+                          const CellMixture& cell) const;
   // evaluate()'s sweep over the cells with the drag law chosen once (params_.drag visited
   // outside the loop), so the loop calls the law directly.
   template <class Drag>
   void evaluateCells(const Drag& drag, const fluid::FlowState& state, fluid::FlowProperties& p) const;
   [[nodiscard]] KineticCell kineticCell(const fluid::FlowState& state, const fluid::FlowProperties& properties,
-                                        std::size_t m, std::size_t c) const;
+                                        std::size_t m, std::size_t c, const CellMixture& cell) const;
   [[nodiscard]] closures::JohnsonJackson wallFor(std::size_t m) const;
   // Phase m's stresses at cell c of void fraction epsG and critical void fraction epsGStar.
   void evaluateAlgebraic(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c,
-                         double epsG, double epsGStar) const;
+                         double epsG, double epsGStar, const CellMixture& cell) const;
   void evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c, double epsG,
-                   double epsGStar) const;
+                   double epsGStar, const CellMixture& cell) const;
 
   // What the solids stress of phase m at cell c is built from: the fractions the closures see
   // (clamped into range, the state itself is not), Eqs. 3.23-3.25's coefficients, the strain

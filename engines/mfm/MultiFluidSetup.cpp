@@ -107,6 +107,7 @@ void from_json(const json& p, MultiFluidSetup& s) {
   settings.packedFraction = packed;
   settings.tolerance = p.at("tolerance");
   settings.maxIterations = p.at("max_iterations");
+  settings.stallWindow = p.at("detect_stall").get<bool>() ? 5 : 0;  // MFiX's window of 5 iterations
   settings.momentumRelaxation = p.at("momentum_relaxation");
   settings.pressureRelaxation = p.at("pressure_relaxation");
   settings.fractionRelaxation = p.at("fraction_relaxation");

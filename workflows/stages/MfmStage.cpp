@@ -276,6 +276,10 @@ MfmStage::MfmStage() {
   schema_
       .add(
           ParamSpec::integer("max_iterations").defaultValue(50).min(1).doc("outer iterations before a step is retried"))
+      .add(ParamSpec::boolean("detect_stall")
+               .defaultValue(true)
+               .doc("MFiX's DETECT_STALL: retry a step at half its size as soon as its largest residual has not "
+                    "fallen over 5 iterations (checked from the 15th), instead of after max_iterations"))
       .add(ParamSpec::number("momentum_relaxation").defaultValue(0.9).min(0.0, false).max(1.0).doc("alpha_u"))
       .add(ParamSpec::number("pressure_relaxation").defaultValue(0.8).min(0.0, false).max(1.0).doc("omega_P"))
       .add(ParamSpec::number("fraction_relaxation")
@@ -444,6 +448,7 @@ void MfmStage::run(StageContext& ctx) const {
   const auto& stats = engine->engine().statistics();
   summary["solver_steps"] = stats.steps;
   summary["retries"] = stats.retries;
+  summary["retried_iterations"] = stats.retriedIterations;
   summary["iterations_per_step"] = stats.steps > 0 ? static_cast<double>(stats.iterations) / stats.steps : 0.0;
   summary["window_samples"] = observed.fieldAverage().frames();
   // The superficial gas velocity the inlets impose (engines/fluid/BoundaryFlow): a fluidization

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "engines/mfm/MfmEngine.hpp"
 #include "tests/engines/mfm/GrainBed.hpp"
@@ -148,4 +149,42 @@ TEST(MfmEngine, AnIdealGasFedIntoAClosedColumnCompressesAsItsMassBalanceSays) {
   const double expected = 101325.0 * std::exp(0.01 * 0.4 / 0.08);
   std::printf("closed ideal-gas column after 0.4 s: %.3f Pa against %.3f Pa\n", mean, expected);
   EXPECT_NEAR(mean, expected, 1e-4 * (expected - 101325.0));
+}
+
+// MFiX's stall detection (SimpleSettings::stallWindow): a step whose residual no longer falls is
+// given up before max_iterations and retried at half the step; the step that cannot be retried
+// (half of it below dt_min) runs to max_iterations, as MFiX forces the iterations at DT_MIN.
+// A tolerance below round-off makes every step fail: 1e-4 and 5e-5 s are retried, 2.5e-5 s stops.
+TEST(MfmEngine, AStalledStepIsGivenUpEarlyExceptAtTheSmallestStep) {
+  const auto triedIterations = [](int stallWindow) {
+    GrainBedSpec spec;
+    spec.nx = 4;
+    spec.inflow = 1.2;
+    spec.perturbation = 0.02;
+    const GrainBed bed = grainBed(spec);
+    fluid::SimpleSettings settings = bed.setup.settings;
+    settings.tolerance = 1e-300;
+    settings.stallWindow = stallWindow;
+    fluid::TimeStepLimits limits = bed.setup.limits;
+    limits.initial = 1e-4;
+    limits.minimum = 2.5e-5;
+    mfm::MultiFluidEngine engine(bed.setup.geometry, bed.setup.patches, bed.setup.model, settings, limits);
+    mfm::initialise(engine, bed.initial);
+    std::string message;
+    try {
+      engine.advanceTo(1e-3);
+    } catch (const Error& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find("after 50 iterations"), std::string::npos) << message;
+    EXPECT_EQ(engine.statistics().retries, 3);  // the last one counted too, though not retried
+    return engine.statistics().retriedIterations;
+  };
+  const long withoutDetection = triedIterations(0);
+  const long withDetection = triedIterations(5);
+  EXPECT_EQ(withoutDetection, 3 * 50);
+  // Two steps given up at a multiple of 5 past the 10th, below the 50th; the third runs to 50.
+  EXPECT_GE(withDetection, 2 * 15 + 50);
+  EXPECT_LT(withDetection, 2 * 50 + 50);
+  EXPECT_EQ((withDetection - 50) % 5, 0);
 }
