@@ -47,14 +47,9 @@ LebowitzMixture::LebowitzMixture(std::span<const double> solidFractions, const s
   }
 }
 
-double LebowitzMixture::g0(std::size_t l, std::size_t m) const {
-  if (l >= diameters_->size() || m >= diameters_->size()) {
-    throw Error("radial distribution g0 (Lebowitz): phases " + std::to_string(l) + " and " + std::to_string(m) +
-                " asked of " + std::to_string(diameters_->size()));
-  }
-  const double dl = (*diameters_)[l];
-  const double dm = (*diameters_)[m];
-  return 1.0 / voidFraction_ + 3.0 * dl * dm / (voidFraction_ * voidFraction_ * (dl + dm)) * sumOverDiameter_;
+void LebowitzMixture::throwPhaseOutOfRange(std::size_t l, std::size_t m) const {
+  throw Error("radial distribution g0 (Lebowitz): phases " + std::to_string(l) + " and " + std::to_string(m) +
+              " asked of " + std::to_string(diameters_->size()));
 }
 
 double lebowitzG0(const std::vector<double>& solidFractions, const std::vector<double>& diameters, std::size_t l,
