@@ -52,10 +52,13 @@ double closureSolidFraction(const fluid::FlowState& state, std::size_t m, std::s
 // vector per call cost 5 % of the binary bed's run, bench/README.md).
 class CellSolidFractions {
  public:
-  CellSolidFractions(const fluid::FlowState& state, std::size_t c)
-      : heap_(state.phases.size() - 1 > kInline ? state.phases.size() - 1 : 0),
-        values_(heap_.empty() ? inline_.data() : heap_.data(), state.phases.size() - 1) {
+  CellSolidFractions(const fluid::FlowState& state, std::size_t c) : CellSolidFractions(state.phases.size() - 1) {
     for (std::size_t l = 1; l <= values_.size(); ++l) values_[l - 1] = closureSolidFraction(state, l, c);
+  }
+  // `from` with eps of [own] raised by `shift` (the pressure slope's neighbouring state).
+  CellSolidFractions(const CellSolidFractions& from, std::size_t own, double shift) : CellSolidFractions(from.size()) {
+    std::copy(from.values_.begin(), from.values_.end(), values_.begin());
+    values_[own] += shift;
   }
   CellSolidFractions(const CellSolidFractions&) = delete;  // values_ points into this object
   CellSolidFractions& operator=(const CellSolidFractions&) = delete;
@@ -66,6 +69,8 @@ class CellSolidFractions {
 
  private:
   static constexpr std::size_t kInline = 8;
+  explicit CellSolidFractions(std::size_t phases)
+      : heap_(phases > kInline ? phases : 0), values_(heap_.empty() ? inline_.data() : heap_.data(), phases) {}
   std::array<double, kInline> inline_{};
   std::vector<double> heap_;
   std::span<double> values_;
@@ -200,8 +205,9 @@ std::vector<std::array<std::size_t, 2>> MultiFluidModel::solidsPairs() const {
 void MultiFluidModel::evaluateSolidsDrag(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t c,
                                          const CellMixture& cell) const {
   const CellSolidFractions& fractions = cell.fractions;
-  const closures::LebowitzMixture mixture =
-      cell.mixture ? *cell.mixture : closures::LebowitzMixture(fractions.values(), diameters_);
+  // Solids pairs make a mixture, and a mixture runs on Lebowitz's g0 (the constructor refuses
+  // Carnahan-Starling's with several phases): the cell's mixture is there.
+  const closures::LebowitzMixture& mixture = cell.mixture.value();
   for (std::size_t k = 0; k < params_.solidsPairs.size(); ++k) {
     const SolidsPair& pair = params_.solidsPairs[k];
     const SolidsPhase& l = params_.solids[pair.l - 1];
@@ -302,14 +308,10 @@ MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState
 void MultiFluidModel::setMixtureContacts(const CellMixture& cell, std::size_t m, double shift,
                                          closures::KineticState& ks) const {
   const std::size_t own = m - 1;
-  // The shifted state's fractions; up to 8 phases on the stack, as CellSolidFractions keeps them.
-  std::array<double, 8> inline_{};
-  std::vector<double> heap(cell.fractions.size() > inline_.size() ? cell.fractions.size() : 0);
-  const std::span<double> fractions(heap.empty() ? inline_.data() : heap.data(), cell.fractions.size());
-  std::copy(cell.fractions.values().begin(), cell.fractions.values().end(), fractions.begin());
-  fractions[own] += shift;
+  const CellSolidFractions fractions(cell.fractions, own, shift);
+  // Called under Lebowitz's g0 only, where the cell's own mixture is there.
   const closures::LebowitzMixture mixture =
-      shift == 0.0 && cell.mixture ? *cell.mixture : closures::LebowitzMixture(fractions, diameters_);
+      shift == 0.0 ? cell.mixture.value() : closures::LebowitzMixture(fractions.values(), diameters_);
   ks.g0 = mixture.g0(own, own);
   if (params_.mixtureKineticTheory == MixtureKineticTheory::PerPhase) {
     // Eqs. 3.21-3.25, 5.7 and 5.20 as printed: eps_sm g0_mm, the phase's own contacts.
