@@ -21,8 +21,7 @@ struct FaceTerms {
 // The buffers of a face's point-coupled solves, kept over the faces of an axis: sized once to
 // the phases with an equation, they need no allocation per face (which, with an inverse and an
 // LU per face, took a tenth of a binary bed's run time). Up to kStackPhases phases they live on
-// the stack (Eigen's matrices of a bounded size: the same arithmetic, bit for bit, and 1.5 % off
-// the binary bed's run); beyond, on the heap.
+// the stack (Eigen's matrices of a bounded size); beyond, on the heap.
 constexpr int kStackPhases = 8;
 template <int MaxPhases>
 struct PointWork {
@@ -30,7 +29,7 @@ struct PointWork {
   using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxPhases, 1>;
   std::vector<std::size_t> coupled;  // the phases with an equation here (not dilute)
   Matrix K, inverse;
-  Vector r, explicitPart, fractions, d, unit, column;
+  Vector r, explicitPart, fractions, d;
   Eigen::PartialPivLU<Matrix> lu;
   // Selects the coupled phases of the face and zeroes K and explicitPart for them; their count.
   Eigen::Index select(const FaceTerms& t) {
@@ -42,6 +41,28 @@ struct PointWork {
     K.setZero(n, n);
     explicitPart.setZero(n);
     return n;
+  }
+  // inverse = K^-1 over the first n rows and columns. Up to four phases (the gas and up to three
+  // solids phases: every bed the reference runs) by Eigen's closed forms of a fixed size
+  // (cofactors), beyond by its LU with partial pivoting. K is an M-matrix, diagonally dominant by
+  // rows and columns (each diagonal is a_m plus the row's exchanges, which are the off-diagonals),
+  // so partial pivoting would never swap a row and both are equally accurate; the closed forms
+  // skip the dynamic LU's generic machinery, which took a fifth of a binary bed's run (issue 55).
+  void invert(Eigen::Index n) {
+    switch (n) {
+      case 2:
+        inverse = K.template topLeftCorner<2, 2>().inverse();
+        break;
+      case 3:
+        inverse = K.template topLeftCorner<3, 3>().inverse();
+        break;
+      case 4:
+        inverse = K.template topLeftCorner<4, 4>().inverse();
+        break;
+      default:
+        lu.compute(K);
+        inverse = lu.inverse();
+    }
   }
 };
 
@@ -88,8 +109,7 @@ void couplePointMatrix(std::vector<StencilSystem>& systems, const FaceTerms& t, 
     }
     w.r[i] = t.H[m] + w.explicitPart[i];
   }
-  w.lu.compute(w.K);  // K.inverse() of a dynamic matrix is this LU's inverse, the same arithmetic
-  w.inverse = w.lu.inverse();
+  w.invert(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const std::size_t m = w.coupled[static_cast<std::size_t>(i)];
     double b = systems[m].b(f) + w.explicitPart[i];
@@ -183,17 +203,14 @@ void coupleFaces(std::vector<StencilSystem>& systems, const FlowState& state, co
       if (m > 0) out.solidsPressure[m][f] = A / work.K(0, 0);
       continue;
     }
-    work.lu.compute(work.K);
-    work.d = work.lu.solve(work.fractions);
+    // d = K^-1 (eps A): each phase's velocity correction per unit gas pressure correction; and
+    // (K^-1)_mm A, a solids phase's per unit of its own pressure gradient.
+    work.invert(n);
+    work.d.noalias() = work.inverse * work.fractions;
     for (Eigen::Index i = 0; i < n; ++i) {
       const std::size_t m = work.coupled[static_cast<std::size_t>(i)];
       out.pressure[m][f] = work.d[i];
-      if (m > 0) {
-        work.unit.setZero(n);
-        work.unit[i] = A;
-        work.column = work.lu.solve(work.unit);
-        out.solidsPressure[m][f] = work.column[i];
-      }
+      if (m > 0) out.solidsPressure[m][f] = work.inverse(i, i) * A;
     }
   }
 }
