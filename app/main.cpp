@@ -127,7 +127,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"closure_points", "force_statistics", "structure_statistics", "rheology",
                              "closure_tables"}));
   dbQuery->add_option("--family", opt.family, "only this family (simple_shear, fluidized_cell, bnp, ...)");
-  dbQuery->add_option("--where", opt.where, "COLUMN=LO:HI, COLUMN=VALUE, COLUMN=LO: or COLUMN=:HI (repeatable)");
+  dbQuery->add_option("--where", opt.where,
+                      "COLUMN=LO:HI, COLUMN=VALUE, COLUMN=LO: or COLUMN=:HI, or COLUMN=TEXT for a text column such as "
+                      "species (repeatable)");
   dbQuery->add_option("--run", opt.runId, "only rows of this run");
   dbQuery->add_option("--workflow", opt.workflowFilter, "only rows of this workflow's runs");
   dbQuery->add_option("--columns", opt.columns, "comma-separated columns to show (default: every column set)");

@@ -147,6 +147,17 @@ json ClosureStore::query(const ClosureQuery& q) {
                   ")");
     }
     // Column names come from the schema (checked above), values are bound.
+    if (range.text) {
+      // Text against a numeric column would match nothing: say so instead.
+      auto type = db_.prepare("SELECT type FROM pragma_table_info(?1) WHERE name = ?2");
+      type.bind(1, q.table).bind(2, range.column);
+      if (type.step() && type.columnText(0) != "TEXT") {
+        throw Error("closure database: \"" + *range.text + "\" is not a number, and " + q.table + "." + range.column +
+                    " is a number column");
+      }
+      sql += " AND t." + range.column + " = ?" + std::to_string(args.size() + 1);
+      args.emplace_back(*range.text);
+    }
     if (range.lo) {
       sql += " AND t." + range.column + " >= ?" + std::to_string(args.size() + 1);
       args.emplace_back(*range.lo);

@@ -22,6 +22,7 @@ class Database;
 struct ColumnRange {
   std::string column;
   std::optional<double> lo, hi;
+  std::optional<std::string> text{};  // instead of a range: the column equals this text ("species=small")
 };
 
 struct ClosureQuery {

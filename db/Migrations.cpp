@@ -211,6 +211,13 @@ CREATE TABLE rheology(
   weighted INTEGER);
 CREATE INDEX rheology_name ON rheology(name, relation);
 )sql",
+      // 5: closure points of a mixture's species and species pairs (issue 60). A species' row
+      // has its own partial solid fraction in solid_fraction; the mixture's total and the species'
+      // share of the solids volume (x) are the state the row belongs to. NULL for one species.
+      R"sql(
+ALTER TABLE closure_points ADD COLUMN mixture_solid_fraction REAL;
+ALTER TABLE closure_points ADD COLUMN volume_share REAL;
+)sql",
   };
   return scripts;
 }

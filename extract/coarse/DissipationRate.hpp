@@ -14,6 +14,8 @@
 // carries off when it opens, so with friction J from this function is a lower bound (9-56 %
 // of the shear work at friction 0.5 in the shear sweep) and the extract stage takes the shear
 // work as J under Lees-Edwards shear.
+#include <cstddef>
+
 #include "core/data/ParticleFrame.hpp"
 
 namespace grainbridge::extract::coarse {
@@ -21,5 +23,7 @@ namespace grainbridge::extract::coarse {
 // Throws grainbridge::Error for a frame whose contact list names a particle it does not hold
 // or for a non-positive volume.
 double dissipationRate(const core::data::ParticleFrame& frame, double volume);
+// -F_diss . (u_i - u_j) of contact k alone [W]; i and j are its particles' frame indices.
+double contactDissipationPower(const core::data::ParticleFrame& frame, std::size_t k, std::size_t i, std::size_t j);
 
 }  // namespace grainbridge::extract::coarse

@@ -119,41 +119,46 @@ void ClosurePointObserver::finish(OutputSink& out, ExtractResult& result) {
   }
   // The closure forms (core/ClosureForms), each with its block-averaging error.
   const core::ClosureFormState state{density_, diameter_, T.mean, std::abs(shearRate)};
-  auto addForm = [&](core::ClosureForm form, const Averaged& value) {
-    const std::string name(core::closureFormInfo(form).name);
-    row[name] = core::toClosureForm(form, value.mean, state);
-    row[name + "_err"] = core::closureFormError(form, {value.mean, value.error}, {T.mean, T.error}, state);
-  };
+  addStressForms(row, {P.mean, P.error}, {tau.mean, tau.error}, {T.mean, T.error}, state);
   if (T.mean > 0.0) {
-    // The theta-scaled forms a continuum engine uses with its own temperature (DESIGN.md).
-    addForm(core::ClosureForm::PTheta, P);
-    addForm(core::ClosureForm::JTheta, J);
+    row["j_theta"] = core::toClosureForm(core::ClosureForm::JTheta, J.mean, state);
+    row["j_theta_err"] = core::closureFormError(core::ClosureForm::JTheta, {J.mean, J.error}, {T.mean, T.error}, state);
   }
-  if (shearRate != 0.0) {
-    const double g = std::abs(shearRate);
-    row["shear_rate"] = g;
-    row["shear_stress"] = tau.mean;
-    row["shear_stress_err"] = tau.error;
-    const Averaged mu{tau.mean / g, tau.error / g};
-    row["viscosity"] = mu.mean;
-    row["viscosity_err"] = mu.error;
-    addForm(core::ClosureForm::PShear, P);
-    addForm(core::ClosureForm::TauShear, tau);
-    addForm(core::ClosureForm::TShear, T);
-    if (T.mean > 0.0) addForm(core::ClosureForm::EtaTheta, mu);
-    if (P.mean > 0.0) {
-      // The dense-flow variables (Chialvo, Sun and Sundaresan 2012, PRE 85 021305): the inertial
-      // number I = gammadot d / sqrt(p / rho_p), whose relative error is half the pressure's,
-      // and the stress ratio tau / p, its error from the frame series (RatioOfMeans.hpp).
-      const double I = g * diameter_ / std::sqrt(P.mean / density_);
-      row["inertial_number"] = I;
-      row["inertial_number_err"] = 0.5 * I * P.error / P.mean;
-      const auto ratio = core::averaging::ratioOfMeans(shearStress_, pressure_);
-      row["stress_ratio"] = ratio.value;
-      row["stress_ratio_err"] = ratio.standardError;
-    }
+  if (shearRate != 0.0 && P.mean > 0.0) {
+    // The dense-flow variables (Chialvo, Sun and Sundaresan 2012, PRE 85 021305): the inertial
+    // number I = gammadot d / sqrt(p / rho_p), whose relative error is half the pressure's,
+    // and the stress ratio tau / p, its error from the frame series (RatioOfMeans.hpp).
+    const double I = std::abs(shearRate) * diameter_ / std::sqrt(P.mean / density_);
+    row["inertial_number"] = I;
+    row["inertial_number_err"] = 0.5 * I * P.error / P.mean;
+    const auto ratio = core::averaging::ratioOfMeans(shearStress_, pressure_);
+    row["stress_ratio"] = ratio.value;
+    row["stress_ratio_err"] = ratio.standardError;
   }
   result.point = std::move(row);
+}
+
+void addStressForms(json& row, const core::MeasuredValue& pressure, const core::MeasuredValue& shearStress,
+                    const core::MeasuredValue& temperature, const core::ClosureFormState& state) {
+  const auto addForm = [&](core::ClosureForm form, const core::MeasuredValue& value) {
+    const std::string name(core::closureFormInfo(form).name);
+    row[name] = core::toClosureForm(form, value.mean, state);
+    row[name + "_err"] = core::closureFormError(form, value, temperature, state);
+  };
+  // The theta-scaled forms a continuum engine uses with its own temperature (DESIGN.md).
+  if (temperature.mean > 0.0) addForm(core::ClosureForm::PTheta, pressure);
+  const double g = state.shearRate;
+  if (g == 0.0) return;
+  row["shear_rate"] = g;
+  row["shear_stress"] = shearStress.mean;
+  row["shear_stress_err"] = shearStress.error;
+  const core::MeasuredValue mu{shearStress.mean / g, shearStress.error / g};
+  row["viscosity"] = mu.mean;
+  row["viscosity_err"] = mu.error;
+  addForm(core::ClosureForm::PShear, pressure);
+  addForm(core::ClosureForm::TauShear, shearStress);
+  addForm(core::ClosureForm::TShear, temperature);
+  if (temperature.mean > 0.0) addForm(core::ClosureForm::EtaTheta, mu);
 }
 
 std::string closurePointCsv(const json& point) {

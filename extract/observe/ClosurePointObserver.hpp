@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ClosureForms.hpp"
 #include "core/data/Materials.hpp"
 #include "extract/observe/FrameObserver.hpp"
 
@@ -39,6 +40,12 @@ class ClosurePointObserver final : public FrameObserver {
   std::size_t frames_ = 0;
   double diameter_ = 0.0, density_ = 0.0;
 };
+
+// The forms of a point's stresses (core/ClosureForms), each with its block-averaging error: p_theta
+// where theta > 0; under shear (state.shearRate > 0) also shear_rate, shear_stress, viscosity and
+// the shear-scaled forms, and eta_theta where theta > 0. A mixture's species use it too.
+void addStressForms(nlohmann::json& row, const core::MeasuredValue& pressure, const core::MeasuredValue& shearStress,
+                    const core::MeasuredValue& temperature, const core::ClosureFormState& state);
 
 // The closure point as the CSV beside it: one line per numeric quantity, full precision.
 std::string closurePointCsv(const nlohmann::json& point);

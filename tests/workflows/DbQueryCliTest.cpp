@@ -93,6 +93,29 @@ TEST(DbQueryCli, UnknownColumnsAreAUsageErrorListingTheColumns) {
   EXPECT_THAT(r.output, HasSubstr("(did you mean \"restitution\"?)"));
 }
 
+// A mixture's points carry their species (issue 60): `--where species=small` is text equality, and
+// text against a number column is refused, not an empty answer.
+TEST(DbQueryCli, ATextColumnMatchesItsText) {
+  TempDir dir;
+  json small = point(0.1, 0.9, 10.0), large = point(0.1, 0.9, 12.0), pair = point(0.2, 0.9, 3.0);
+  small["species"] = "small";
+  large["species"] = "large";
+  pair["species"] = "small+large";
+  const auto path = closureDatabase(dir, {json::array({point(0.2, 0.9, 20.0), small, large, pair})});
+  const auto r = runGrainbridge(dir.path(), "db query --db '" + path.string() +
+                                                "' --where species=small --columns species,pressure --format csv");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output, "species,pressure\nsmall,10\n");
+  const auto both = runGrainbridge(dir.path(), "db query --db '" + path.string() +
+                                                   "' --where species=small+large --where solid_fraction=0.2 "
+                                                   "--columns species,pressure --format csv");
+  ASSERT_EQ(both.exitCode, 0) << both.output;
+  EXPECT_EQ(both.output, "species,pressure\nsmall+large,3\n");
+  const auto wrong = runGrainbridge(dir.path(), "db query --db '" + path.string() + "' --where restitution=high");
+  EXPECT_NE(wrong.exitCode, 0);
+  EXPECT_THAT(wrong.output, HasSubstr("\"high\" is not a number, and closure_points.restitution is a number column"));
+}
+
 // A closure point stores the state measured in its run (the quickstart's phi 0.3 box holds
 // 0.300004), and a user selects it by the value the config and the report name (issue 54).
 TEST(DbQueryCli, MeasuredStatesMatchTheRoundValueWritten) {

@@ -3,6 +3,7 @@
 // out for other tools. Values are SI; each row names the run that produced it, and
 // `db show RUN` follows that run's provenance chain.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -34,8 +35,16 @@ double whereTolerance(double written) {
   return written == 0.0 ? 1e-12 : kWhereRelativeTolerance * std::abs(written);
 }
 
+// Whether a --where value is meant as a number: it starts as one does (a digit, a sign, a point).
+// "0.3x" is then a mistyped number, refused, not text; "small" is text.
+bool looksNumeric(const std::string& value) {
+  const char c = value.front();
+  return std::isdigit(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '+' || c == '.';
+}
+
 // "solid_fraction=0.1:0.3", "restitution=0.9", "shear_rate=:5"; each bound widened by
 // kWhereRelativeTolerance of itself, so `solid_fraction=0.3` and `0.1:0.3` take 0.300004.
+// "species=small": a text column equal to the text.
 db::ColumnRange parseRange(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0) {
@@ -57,6 +66,10 @@ db::ColumnRange parseRange(const std::string& text) {
     return v;
   };
   const auto colon = value.find(':');
+  if (colon == std::string::npos && !value.empty() && !looksNumeric(value)) {
+    r.text = value;  // a text column (species=small): equality
+    return r;
+  }
   if (colon == std::string::npos) {
     const auto v = number(value);
     if (!v) throw UsageError("--where \"" + text + "\": no value");

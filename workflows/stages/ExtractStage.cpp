@@ -18,6 +18,7 @@
 #include "extract/observe/FieldObserver.hpp"
 #include "extract/observe/ForceStatisticsObserver.hpp"
 #include "extract/observe/OutputSink.hpp"
+#include "extract/observe/SpeciesClosurePoints.hpp"
 #include "extract/observe/StructureObserver.hpp"
 #include "extract/observe/SurfaceObserver.hpp"
 
@@ -266,6 +267,14 @@ void ExtractStage::run(StageContext& ctx) const {
   namespace ob = extract::observe;
   ob::ClosurePointObserver closurePoint({p.at("family"), shearRate, materials, start, up.stage()});
   std::vector<ob::FrameObserver*> observers{&closurePoint};
+  // A mixture's frames: its species' and species pairs' points beside the mixture's (issue 60).
+  std::optional<ob::SpeciesClosurePoints> speciesPoints;
+  const bool mixture = std::any_of(firstFrame.species.begin(), firstFrame.species.end(),
+                                   [&](std::int32_t s) { return s != firstFrame.species.front(); });
+  if (p.at("closure_point").get<bool>() && mixture) {
+    speciesPoints.emplace(ob::ClosurePointOptions{p.at("family"), shearRate, materials, start, up.stage()});
+    observers.push_back(&*speciesPoints);
+  }
   std::optional<ob::FieldObserver> fields;
   if (p.contains("grid_cells")) {
     std::array<int, 3> cells{};
@@ -338,6 +347,7 @@ void ExtractStage::run(StageContext& ctx) const {
     }
     summary.erase("extra_json");
   }
+  if (speciesPoints) speciesPoints->finish(sink, result);  // after the mixture's row: the database lists it first
   summary.update(result.summary);
   ctx.setSummary(summary);
 }

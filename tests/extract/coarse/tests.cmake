@@ -10,6 +10,7 @@ grainbridge_add_test(test_extract_coarse
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/StressWidthConvergenceTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/ContactStatisticsTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/DissipationRateTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coarse/SpeciesStressTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coarse/CoarseGrainerTest.cpp
   LIBS extract engines_dem
   LABELS "physics;extract"

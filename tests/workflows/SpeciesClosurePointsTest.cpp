@@ -1,0 +1,116 @@
+// A mixture's closure points (issue 60): a sheared binary box's extract records, beside the
+// mixture's point, one row per species and one per species pair. The parts are Eq. 2.3 split
+// (extract/coarse/SpeciesStress.hpp), so they add up to the mixture's values frame by frame and
+// therefore in their time averages: the partial pressures and shear stresses to the mixture's,
+// the pairs' contact pressures to the species' contact parts, the pairs' dashpot powers to the
+// mixture's, the mass-weighted species temperatures to the mixture's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "db/ClosureStore.hpp"
+#include "db/Database.hpp"
+#include "tests/support/Cli.hpp"
+
+using namespace grainbridge;
+using namespace grainbridge::testing;
+using nlohmann::json;
+
+namespace {
+
+constexpr double kSmall = 1.52e-3, kLarge = 2.49e-3, kRhoSmall = 2523.0, kRhoLarge = 2526.0;
+constexpr int kSmallCount = 176, kLargeCount = 40;  // equal solids volumes (x = 0.5 within 0.3 %)
+
+// The Goldschmidt pair at total solid fraction 0.15, e = 0.9, frictionless, 200 1/s.
+json workflow() {
+  const double solids = M_PI / 6.0 * (kSmallCount * std::pow(kSmall, 3) + kLargeCount * std::pow(kLarge, 3));
+  std::ostringstream edge;
+  edge.precision(8);
+  edge << std::cbrt(solids / 0.15) * 1e3 << " mm";
+  return {
+      {"name", "mixture"},
+      {"stages",
+       {{"shear",
+         {{"type", "dem"},
+          {"params",
+           {{"box_lo", {0, 0, 0}},
+            {"box_hi", {edge.str(), edge.str(), edge.str()}},
+            {"periodic", "xyz"},
+            {"gravity", {0, 0, 0}},
+            {"shear_rate", "200 1/s"},
+            {"dt", "2e-6 s"},
+            {"duration", "0.1 s"},
+            {"frames", 50},
+            {"series_points", 10},
+            {"progress", false},
+            {"initial_temperature", "0.01 m2/s2"},
+            {"species",
+             {{{"name", "small"}, {"diameter", "1.52 mm"}, {"density", "2523 kg/m3"}, {"count", kSmallCount}},
+              {{"name", "large"}, {"diameter", "2.49 mm"}, {"density", "2526 kg/m3"}, {"count", kLargeCount}}}},
+            {"contact", {{"kn", "5000 N/m"}, {"restitution", 0.9}, {"mu", 0}}}}}}},
+        {"closure",
+         {{"type", "extract"}, {"from", "shear"}, {"params", {{"family", "simple_shear"}, {"start_strain", 5}}}}}}}};
+}
+
+double extra(const json& row, const char* key) { return json::parse(row["extra_json"].get<std::string>())[key]; }
+
+}  // namespace
+
+TEST(SpeciesClosurePoints, AShearedBinaryBoxRecordsItsSpeciesAndPairsWhosePartsAddUp) {
+  TempDir work;
+  writeText(work.path() / "wf.json", workflow().dump(2));
+  const auto r = runGrainbridge(work.path(), "run wf.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(work.path() / "results/mixture/closure"));
+
+  auto database = db::Database::openReadOnly(work.path() / "results/mixture/grainbridge.sqlite");
+  const auto rows = db::ClosureStore(database).query({});
+  std::map<std::string, json> by;
+  for (const auto& row : rows) by[row["species"].get<std::string>()] = row;
+  ASSERT_EQ(rows.size(), 6u);
+  for (const char* s : {"all", "small", "large", "small+small", "small+large", "large+large"}) {
+    ASSERT_TRUE(by.count(s)) << s;
+  }
+  EXPECT_EQ(rows.front()["species"], "all");  // the mixture's row first
+  const json &mix = by["all"], &small = by["small"], &large = by["large"];
+
+  const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
+  // The state: the species' own grains, fractions adding up to the mixture's, x = 0.5.
+  EXPECT_DOUBLE_EQ(small["diameter"].get<double>(), kSmall);
+  EXPECT_DOUBLE_EQ(large["density"].get<double>(), kRhoLarge);
+  EXPECT_TRUE(near(small["solid_fraction"].get<double>() + large["solid_fraction"].get<double>(),
+                   mix["solid_fraction"].get<double>()));
+  EXPECT_NEAR(small["volume_share"].get<double>(), 0.5, 0.003);
+  EXPECT_NEAR(small["mixture_solid_fraction"].get<double>(), 0.15, 1e-6);
+  EXPECT_DOUBLE_EQ(small["restitution"].get<double>(), 0.9);
+
+  // Partial stresses add up to the mixture's.
+  EXPECT_TRUE(near(small["pressure"].get<double>() + large["pressure"].get<double>(), mix["pressure"].get<double>()));
+  EXPECT_TRUE(near(small["shear_stress"].get<double>() + large["shear_stress"].get<double>(),
+                   mix["shear_stress"].get<double>()));
+  // The pairs' contact pressures add up to the species' contact parts, their dashpots to the mixture's.
+  double pairs = 0.0, dashpots = 0.0;
+  for (const char* s : {"small+small", "small+large", "large+large"}) {
+    pairs += by[s]["pressure"].get<double>();
+    dashpots += by[s]["dissipation_rate"].get<double>();
+    EXPECT_GT(by[s]["pressure"].get<double>(), 0.0) << s;
+  }
+  EXPECT_TRUE(near(pairs, extra(small, "pressure_contact") + extra(large, "pressure_contact")));
+  EXPECT_TRUE(near(dashpots, extra(mix, "dissipation_rate_dashpots")));
+  // The mixture's temperature is the species' weighted by mass.
+  const double mSmall = kSmallCount * kRhoSmall * std::pow(kSmall, 3),
+               mLarge = kLargeCount * kRhoLarge * std::pow(kLarge, 3);
+  EXPECT_TRUE(near(
+      (mSmall * small["granular_temperature"].get<double>() + mLarge * large["granular_temperature"].get<double>()) /
+          (mSmall + mLarge),
+      mix["granular_temperature"].get<double>()));
+  // T_small / T_large on the cross pair, from the same series.
+  EXPECT_TRUE(near(extra(by["small+large"], "temperature_ratio"),
+                   small["granular_temperature"].get<double>() / large["granular_temperature"].get<double>()));
+  EXPECT_GT(extra(by["small+large"], "temperature_ratio_err"), 0.0);
+  EXPECT_GT(small["p_theta"].get<double>(), 0.0);
+  EXPECT_GT(large["eta_theta"].get<double>(), 0.0);
+}
