@@ -312,19 +312,7 @@ void MultiFluidModel::setMixtureContacts(const CellMixture& cell, std::size_t m,
   // Called under Lebowitz's g0 only, where the cell's own mixture is there.
   const closures::LebowitzMixture mixture =
       shift == 0.0 ? cell.mixture.value() : closures::LebowitzMixture(fractions.values(), diameters_);
-  ks.g0 = mixture.g0(own, own);
-  if (params_.mixtureKineticTheory == MixtureKineticTheory::PerPhase) {
-    // Eqs. 3.21-3.25, 5.7 and 5.20 as printed: eps_sm g0_mm, the phase's own contacts.
-    ks.contactSum = fractions[own] * ks.g0;
-    ks.dissipationSum = ks.contactSum;
-    return;
-  }
-  ks.contactSum = 0.0;
-  ks.dissipationSum = 0.0;
-  for (std::size_t l = 0; l < fractions.size(); ++l) {
-    ks.contactSum += fractions[l] * mixture.g0(own, l);
-    ks.dissipationSum += fractions[l] * mixture.g0(l, l);
-  }
+  closures::setMixtureContacts(mixture, fractions.values(), own, params_.mixtureKineticTheory, ks);
 }
 
 void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProperties& p, std::size_t m, std::size_t c,

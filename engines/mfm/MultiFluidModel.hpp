@@ -35,6 +35,7 @@
 #include "engines/closures/ClosureModel.hpp"
 #include "engines/closures/GasSolidsDrag.hpp"
 #include "engines/closures/JohnsonJackson.hpp"
+#include "engines/closures/MixtureContacts.hpp"
 #include "engines/closures/MixturePacking.hpp"
 #include "engines/closures/PlasticRegime.hpp"
 #include "engines/closures/SolidsSolidsDrag.hpp"
@@ -97,13 +98,9 @@ struct SolidsPair {
 // values of theta_m to zero when Ep_g < EP_star (Schaeffer, 1987)").
 enum class PlasticTheta { Solved, Pinned };
 
-// How a phase of a mixture counts contacts in its kinetic theory (Lebowitz g0):
-// Summed, MFiX's form since 2005 (SUM_EpsGo, KineticState.hpp): eps_s g0 becomes sum_l eps_l g0_ml
-// in the pressure, viscosities and conductivity and sum_l eps_l g0_ll in the dissipation, so two
-// identical phases add up to one; PerPhase, the equations as printed (Eqs. 3.21-3.25, 5.7, 5.20)
-// and as MFiX ran them before 2005-06: each phase's own eps_sm g0_mm throughout, so a phase
-// collides with its own kind only (two identical halves of a bed dissipate half as much).
-enum class MixtureKineticTheory { Summed, PerPhase };
+// How a phase of a mixture counts contacts in its kinetic theory (Lebowitz g0): Summed (MFiX's
+// SUM_EpsGo) or PerPhase (the equations as printed), closures/MixtureContacts.hpp.
+using MixtureKineticTheory = closures::MixtureKineticTheory;
 
 struct MultiFluidParams {
   GasPhase gas;
