@@ -4,13 +4,14 @@
 #include "workflows/stages/BedCompareStage.hpp"
 #include "workflows/stages/CompareStage.hpp"
 #include "workflows/stages/DemStage.hpp"
+#include "workflows/stages/ExtractStage.hpp"
 #include "workflows/stages/FluidizationStage.hpp"
 #include "workflows/stages/MfmStage.hpp"
-#include "workflows/stages/TfdemStage.hpp"
-#include "workflows/stages/ExtractStage.hpp"
+#include "workflows/stages/MixtureCompareStage.hpp"
 #include "workflows/stages/ParticleGasStage.hpp"
 #include "workflows/stages/ReportStage.hpp"
 #include "workflows/stages/TabulateStage.hpp"
+#include "workflows/stages/TfdemStage.hpp"
 
 namespace grainbridge::workflows::stages {
 
@@ -26,6 +27,7 @@ const StageRegistry& StageRegistry::builtin() {
     types.push_back(std::make_unique<ExtractStage>());
     types.push_back(std::make_unique<TabulateStage>());
     types.push_back(std::make_unique<CompareStage>());
+    types.push_back(std::make_unique<MixtureCompareStage>());
     types.push_back(std::make_unique<FluidizationStage>());
     types.push_back(std::make_unique<BedCompareStage>());
     types.push_back(std::make_unique<ReportStage>());
