@@ -10,6 +10,7 @@
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/text/NumberText.hpp"
+#include "engines/closures/GhdTemperatureRatio.hpp"
 #include "engines/closures/MixtureSimpleShear.hpp"
 #include "workflows/report/Plot.hpp"
 
@@ -129,6 +130,20 @@ std::vector<kt::ShearedPhaseState> predictAt(kt::KineticModelName model, kt::Mix
   return kt::mixtureSimpleShear(model, form, phases, box.shearRate);
 }
 
+// theta_0 / theta_1 (per unit mass) of Garzo, Hrenya and Dufty's zeroth order at the box's
+// composition scaled to `mixtureFraction`, with the first species' restitution for every pair.
+double ghdThetaRatio(const Box& box, double mixtureFraction) {
+  std::vector<kt::CoolingSpecies> two;
+  for (std::size_t m = 0; m < 2; ++m) {
+    const SpeciesPoint& s = box.species[m];
+    two.push_back({mixtureFraction * s.share, s.diameter, s.density});
+  }
+  const double massRatio = box.species[1].density * std::pow(box.species[1].diameter, 3) /
+                           (box.species[0].density * std::pow(box.species[0].diameter, 3));
+  return kt::ghdTemperatureRatio(two, box.species[0].restitution) * massRatio;
+}
+constexpr const char* kGhdColour = "#009E73";
+
 // A compared quantity: of a species (its index) or of the box (species < 0), in shear units of the
 // first species (rho_0 d_0^2 gammadot^2 for stresses, (d gammadot)^2 for temperatures).
 struct Quantity {
@@ -209,6 +224,7 @@ void MixtureCompareStage::run(StageContext& ctx) const {
   // Per quantity kind (key without the species) and form: the relative deviations, for the findings.
   std::map<std::string, std::map<std::string, std::vector<double>>> deviations;
   std::map<std::string, std::string> labels;
+  std::vector<double> ghdDeviations;
   for (const Box& box : boxes) {
     for (const Form& f : kForms) {
       const auto pred = predictAt(model, f.form, box, box.mixtureFraction);
@@ -226,6 +242,15 @@ void MixtureCompareStage::run(StageContext& ctx) const {
           labels[q.key] = q.label;
         }
       }
+    }
+    // The temperature ratio by a theory that exchanges energy between species (GHD's zeroth
+    // order): the one quantity it is compared on here.
+    if (std::isfinite(box.temperatureRatio.value) && box.species.size() == 2) {
+      const double kt = ghdThetaRatio(box, box.mixtureFraction);
+      csv << box.mixtureFraction << ',' << box.species[0].share << ',' << box.species[0].restitution << ','
+          << box.shearRate << ",temperature_ratio," << box.temperatureRatio.value << ',' << box.temperatureRatio.error
+          << ",ghd," << kt << ',' << (box.temperatureRatio.value - kt) / kt << '\n';
+      ghdDeviations.push_back(std::abs(std::log(box.temperatureRatio.value / kt)));
     }
   }
   core::writeFileAtomically(ctx.outputDir() / "mixture_comparison.csv", csv.str());
@@ -293,6 +318,14 @@ void MixtureCompareStage::run(StageContext& ctx) const {
                            return pred[0].granularTemperature / pred[1].granularTemperature;
                          });
   }
+  if (!ghdDeviations.empty()) {
+    findings.headline +=
+        ", Garzo-Hrenya-Dufty's zeroth order (energy exchanged between species) " +
+        range([](const Box& b) { return b.species.size() == 2 ? ghdThetaRatio(b, b.mixtureFraction) : NAN; });
+    summary["temperature_ratio_ghd_factor"] = std::exp(mean(ghdDeviations));
+    findings.rows.push_back(
+        {"θ ratio by GHD's zeroth order", std::to_string(ghdDeviations.size()), "", "", factor(mean(ghdDeviations))});
+  }
   findings.headline += "; equal energy per grain would give m_" + s1.name + " / m_" + s0.name + " = " +
                        core::humanNumber(massRatio, 3) + ".";
   summary["temperature_ratio_equipartition"] = massRatio;
@@ -341,6 +374,19 @@ void MixtureCompareStage::run(StageContext& ctx) const {
           }
         }
         if (!curve.x.empty()) fig.series.push_back(std::move(curve));
+      }
+      if (kinds[k].key == "temperature_ratio" && ref->species.size() == 2) {
+        report::Series curve;
+        curve.label = "GHD zeroth order, " + s.label.substr(5);
+        curve.model = "ghd";
+        curve.colour = kGhdColour;
+        curve.style = report::Series::Style::Line;
+        curve.variant = variant;
+        for (double phi = 0.02; phi <= 0.6001; phi += 0.01) {
+          curve.x.push_back(phi);
+          curve.y.push_back(ghdThetaRatio(*ref, phi));
+        }
+        fig.series.push_back(std::move(curve));
       }
       fig.series.push_back(std::move(s));
       ++variant;

@@ -6,7 +6,9 @@
 // SUM_EpsGo; per_phase: the equations as printed) with closures/MixtureSimpleShear. Compared per
 // species: the temperature, the partial pressure and its kinetic part, the shear stress; per box:
 // the temperature ratio of the first two species, the collisional pressure summed over pairs (no
-// attribution to species needed) and the dissipation. Writes mixture_comparison.csv, a figure per
+// attribution to species needed) and the dissipation; the temperature ratio also against
+// Garzo, Hrenya and Dufty's zeroth order (closures/GhdTemperatureRatio), a theory whose species
+// exchange energy in collisions. Writes mixture_comparison.csv, a figure per
 // quantity in shear units against the total solid fraction, and findings whose headline says
 // which form is closer, where, and by how much.
 #include "workflows/stages/StageType.hpp"
@@ -17,7 +19,8 @@ class MixtureCompareStage final : public StageType {
  public:
   MixtureCompareStage();
   [[nodiscard]] std::string name() const override { return "compare_mixture"; }
-  [[nodiscard]] int implVersion() const override { return 1; }
+  // 2: the temperature ratio beside Garzo, Hrenya and Dufty's zeroth order
+  [[nodiscard]] int implVersion() const override { return 2; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"boxes", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "a mixture's DEM closures per species against the summed and per-phase mixture kinetic theories";

@@ -20,5 +20,6 @@ grainbridge_add_test(test_closures
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/ClosureModelTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/MinimumFluidizationTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/closures/MixtureSimpleShearTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/closures/GhdTemperatureRatioTest.cpp
   LIBS engines_closures
   LABELS "unit;closures")
