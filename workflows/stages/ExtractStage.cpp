@@ -75,7 +75,8 @@ ExtractStage::ExtractStage() {
                .doc("elongation factor of previously selected MST edges"))
       .add(ParamSpec::boolean("closure_point")
                .defaultValue(true)
-               .doc("record the time-averaged closure point; false for runs that have no steady state to "
+               .doc("record the time-averaged closure point (and, for a mixture in a box periodic along every "
+                    "axis, one per species and species pair); false for runs that have no steady state to "
                     "average (a vibrated Brazil-nut bed analysed for its surface or structure)"))
       .add(ParamSpec::integerList("surface_particles", 0)
                .defaultValue(json::array())
@@ -267,11 +268,15 @@ void ExtractStage::run(StageContext& ctx) const {
   namespace ob = extract::observe;
   ob::ClosurePointObserver closurePoint({p.at("family"), shearRate, materials, start, up.stage()});
   std::vector<ob::FrameObserver*> observers{&closurePoint};
-  // A mixture's frames: its species' and species pairs' points beside the mixture's (issue 60).
+  // A homogeneous mixture's frames (a box periodic along every axis, without walls: the closure
+  // boxes): its species' and species pairs' points beside the mixture's (issue 60). A bed under
+  // gravity (the Brazil-nut pack) has no homogeneous state for them to describe.
   std::optional<ob::SpeciesClosurePoints> speciesPoints;
   const bool mixture = std::any_of(firstFrame.species.begin(), firstFrame.species.end(),
                                    [&](std::int32_t s) { return s != firstFrame.species.front(); });
-  if (p.at("closure_point").get<bool>() && mixture) {
+  const auto& box = firstFrame.domain;
+  const bool homogeneous = box.periodic[0] && box.periodic[1] && box.periodic[2] && box.walls.empty();
+  if (p.at("closure_point").get<bool>() && mixture && homogeneous) {
     speciesPoints.emplace(ob::ClosurePointOptions{p.at("family"), shearRate, materials, start, up.stage()});
     observers.push_back(&*speciesPoints);
   }
