@@ -365,7 +365,7 @@ void MixtureCompareStage::run(StageContext& ctx) const {
         curve.colour = f.colour;
         curve.style = report::Series::Style::Line;
         curve.variant = variant;
-        const Quantity& q = quantitiesOf(*ref)[k];
+        const Quantity q = quantitiesOf(*ref)[k];  // a copy: the vector is a temporary
         for (double phi = 0.02; phi <= 0.6001; phi += 0.01) {
           const double v = q.predicted(predictAt(model, f.form, *ref, phi), q.species, *ref) / q.unit;
           if (std::isfinite(v) && (v > 0.0 || kinds[k].key == "temperature_ratio")) {
