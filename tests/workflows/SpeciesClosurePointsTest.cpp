@@ -162,4 +162,37 @@ TEST(SpeciesClosurePoints, TheSmokeLoopFindsTheSmallGrainsHotterThanEitherFormPr
   EXPECT_EQ(ratios, 4);  // two boxes, two forms
   EXPECT_EQ(ghd, 2);
   EXPECT_NE(manifest["findings"]["headline"].get<std::string>().find("θ_small / θ_large: DEM"), std::string::npos);
+
+  // The small species' table against the mixture's total fraction and its share x: its nodes are
+  // the species' points.
+  auto database = db::Database::openReadOnly(work.path() / "results/binary-closures-smoke/grainbridge.sqlite");
+  db::ClosureStore store(database);
+  db::ClosureQuery points;
+  points.ranges.push_back({"species", std::nullopt, std::nullopt, "small"});
+  const auto small = store.query(points);
+  ASSERT_EQ(small.size(), 2u);
+  const auto nodes = store.tableNodes({});
+  std::size_t pTheta = 0;
+  for (const auto& node : nodes) {
+    if (node["quantity"] != "p_theta") continue;
+    ++pTheta;
+    bool found = false;
+    for (const auto& pt : small) {
+      if (pt["species"] == "small" &&
+          std::abs(pt["mixture_solid_fraction"].get<double>() - node["solid_fraction"].get<double>()) < 1e-12) {
+        EXPECT_DOUBLE_EQ(node["value"].get<double>(), pt["p_theta"].get<double>());
+        found = true;
+      }
+    }
+    EXPECT_TRUE(found) << node.dump();
+  }
+  EXPECT_EQ(pTheta, 2u);
+
+  // volume_share without a species is refused at check, naming the key.
+  json config = json::parse(readText(work.path() / "wf.json"));
+  config["stages"]["table_small"]["params"].erase("species");
+  writeText(work.path() / "bad.json", config.dump());
+  const auto bad = runGrainbridge(work.path(), "check bad.json");
+  EXPECT_NE(bad.exitCode, 0);
+  EXPECT_NE(bad.output.find("/stages/table_small/params/second_variable"), std::string::npos) << bad.output;
 }

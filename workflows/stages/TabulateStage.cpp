@@ -1,9 +1,10 @@
 #include "workflows/stages/TabulateStage.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
-#include <limits>
 
 #include "core/ClosureTable.hpp"
 #include "core/Error.hpp"
@@ -21,8 +22,16 @@ TabulateStage::TabulateStage() {
       .add(ParamSpec::string("table").required().doc("name of the closure tables (db query, engines load it by name)"))
       .add(ParamSpec::string("second_variable")
                .defaultValue("restitution")
-               .options({"", "restitution"})
-               .doc("second axis of the tables; \"\" for tables in solid fraction only"))
+               .options({"", "restitution", "volume_share"})
+               .doc("second axis of the tables; \"\" for tables in solid fraction only; volume_share (the "
+                    "species' share x of the solids volume) with `species`"))
+      .add(ParamSpec::string("species").defaultValue("").doc(
+          "a mixture's species (its name in the frames): tables of that species' closure points "
+          "against the mixture's total solid fraction (issue 60); \"\" for the mixture's or one "
+          "species' own points"))
+      .add(ParamSpec::number("restitution")
+               .min(0.0)
+               .doc("use the points of this restitution only (a species table over volume_share is of one e)"))
       .add(ParamSpec::number("friction")
                .min(0.0)
                .doc("use the points of this friction coefficient (required when the points have several)"))
@@ -37,25 +46,38 @@ namespace {
 
 // States within this relative distance are the same grid node (measured solid fractions of one
 // nominal state differ in the last digits only: a periodic box's volume is fixed).
-bool same(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max({1.0, std::abs(a), std::abs(b)}); }
+// A mixture's boxes of one nominal state hold integer grain counts, so their total fractions
+// differ by a few 1e-6 between compositions (the Goldschmidt pair's 0.2 is 0.1999993 at x 0.5 and
+// 0.2000005 at x 0.75): a species' table takes nodes within 1e-4 as one.
+constexpr double kNodeTolerance = 1e-6, kMixtureNodeTolerance = 1e-4;
 
-std::vector<double> distinct(std::vector<double> v) {
+bool same(double a, double b, double tolerance = kNodeTolerance) {
+  return std::abs(a - b) <= tolerance * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+std::vector<double> distinct(std::vector<double> v, double tolerance = kNodeTolerance) {
   std::sort(v.begin(), v.end());
   std::vector<double> out;
   for (double x : v) {
-    if (out.empty() || !same(out.back(), x)) out.push_back(x);
+    if (out.empty() || !same(out.back(), x, tolerance)) out.push_back(x);
   }
   return out;
 }
 
-std::size_t indexOf(const std::vector<double>& axis, double x) {
+std::size_t indexOf(const std::vector<double>& axis, double x, double tolerance = kNodeTolerance) {
   for (std::size_t i = 0; i < axis.size(); ++i) {
-    if (same(axis[i], x)) return i;
+    if (same(axis[i], x, tolerance)) return i;
   }
   return axis.size();
 }
 
 }  // namespace
+
+void TabulateStage::checkParams(const json& p, const std::string& ptr, core::json::Diagnostics& d) const {
+  if (p.at("second_variable") == "volume_share" && p.at("species").get<std::string>().empty()) {
+    d.add(ptr + "/second_variable", "volume_share is a species' share of a mixture: give `species` too");
+  }
+}
 
 void TabulateStage::checkAgainstUpstream(const json& /*p*/, const std::string& ptr,
                                          const std::vector<UpstreamPlan>& upstream, core::json::Diagnostics& d) const {
@@ -68,17 +90,39 @@ void TabulateStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
   const std::string name = p.at("table");
   const std::string second = p.at("second_variable");
+  const std::string species = p.at("species");
   std::vector<json> points;
   for (const auto& up : ctx.inputs()) {
-    if (up.records("closure_points").empty()) {
+    const auto records = up.records("closure_points");
+    if (records.empty()) {
       throw Error("tabulate: upstream " + up.stage() + " (" + up.shortKey() +
                   ") recorded no closure point; tabulate takes stages that do (extract)");
     }
     json s = up.summary();
+    if (!species.empty()) {
+      // The species' row of a mixture's box, placed at the mixture's total solid fraction.
+      const auto row = std::find_if(records.begin(), records.end(),
+                                    [&](const json& r) { return r.value("species", std::string()) == species; });
+      if (row == records.end()) {
+        throw Error("/stages/" + ctx.stage() + "/params/species: upstream " + up.stage() + " (" + up.shortKey() +
+                    ") recorded no closure point of species \"" + species +
+                    "\" (a mixture's box periodic along every axis records one per species)");
+      }
+      s = *row;
+      s["solid_fraction"] = row->at("mixture_solid_fraction");
+    }
     s["__key"] = up.key();
     points.push_back(std::move(s));
   }
   if (points.empty()) throw Error("tabulate: no upstream extract instances; give it \"from\"");
+  if (p.contains("restitution")) {
+    const double e = p.at("restitution");
+    std::erase_if(points, [&](const json& pt) { return !(pt.contains("restitution") && same(pt["restitution"], e)); });
+    if (points.empty()) {
+      throw Error("/stages/" + ctx.stage() + "/params/restitution: no closure point has restitution " +
+                  std::to_string(e));
+    }
+  }
 
   // One friction per table.
   std::vector<double> frictions;
@@ -111,13 +155,14 @@ void TabulateStage::run(StageContext& ctx) const {
       ys.push_back(pt.at(second));
     }
   }
-  const auto xAxis = distinct(xs);
-  const auto yAxis = second.empty() ? std::vector<double>{} : distinct(ys);
+  const double tolerance = species.empty() ? kNodeTolerance : kMixtureNodeTolerance;
+  const auto xAxis = distinct(xs, tolerance);
+  const auto yAxis = second.empty() ? std::vector<double>{} : distinct(ys, tolerance);
   const std::size_t rows = std::max<std::size_t>(1, yAxis.size());
   std::vector<const json*> node(xAxis.size() * rows, nullptr);
   for (const auto& pt : points) {
-    const std::size_t ix = indexOf(xAxis, pt.at("solid_fraction"));
-    const std::size_t iy = second.empty() ? 0 : indexOf(yAxis, pt.at(second));
+    const std::size_t ix = indexOf(xAxis, pt.at("solid_fraction"), tolerance);
+    const std::size_t iy = second.empty() ? 0 : indexOf(yAxis, pt.at(second), tolerance);
     auto& slot = node[iy * xAxis.size() + ix];
     if (slot != nullptr) {
       std::ostringstream msg;
@@ -144,6 +189,9 @@ void TabulateStage::run(StageContext& ctx) const {
   csv.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
   csv << "table,quantity,solid_fraction," << (second.empty() ? "second" : second) << ",value,uncertainty\n";
   json summary = {{"table", name}, {"friction", friction}, {"solid_fractions", xAxis.size()}, {"rows", rows}};
+  json filters = {{"friction", friction}};
+  if (!species.empty()) filters["species"] = species;
+  if (p.contains("restitution")) filters["restitution"] = p.at("restitution");
   json quantities = json::array();
   for (const char* q : {"p_theta", "eta_theta", "j_theta"}) {
     bool everywhere = true;
@@ -166,7 +214,7 @@ void TabulateStage::run(StageContext& ctx) const {
                                      {"seconds", yAxis},
                                      {"values", values},
                                      {"uncertainties", errors},
-                                     {"filters", {{"friction", friction}}}});
+                                     {"filters", filters}});
     for (std::size_t k = 0; k < node.size(); ++k) {
       csv << name << ',' << q << ',' << xAxis[k % xAxis.size()] << ','
           << (second.empty() ? 0.0 : yAxis[k / xAxis.size()]) << ',' << values[k] << ',' << errors[k] << '\n';

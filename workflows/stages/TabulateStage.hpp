@@ -24,12 +24,16 @@ class TabulateStage final : public StageType {
   }
   [[nodiscard]] const params::ParamSchema& params() const override { return schema_; }
   [[nodiscard]] InputMode inputMode() const override { return InputMode::Gather; }
-  // The tables it makes are named by `table` (a continuum stage downstream reads them).
+  // The tables it makes are named by `table` (a continuum stage downstream reads them). A species'
+  // table of a mixture is not offered: the multi-fluid model's tables are of one phase.
   [[nodiscard]] std::optional<PlannedOutput> plannedOutput(const nlohmann::json& resolved) const override {
     PlannedOutput out;
-    out.closureTables = resolved.at("table").get<std::string>();
+    if (resolved.value("species", std::string()).empty()) out.closureTables = resolved.at("table").get<std::string>();
     return out;
   }
+  // second_variable volume_share needs a species.
+  void checkParams(const nlohmann::json& resolved, const std::string& pointer,
+                   core::json::Diagnostics& diagnostics) const override;
   // Every upstream must record closure points (extract's plannedOutput says so).
   void checkAgainstUpstream(const nlohmann::json& resolved, const std::string& pointer,
                             const std::vector<UpstreamPlan>& upstream,
