@@ -148,7 +148,20 @@ void SpeciesClosurePoints::finish(OutputSink& out, ExtractResult& /*result*/) {
       row["restitution"] = own->restitution;
       row["friction"] = own->friction;
     }
-    addStressForms(row, P, tau, T, {density_[s], diameter_[s], T.mean, shearRate});
+    const core::ClosureFormState state{density_[s], diameter_[s], T.mean, shearRate};
+    addStressForms(row, P, tau, T, state);
+    if (shearRate > 0.0) {
+      // The species' J: the shear work on its partial stress, which in steady shear is its net
+      // collisional loss (what its collisions dissipate, and what they hand the other species),
+      // as the mixture's J is the whole shear work; the species' J add up to the mixture's.
+      const core::MeasuredValue J{tau.mean * shearRate, tau.error * shearRate};
+      row["dissipation_rate"] = J.mean;
+      row["dissipation_rate_err"] = J.error;
+      if (T.mean > 0.0) {
+        row["j_theta"] = core::toClosureForm(core::ClosureForm::JTheta, J.mean, state);
+        row["j_theta_err"] = core::closureFormError(core::ClosureForm::JTheta, J, T, state);
+      }
+    }
     rows.push_back(std::move(row));
   }
 

@@ -4,7 +4,8 @@
 // temperature and partial stress, and each pair's contact stress and dashpot power
 // (coarse/SpeciesStress.hpp); time-averaged with block-averaging errors into one closure_points
 // row per species (its name in `species`, its own diameter, density and partial fraction, the
-// mixture's total fraction and its share x of the solids volume) and one per pair
+// mixture's total fraction and its share x of the solids volume; under shear its J, the shear work
+// on its partial stress, which the species' add up to the mixture's) and one per pair
 // ("small+large": the pair's contacts only, the collisional part a mixture theory sums over
 // pairs, with the two species' temperature ratio). species_points.csv holds the rows too, and
 // species_frames.csv the per-frame values.

@@ -93,6 +93,10 @@ TEST(SpeciesClosurePoints, AShearedBinaryBoxRecordsItsSpeciesAndPairsWhosePartsA
   EXPECT_TRUE(near(small["pressure"].get<double>() + large["pressure"].get<double>(), mix["pressure"].get<double>()));
   EXPECT_TRUE(near(small["shear_stress"].get<double>() + large["shear_stress"].get<double>(),
                    mix["shear_stress"].get<double>()));
+  // Each species' J is the shear work on its partial stress: they add up to the mixture's.
+  EXPECT_TRUE(near(small["dissipation_rate"].get<double>() + large["dissipation_rate"].get<double>(),
+                   mix["dissipation_rate"].get<double>()));
+  EXPECT_GT(small["j_theta"].get<double>(), 0.0);
   // The pairs' contact pressures add up to the species' contact parts, their dashpots to the mixture's.
   double pairs = 0.0, dashpots = 0.0;
   for (const char* s : {"small+small", "small+large", "large+large"}) {
