@@ -38,14 +38,15 @@ std::vector<ShearedPhaseState> mixtureSimpleShear(KineticModelName model, Mixtur
                   "'s viscosity and dissipation do not scale as sqrt(theta) and theta^(3/2)");
     }
     ShearedPhaseState state;
-    if (unit.dissipationRate > 0.0) {
-      const double theta = unit.shearViscosity * shearRate * shearRate / unit.dissipationRate;
+    const double dissipation = unit.dissipationRate * phases[m].dissipationScale;  // at theta = 1
+    if (dissipation > 0.0) {
+      const double theta = unit.shearViscosity * shearRate * shearRate / dissipation;
       state.granularTemperature = theta;
       state.pressure = unit.pressure * theta;  // p is proportional to theta
       state.kineticPressure = s.density * s.solidFraction * theta;
       state.viscosity = unit.shearViscosity * std::sqrt(theta);
       state.shearStress = state.viscosity * shearRate;
-      state.dissipationRate = unit.dissipationRate * theta * std::sqrt(theta);
+      state.dissipationRate = dissipation * theta * std::sqrt(theta);
     }
     out.push_back(state);
   }

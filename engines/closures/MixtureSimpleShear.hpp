@@ -21,6 +21,9 @@ struct ShearedPhase {
   double diameter = 0.0;       // d_m [m]
   double density = 0.0;        // rho_m [kg/m^3]
   double restitution = 1.0;    // e_mm
+  // J_m over the model's J_m: (1 + e)(1 - e_eff) / (1 - e^2) with the particle-rotation model
+  // (EffectiveRestitution.hpp, Eq. 5.20), 1 without; as the multi-fluid model scales it.
+  double dissipationScale = 1.0;
 };
 
 struct ShearedPhaseState {

@@ -10,6 +10,7 @@
 #include "core/Error.hpp"
 #include "core/Files.hpp"
 #include "core/text/NumberText.hpp"
+#include "engines/closures/EffectiveRestitution.hpp"
 #include "engines/closures/GhdTemperatureRatio.hpp"
 #include "engines/closures/MixtureSimpleShear.hpp"
 #include "workflows/report/Plot.hpp"
@@ -26,6 +27,16 @@ MixtureCompareStage::MixtureCompareStage() {
                .defaultValue("lun1984")
                .options({"lun1984", "lun1984_mfix"})
                .doc("the kinetic model whose mixture forms are compared (the models that read the mixture sums)"))
+      .add(ParamSpec::boolean("rotation_model")
+               .defaultValue(false)
+               .doc("the particle-rotation model's effective restitution in each phase's dissipation (Eqs. "
+                    "5.11-5.20, from the boxes' friction), as mfm's rotation_model; frictionless boxes are "
+                    "unaffected"))
+      .add(ParamSpec::number("tangential_restitution")
+               .defaultValue(0.33)
+               .min(-1.0)
+               .max(1.0)
+               .doc("beta0 of the rotation model (Eq. 5.17; Table 5.1's 0.33)"))
       .add(ParamSpec::string("title")
                .defaultValue("A mixture's DEM closures against mixture kinetic theory")
                .doc("page title"));
@@ -39,7 +50,7 @@ struct Measured {
 
 struct SpeciesPoint {
   std::string name;
-  double fraction = 0, share = 0, diameter = 0, density = 0, restitution = 1;
+  double fraction = 0, share = 0, diameter = 0, density = 0, restitution = 1, friction = 0;
   Measured temperature, pressure, kineticPressure, shearStress;
 };
 
@@ -80,6 +91,7 @@ Box boxOf(const UpstreamInstance& up) {
       s.diameter = row.at("diameter").get<double>();
       s.density = row.at("density").get<double>();
       s.restitution = row.value("restitution", 1.0);
+      s.friction = row.value("friction", 0.0);
       s.temperature = measured(row, "granular_temperature");
       s.pressure = measured(row, "pressure");
       s.shearStress = measured(row, "shear_stress");
@@ -121,18 +133,41 @@ struct Form {
 constexpr Form kForms[] = {{kt::MixtureKineticTheory::Summed, "summed", "#0072B2"},
                            {kt::MixtureKineticTheory::PerPhase, "per_phase", "#D55E00"}};
 
+// The theory a box is compared with: the kinetic model, and the rotation model's effective
+// restitution in the dissipation when asked for.
+struct Theory {
+  kt::KineticModelName model = kt::KineticModelName::Lun1984;
+  bool rotation = false;
+  double tangentialRestitution = 0.33;
+  // e_eff of a species (Eq. 5.19) under the rotation model, else its e.
+  [[nodiscard]] double effectiveRestitution(const SpeciesPoint& s) const {
+    return rotation ? kt::EffectiveRestitution{{s.friction, tangentialRestitution}}
+                          .evaluate(s.restitution)
+                          .effectiveRestitution
+                    : s.restitution;
+  }
+};
+
 // The prediction at a box's composition, scaled to `mixtureFraction` (the curves).
-std::vector<kt::ShearedPhaseState> predictAt(kt::KineticModelName model, kt::MixtureKineticTheory form, const Box& box,
+std::vector<kt::ShearedPhaseState> predictAt(const Theory& theory, kt::MixtureKineticTheory form, const Box& box,
                                              double mixtureFraction) {
   std::vector<kt::ShearedPhase> phases;
-  for (const SpeciesPoint& s : box.species)
-    phases.push_back({mixtureFraction * s.share, s.diameter, s.density, s.restitution});
-  return kt::mixtureSimpleShear(model, form, phases, box.shearRate);
+  for (const SpeciesPoint& s : box.species) {
+    kt::ShearedPhase phase{mixtureFraction * s.share, s.diameter, s.density, s.restitution};
+    const double elastic = 1.0 - s.restitution * s.restitution;
+    if (theory.rotation && elastic > 0.0) {
+      // Eq. 5.20 over Eq. 5.7, as mfm scales each phase's dissipation.
+      phase.dissipationScale = (1.0 + s.restitution) * (1.0 - theory.effectiveRestitution(s)) / elastic;
+    }
+    phases.push_back(phase);
+  }
+  return kt::mixtureSimpleShear(theory.model, form, phases, box.shearRate);
 }
 
 // theta_0 / theta_1 (per unit mass) of Garzo, Hrenya and Dufty's zeroth order at the box's
-// composition scaled to `mixtureFraction`, with the first species' restitution for every pair.
-double ghdThetaRatio(const Box& box, double mixtureFraction) {
+// composition scaled to `mixtureFraction`, with the first species' restitution (its effective
+// one under the rotation model) for every pair.
+double ghdThetaRatio(const Theory& theory, const Box& box, double mixtureFraction) {
   std::vector<kt::CoolingSpecies> two;
   for (std::size_t m = 0; m < 2; ++m) {
     const SpeciesPoint& s = box.species[m];
@@ -140,7 +175,7 @@ double ghdThetaRatio(const Box& box, double mixtureFraction) {
   }
   const double massRatio = box.species[1].density * std::pow(box.species[1].diameter, 3) /
                            (box.species[0].density * std::pow(box.species[0].diameter, 3));
-  return kt::ghdTemperatureRatio(two, box.species[0].restitution) * massRatio;
+  return kt::ghdTemperatureRatio(two, theory.effectiveRestitution(box.species[0])) * massRatio;
 }
 constexpr const char* kGhdColour = "#009E73";
 
@@ -209,6 +244,7 @@ void MixtureCompareStage::checkAgainstUpstream(const json& /*p*/, const std::str
 void MixtureCompareStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
   const auto model = kt::kineticModelFromString(p.at("model").get<std::string>());
+  const Theory theory{model, p.at("rotation_model").get<bool>(), p.at("tangential_restitution").get<double>()};
   std::vector<Box> boxes;
   for (const auto& up : ctx.inputs()) boxes.push_back(boxOf(up));
   if (boxes.empty()) throw Error("compare_mixture: no upstream closure points; give it \"from\"");
@@ -227,7 +263,7 @@ void MixtureCompareStage::run(StageContext& ctx) const {
   std::vector<double> ghdDeviations;
   for (const Box& box : boxes) {
     for (const Form& f : kForms) {
-      const auto pred = predictAt(model, f.form, box, box.mixtureFraction);
+      const auto pred = predictAt(theory, f.form, box, box.mixtureFraction);
       for (const Quantity& q : quantitiesOf(box)) {
         if (!std::isfinite(q.dem.value)) continue;
         const double kt = q.predicted(pred, q.species, box);
@@ -246,7 +282,7 @@ void MixtureCompareStage::run(StageContext& ctx) const {
     // The temperature ratio by a theory that exchanges energy between species (GHD's zeroth
     // order): the one quantity it is compared on here.
     if (std::isfinite(box.temperatureRatio.value) && box.species.size() == 2) {
-      const double kt = ghdThetaRatio(box, box.mixtureFraction);
+      const double kt = ghdThetaRatio(theory, box, box.mixtureFraction);
       csv << box.mixtureFraction << ',' << box.species[0].share << ',' << box.species[0].restitution << ','
           << box.shearRate << ",temperature_ratio," << box.temperatureRatio.value << ',' << box.temperatureRatio.error
           << ",ghd," << kt << ',' << (box.temperatureRatio.value - kt) / kt << '\n';
@@ -292,7 +328,11 @@ void MixtureCompareStage::run(StageContext& ctx) const {
         core::humanNumber(std::exp(std::max(ms, mp)), 3) + " (geometric mean over " + std::to_string(all) +
         " quantities), closer in " + std::to_string(wins["summed"]) + " (summed) and " +
         std::to_string(wins["per_phase"]) + " (per phase) of them (" + std::string(kt::toString(model)) +
-        ", Lebowitz g0, each phase's own energy balance).";
+        ", Lebowitz g0, each phase's own energy balance" +
+        (theory.rotation
+             ? ", the rotation model's e_eff (beta0 " + core::humanNumber(theory.tangentialRestitution) + ")"
+             : std::string()) +
+        ").";
   }
   // The temperature ratio beside equipartition, which a reader needs to judge it: theta is per
   // unit mass, so equal energies per grain give theta_0 / theta_1 = m_1 / m_0.
@@ -314,14 +354,14 @@ void MixtureCompareStage::run(StageContext& ctx) const {
       " θ_" + s0.name + " / θ_" + s1.name + ": DEM " + range([](const Box& b) { return b.temperatureRatio.value; });
   for (const Form& f : kForms) {
     findings.headline += ", " + std::string(f.name) + " " + range([&](const Box& b) {
-                           const auto pred = predictAt(model, f.form, b, b.mixtureFraction);
+                           const auto pred = predictAt(theory, f.form, b, b.mixtureFraction);
                            return pred[0].granularTemperature / pred[1].granularTemperature;
                          });
   }
   if (!ghdDeviations.empty()) {
     findings.headline +=
         ", Garzo-Hrenya-Dufty's zeroth order (energy exchanged between species) " +
-        range([](const Box& b) { return b.species.size() == 2 ? ghdThetaRatio(b, b.mixtureFraction) : NAN; });
+        range([&](const Box& b) { return b.species.size() == 2 ? ghdThetaRatio(theory, b, b.mixtureFraction) : NAN; });
     summary["temperature_ratio_ghd_factor"] = std::exp(mean(ghdDeviations));
     findings.rows.push_back(
         {"θ ratio by GHD's zeroth order", std::to_string(ghdDeviations.size()), "", "", factor(mean(ghdDeviations))});
@@ -367,7 +407,7 @@ void MixtureCompareStage::run(StageContext& ctx) const {
         curve.variant = variant;
         const Quantity q = quantitiesOf(*ref)[k];  // a copy: the vector is a temporary
         for (double phi = 0.02; phi <= 0.6001; phi += 0.01) {
-          const double v = q.predicted(predictAt(model, f.form, *ref, phi), q.species, *ref) / q.unit;
+          const double v = q.predicted(predictAt(theory, f.form, *ref, phi), q.species, *ref) / q.unit;
           if (std::isfinite(v) && (v > 0.0 || kinds[k].key == "temperature_ratio")) {
             curve.x.push_back(phi);
             curve.y.push_back(v);
@@ -384,7 +424,7 @@ void MixtureCompareStage::run(StageContext& ctx) const {
         curve.variant = variant;
         for (double phi = 0.02; phi <= 0.6001; phi += 0.01) {
           curve.x.push_back(phi);
-          curve.y.push_back(ghdThetaRatio(*ref, phi));
+          curve.y.push_back(ghdThetaRatio(theory, *ref, phi));
         }
         fig.series.push_back(std::move(curve));
       }

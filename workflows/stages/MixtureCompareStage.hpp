@@ -20,7 +20,8 @@ class MixtureCompareStage final : public StageType {
   MixtureCompareStage();
   [[nodiscard]] std::string name() const override { return "compare_mixture"; }
   // 2: the temperature ratio beside Garzo, Hrenya and Dufty's zeroth order
-  [[nodiscard]] int implVersion() const override { return 2; }
+  // 3: rotation_model (the effective restitution of frictional boxes in each phase's dissipation)
+  [[nodiscard]] int implVersion() const override { return 3; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"boxes", "–"}}; }
   [[nodiscard]] std::string summary() const override {
     return "a mixture's DEM closures per species against the summed and per-phase mixture kinetic theories";

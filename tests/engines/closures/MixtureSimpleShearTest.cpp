@@ -87,6 +87,17 @@ TEST(MixtureSimpleShear, TwoIdenticalHalvesAreTheOnePhaseOnlyUnderTheSummedForm)
   }
 }
 
+TEST(MixtureSimpleShear, TheRotationModelScalesTheDissipationAndSoTheTemperature) {
+  // theta = mu(1) gammadot^2 / (s J(1)): a dissipation scale s divides theta by s, and the shear
+  // work still equals the (scaled) dissipation.
+  ShearedPhase plain{0.2, 1e-3, 2500.0, 0.9}, rotating = plain;
+  rotating.dissipationScale = 1.6;
+  const auto a = mixtureSimpleShear(KineticModelName::Lun1984, MixtureKineticTheory::Summed, {plain}, kShearRate);
+  const auto b = mixtureSimpleShear(KineticModelName::Lun1984, MixtureKineticTheory::Summed, {rotating}, kShearRate);
+  EXPECT_NEAR(b[0].granularTemperature, a[0].granularTemperature / 1.6, 1e-12 * a[0].granularTemperature);
+  EXPECT_NEAR(b[0].shearStress * kShearRate, b[0].dissipationRate, 1e-12 * b[0].dissipationRate);
+}
+
 TEST(MixtureSimpleShear, RefusesNoPhaseAndAModelThatDoesNotScaleWithTheta) {
   EXPECT_THROW((void)mixtureSimpleShear(KineticModelName::Lun1984, MixtureKineticTheory::Summed, {}, kShearRate),
                Error);
