@@ -10,7 +10,8 @@
 //
 // Fewer than kMinSamplesForBlocking frames give the plain standard error sqrt(var / (n - 1)),
 // which assumes independent frames (method PlainFewSamples says so). When no level meets the
-// criterion the largest estimate over levels with at least 4 blocks is reported, flagged
+// criterion (levels of fewer than kMinBlocks blocks never count: their error is chance) the
+// largest estimate over levels with at least kMinBlocks blocks is reported, flagged
 // plateauReached = false: the run is too short for its correlation time.
 #include <cstddef>
 #include <span>
@@ -21,6 +22,8 @@ namespace grainbridge::core::averaging {
 struct BlockAverage {
   enum class Method { Blocking, PlainFewSamples };
   static constexpr std::size_t kMinSamplesForBlocking = 16;
+  // No level with fewer blocks is reported, by the criterion or the fallback.
+  static constexpr std::size_t kMinBlocks = 4;
 
   double mean = 0.0;
   double standardError = 0.0;             // of the mean

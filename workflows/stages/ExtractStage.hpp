@@ -20,7 +20,9 @@ class ExtractStage final : public StageType {
   // Lees-Edwards shear the dissipation rate is the shear work (frictional sliding losses included);
   // 5: every CSV at full precision (was 12 significant digits); 6: the contact-to-drag ratio;
   // 7: a sheared point's inertial number and stress ratio; 8: the solid fraction's error in the summary
-  [[nodiscard]] int implVersion() const override { return 9; }
+  // 9: a mixture's species and species-pair points (issue 60)
+  // 10: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
+  [[nodiscard]] int implVersion() const override { return 10; }
   // The state and the closure forms (shear-scaled, then theta-scaled: core/ClosureForms).
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"solid_fraction", "–"}, {"restitution", "–"}, {"friction", "–"},  {"p_shear", "–"}, {"tau_shear", "–"},

@@ -41,7 +41,9 @@ class MfmStage final : public StageType {
   // 13: series.csv carries plastic_solids_share and each phase's theta_<phase>; the packing
   //     limit by composition and the per-phase mixture kinetic theory (defaults unchanged).
   // 14: segregation_percentage in percent (Eq. 5.23 times 100), as its name says (issue 62).
-  [[nodiscard]] int implVersion() const override { return 16; }
+  // 15: retried_iterations (detect_stall); 16: the point-coupled faces' closed-form inverses
+  // 17: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
+  [[nodiscard]] int implVersion() const override { return 17; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

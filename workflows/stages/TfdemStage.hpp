@@ -20,7 +20,8 @@ class TfdemStage final : public StageType {
   //    SimpleStep closeGasContinuity), moving the gas by the size of a continuity residual.
   // 6: the DEM pair loop of dem impl 7 (last bits)
   // 7: the summary records superficial_gas_velocity, which fluidization requires (as mfm 12)
-  [[nodiscard]] int implVersion() const override { return 7; }
+  // 8: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
+  [[nodiscard]] int implVersion() const override { return 8; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"coordination", "–"}, {"multi_contact_ratio", "–"}};
   }

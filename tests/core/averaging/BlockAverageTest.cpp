@@ -68,3 +68,18 @@ TEST(BlockAverage, CellsAreAveragedOneByOne) {
   EXPECT_DOUBLE_EQ(cells[1].standardError, 0.0);
   EXPECT_THROW(blockAverageCells({{1.0}, {1.0, 2.0}}), Error);
 }
+
+// Issue 63: a level of two blocks has one degree of freedom, and its error can come out near zero
+// by chance, which then meets the Lee et al. criterion. A strongly correlated series of 64 frames
+// (a slow ramp and back: the two halves have the same mean) gives levels that rise, then nothing
+// at two blocks; the reported error must be one of the levels with at least four blocks.
+TEST(BlockAverage, ALevelOfFewerThanFourBlocksIsNeverReported) {
+  std::vector<double> x;
+  for (int i = 0; i < 32; ++i) x.push_back(1.0 + 0.01 * i);
+  for (int i = 0; i < 32; ++i) x.push_back(1.0 + 0.01 * i);  // the same ramp again: equal halves
+  const auto b = blockAverage(x);
+  ASSERT_GE(b.standardErrorByLevel.size(), 6u);
+  EXPECT_LT(b.standardErrorByLevel.back(), 1e-12);  // the two blocks' means are equal
+  EXPECT_GT(b.standardError, 0.5 * b.standardErrorByLevel[1]);
+  EXPECT_LE(b.blockSize, 16u);  // 64 / 16 = 4 blocks at most
+}
