@@ -51,7 +51,7 @@ struct Measured {
 struct SpeciesPoint {
   std::string name;
   double fraction = 0, share = 0, diameter = 0, density = 0, restitution = 1, friction = 0;
-  Measured temperature, pressure, kineticPressure, shearStress;
+  Measured temperature, pressure, kineticPressure, shearStress, dissipation;
 };
 
 // One sheared box: its species and what needs no attribution to them.
@@ -97,6 +97,7 @@ Box boxOf(const UpstreamInstance& up) {
       s.shearStress = measured(row, "shear_stress");
       const json extra = extraOf(row);
       s.kineticPressure = measured(extra, "pressure_kinetic");
+      s.dissipation = measured(row, "dissipation_rate");
       box.mixtureFraction = row.at("mixture_solid_fraction").get<double>();
       if (row.contains("shear_rate")) box.shearRate = row["shear_rate"].get<double>();
       box.species.push_back(std::move(s));
@@ -211,6 +212,10 @@ std::vector<Quantity> quantitiesOf(const Box& box) {
                    [](const auto& p, int k, const Box&) { return p[static_cast<std::size_t>(k)].kineticPressure; }});
     out.push_back({"tau_shear_" + s.name, "τ* of " + s.name, i, stress, s.shearStress,
                    [](const auto& p, int k, const Box&) { return p[static_cast<std::size_t>(k)].shearStress; }});
+    // The species' J, the shear work on its partial stress (its net collisional loss): the
+    // model's J_m, which in its own balance equals its shear work too.
+    out.push_back({"j_shear_" + s.name, "J* of " + s.name, i, stress * box.shearRate, s.dissipation,
+                   [](const auto& p, int k, const Box&) { return p[static_cast<std::size_t>(k)].dissipationRate; }});
   }
   out.push_back({"p_collisional_shear", "collisional p* (all pairs)", -1, stress0, box.collisionalPressure,
                  [](const auto& p, int, const Box&) {
