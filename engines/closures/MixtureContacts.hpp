@@ -18,8 +18,23 @@ namespace grainbridge::closures {
 enum class MixtureKineticTheory { Summed, PerPhase };
 
 // Sets state.g0, contactSum and dissipationSum of phase `own` of the mixture whose fractions are
-// `fractions` (the mixture's g0 made from the same fractions).
-void setMixtureContacts(const LebowitzMixture& mixture, std::span<const double> fractions, std::size_t own,
-                        MixtureKineticTheory form, KineticState& state);
+// `fractions` (the mixture's g0 made from the same fractions). Inline: the multi-fluid model asks
+// for it three times per phase, cell and outer iteration.
+inline void setMixtureContacts(const LebowitzMixture& mixture, std::span<const double> fractions, std::size_t own,
+                               MixtureKineticTheory form, KineticState& state) {
+  state.g0 = mixture.g0(own, own);
+  if (form == MixtureKineticTheory::PerPhase) {
+    // Eqs. 3.21-3.25, 5.7 and 5.20 as printed: eps_sm g0_mm, the phase's own contacts.
+    state.contactSum = fractions[own] * state.g0;
+    state.dissipationSum = state.contactSum;
+    return;
+  }
+  state.contactSum = 0.0;
+  state.dissipationSum = 0.0;
+  for (std::size_t l = 0; l < fractions.size(); ++l) {
+    state.contactSum += fractions[l] * mixture.g0(own, l);
+    state.dissipationSum += fractions[l] * mixture.g0(l, l);
+  }
+}
 
 }  // namespace grainbridge::closures

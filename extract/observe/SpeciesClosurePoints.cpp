@@ -112,9 +112,6 @@ void SpeciesClosurePoints::finish(OutputSink& out, ExtractResult& /*result*/) {
                ? options_.materials.species[k].name
                : "species " + std::to_string(id);
   };
-  const auto slotOf = [&](std::int32_t id) {
-    return static_cast<std::size_t>(std::lower_bound(species_.begin(), species_.end(), id) - species_.begin());
-  };
   const json provenance = {{"start_time", options_.startTime}, {"upstream_stage", options_.upstreamStage}};
   json rows = json::array();
 
@@ -173,8 +170,7 @@ void SpeciesClosurePoints::finish(OutputSink& out, ExtractResult& /*result*/) {
                                 J = averaged(series.dissipation), contacts = averaged(series.contacts);
       const std::int32_t first = species_[a], second = species_[b];
       // The pair's own scale: its mean diameter and the mass-weighted density of the two species.
-      const double sa = perSpecies_[slotOf(first)].solidFraction.front(),
-                   sb = perSpecies_[slotOf(second)].solidFraction.front();
+      const double sa = perSpecies_[a].solidFraction.front(), sb = perSpecies_[b].solidFraction.front();
       const double density = a == b ? density_[a] : (sa * density_[a] + sb * density_[b]) / (sa + sb);
       json row = {{"family", options_.family},
                   {"species", nameOf(first) + "+" + nameOf(second)},

@@ -50,7 +50,7 @@ struct Measured {
 
 struct SpeciesPoint {
   std::string name;
-  double fraction = 0, share = 0, diameter = 0, density = 0, restitution = 1, friction = 0;
+  double share = 0, diameter = 0, density = 0, restitution = 1, friction = 0;
   Measured temperature, pressure, kineticPressure, shearStress, dissipation;
 };
 
@@ -86,7 +86,6 @@ Box boxOf(const UpstreamInstance& up) {
     } else if (row.contains("volume_share") && row["volume_share"].is_number()) {
       SpeciesPoint s;
       s.name = species;
-      s.fraction = row.at("solid_fraction").get<double>();
       s.share = row["volume_share"].get<double>();
       s.diameter = row.at("diameter").get<double>();
       s.density = row.at("density").get<double>();
@@ -187,7 +186,7 @@ struct Quantity {
   int species;
   double unit;  // SI value over this = shear units
   Measured dem;
-  double (*predicted)(const std::vector<kt::ShearedPhaseState>&, int species, const Box&);
+  double (*predicted)(const std::vector<kt::ShearedPhaseState>&, int species);
 };
 
 std::vector<Quantity> quantitiesOf(const Box& box) {
@@ -198,37 +197,35 @@ std::vector<Quantity> quantitiesOf(const Box& box) {
   // theta = <C^2>/3 per unit mass, as the multi-fluid model's: equal energies per grain would give
   // theta_0 / theta_1 = m_1 / m_0.
   out.push_back({"temperature_ratio", "θ_" + first.name + " / θ_" + box.species[1].name, -1, 1.0, box.temperatureRatio,
-                 [](const auto& p, int, const Box&) { return p[0].granularTemperature / p[1].granularTemperature; }});
+                 [](const auto& p, int) { return p[0].granularTemperature / p[1].granularTemperature; }});
   for (std::size_t m = 0; m < box.species.size(); ++m) {
     const SpeciesPoint& s = box.species[m];
     const double stress = s.density * s.diameter * s.diameter * g2;
     const int i = static_cast<int>(m);
-    out.push_back(
-        {"t_shear_" + s.name, "T* of " + s.name, i, s.diameter * s.diameter * g2, s.temperature,
-         [](const auto& p, int k, const Box&) { return p[static_cast<std::size_t>(k)].granularTemperature; }});
+    out.push_back({"t_shear_" + s.name, "T* of " + s.name, i, s.diameter * s.diameter * g2, s.temperature,
+                   [](const auto& p, int k) { return p[static_cast<std::size_t>(k)].granularTemperature; }});
     out.push_back({"p_shear_" + s.name, "p* of " + s.name, i, stress, s.pressure,
-                   [](const auto& p, int k, const Box&) { return p[static_cast<std::size_t>(k)].pressure; }});
+                   [](const auto& p, int k) { return p[static_cast<std::size_t>(k)].pressure; }});
     out.push_back({"p_kinetic_shear_" + s.name, "kinetic p* of " + s.name, i, stress, s.kineticPressure,
-                   [](const auto& p, int k, const Box&) { return p[static_cast<std::size_t>(k)].kineticPressure; }});
+                   [](const auto& p, int k) { return p[static_cast<std::size_t>(k)].kineticPressure; }});
     out.push_back({"tau_shear_" + s.name, "τ* of " + s.name, i, stress, s.shearStress,
-                   [](const auto& p, int k, const Box&) { return p[static_cast<std::size_t>(k)].shearStress; }});
+                   [](const auto& p, int k) { return p[static_cast<std::size_t>(k)].shearStress; }});
     // The species' J, the shear work on its partial stress (its net collisional loss): the
     // model's J_m, which in its own balance equals its shear work too.
     out.push_back({"j_shear_" + s.name, "J* of " + s.name, i, stress * box.shearRate, s.dissipation,
-                   [](const auto& p, int k, const Box&) { return p[static_cast<std::size_t>(k)].dissipationRate; }});
+                   [](const auto& p, int k) { return p[static_cast<std::size_t>(k)].dissipationRate; }});
   }
   out.push_back({"p_collisional_shear", "collisional p* (all pairs)", -1, stress0, box.collisionalPressure,
-                 [](const auto& p, int, const Box&) {
+                 [](const auto& p, int) {
                    double sum = 0.0;
                    for (const auto& s : p) sum += s.pressure - s.kineticPressure;
                    return sum;
                  }});
-  out.push_back(
-      {"j_shear", "J* (all pairs)", -1, stress0 * box.shearRate, box.dissipation, [](const auto& p, int, const Box&) {
-         double sum = 0.0;
-         for (const auto& s : p) sum += s.dissipationRate;
-         return sum;
-       }});
+  out.push_back({"j_shear", "J* (all pairs)", -1, stress0 * box.shearRate, box.dissipation, [](const auto& p, int) {
+                   double sum = 0.0;
+                   for (const auto& s : p) sum += s.dissipationRate;
+                   return sum;
+                 }});
   return out;
 }
 
@@ -271,7 +268,7 @@ void MixtureCompareStage::run(StageContext& ctx) const {
       const auto pred = predictAt(theory, f.form, box, box.mixtureFraction);
       for (const Quantity& q : quantitiesOf(box)) {
         if (!std::isfinite(q.dem.value)) continue;
-        const double kt = q.predicted(pred, q.species, box);
+        const double kt = q.predicted(pred, q.species);
         const double deviation = kt != 0.0 ? (q.dem.value - kt) / kt : NAN;
         // In shear units, as the quantity's name says (the deviation is the same in any unit).
         csv << box.mixtureFraction << ',' << box.species[0].share << ',' << box.species[0].restitution << ','
@@ -412,7 +409,7 @@ void MixtureCompareStage::run(StageContext& ctx) const {
         curve.variant = variant;
         const Quantity q = quantitiesOf(*ref)[k];  // a copy: the vector is a temporary
         for (double phi = 0.02; phi <= 0.6001; phi += 0.01) {
-          const double v = q.predicted(predictAt(theory, f.form, *ref, phi), q.species, *ref) / q.unit;
+          const double v = q.predicted(predictAt(theory, f.form, *ref, phi), q.species) / q.unit;
           if (std::isfinite(v) && (v > 0.0 || kinds[k].key == "temperature_ratio")) {
             curve.x.push_back(phi);
             curve.y.push_back(v);
