@@ -31,20 +31,21 @@ void to_json(json& j, const LoadedClosureTable& t) {
   j["sha256"] = t.sha256;
   j["filters"] = {{"friction", t.friction}};
   j["uncertainties"] = t.uncertainties;
+  j["correlations"] = t.correlations;
 }
 
 LoadedClosureTable loadedClosureTableFromJson(const json& j) {
   try {
-    return LoadedClosureTable{j.at("name").get<std::string>(),
-                              j.at("run_key").get<std::string>(),
-                              j.at("sha256").get<std::string>(),
-                              j.at("filters").value("friction", 0.0),
-                              ClosureTable(j.at("quantity").get<std::string>(),
-                                           j.at("solid_fractions").get<std::vector<double>>(),
-                                           j.at("second_variable").get<std::string>(),
-                                           j.at("seconds").get<std::vector<double>>(),
-                                           j.at("values").get<std::vector<double>>()),
-                              j.value("uncertainties", std::vector<double>{})};
+    return LoadedClosureTable{
+        j.at("name").get<std::string>(),
+        j.at("run_key").get<std::string>(),
+        j.at("sha256").get<std::string>(),
+        j.at("filters").value("friction", 0.0),
+        ClosureTable(j.at("quantity").get<std::string>(), j.at("solid_fractions").get<std::vector<double>>(),
+                     j.at("second_variable").get<std::string>(), j.at("seconds").get<std::vector<double>>(),
+                     j.at("values").get<std::vector<double>>()),
+        j.value("uncertainties", std::vector<double>{}),
+        j.value("correlations", std::map<std::string, std::vector<double>>{})};
   } catch (const json::exception& e) {
     throw Error(std::string("closure table record: ") + e.what());
   }

@@ -5,6 +5,7 @@
 // loads it on rank 0 and it reaches the stage as it is (the instance task and the stage context
 // hold this type); only to cross to a worker rank does it become JSON (to_json, and
 // loadedClosureTableFromJson there), so the engine never rebuilds a table from loose fields.
+#include <map>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
@@ -24,6 +25,9 @@ struct LoadedClosureTable {
   // layout of table.values(); empty when the database row has none. Not in sha256: a nominal
   // run does not depend on it.
   std::vector<double> uncertainties;
+  // Per other quantity of the same closure points, the correlation coefficient of the two at each
+  // node (issue 63; empty for tables made before it). Not in sha256 either.
+  std::map<std::string, std::vector<double>> correlations{};
 
   [[nodiscard]] const std::string& quantity() const { return table.quantity(); }
 };

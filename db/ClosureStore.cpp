@@ -111,7 +111,7 @@ void ClosureStore::insertClosureTable(std::int64_t runId, const json& row, const
   }
   auto st = db_.prepare(
       "INSERT INTO closure_tables(run_id, name, quantity, second_variable, solid_fractions_json, seconds_json, "
-      "values_json, uncertainties_json, filters_json) VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9)");
+      "values_json, uncertainties_json, filters_json, correlations_json) VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10)");
   st.bind(1, runId)
       .bind(2, row.at("name").get<std::string>())
       .bind(3, row.at("quantity").get<std::string>())
@@ -120,7 +120,8 @@ void ClosureStore::insertClosureTable(std::int64_t runId, const json& row, const
       .bind(6, row.value("seconds", json::array()).dump())
       .bind(7, row.at("values").dump())
       .bind(8, row.value("uncertainties", json::array()).dump())
-      .bind(9, row.value("filters", json::object()).dump());
+      .bind(9, row.value("filters", json::object()).dump())
+      .bind(10, row.value("correlations", json::object()).dump());
   st.step();
 }
 
@@ -235,7 +236,7 @@ core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const 
                                                 const std::string& runKey) {
   auto st = db_.prepare(
       "SELECT t.solid_fractions_json, t.second_variable, t.seconds_json, t.values_json, t.filters_json, r.key, "
-      "t.uncertainties_json "
+      "t.uncertainties_json, t.correlations_json "
       "FROM closure_tables t JOIN runs r ON r.id = t.run_id "
       "WHERE t.name = ?1 AND t.quantity = ?2 AND (?3 = '' OR r.key = ?3) ORDER BY t.run_id DESC, t.id DESC LIMIT 1");
   st.bind(1, name).bind(2, quantity).bind(3, runKey);
@@ -251,9 +252,13 @@ core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const 
                            json::parse(st.columnText(2)).get<std::vector<double>>(),
                            json::parse(st.columnText(3)).get<std::vector<double>>());
   std::string sha256 = core::contentSha256(table);
-  return core::LoadedClosureTable{name, st.columnText(5), std::move(sha256),
-                                  json::parse(st.columnText(4)).value("friction", 0.0), std::move(table),
-                                  json::parse(st.columnText(6)).get<std::vector<double>>()};
+  return core::LoadedClosureTable{name,
+                                  st.columnText(5),
+                                  std::move(sha256),
+                                  json::parse(st.columnText(4)).value("friction", 0.0),
+                                  std::move(table),
+                                  json::parse(st.columnText(6)).get<std::vector<double>>(),
+                                  json::parse(st.columnText(7)).get<std::map<std::string, std::vector<double>>>()};
 }
 
 core::LoadedRheology ClosureStore::loadRheology(const std::string& name, const std::string& runKey) {

@@ -218,6 +218,20 @@ CREATE INDEX rheology_name ON rheology(name, relation);
 ALTER TABLE closure_points ADD COLUMN mixture_solid_fraction REAL;
 ALTER TABLE closure_points ADD COLUMN volume_share REAL;
 )sql",
+      // 6: a closure point's theta forms' correlation coefficients and its error warning (issue
+      // 63): p_theta, eta_theta and j_theta share the point's temperature (and under shear
+      // eta_theta and j_theta its shear stress), so their errors are correlated; error_warning
+      // says which quantities' blocking curves reached no plateau (their errors are lower
+      // bounds). A table's correlations_json holds, per other quantity of its point, the
+      // coefficient at each node ({"eta_theta": [...], ...}), for drawing a node's quantities
+      // jointly (core/ClosureTableDraw).
+      R"sql(
+ALTER TABLE closure_points ADD COLUMN p_theta_eta_theta_corr REAL;
+ALTER TABLE closure_points ADD COLUMN p_theta_j_theta_corr REAL;
+ALTER TABLE closure_points ADD COLUMN eta_theta_j_theta_corr REAL;
+ALTER TABLE closure_points ADD COLUMN error_warning TEXT;
+ALTER TABLE closure_tables ADD COLUMN correlations_json TEXT NOT NULL DEFAULT '{}';
+)sql",
   };
   return scripts;
 }

@@ -20,6 +20,48 @@ std::pair<double, double> meanAndError(const std::vector<double>& x) {
   var /= n;
   return {mean, x.size() > 1 ? std::sqrt(var / (n - 1.0)) : 0.0};
 }
+// B times the variance of the mean of B consecutive samples of unit variance whose correlation
+// at lag k is rho^k: 1 + 2 sum_{k<B} (1 - k/B) rho^k, summed.
+double blockedVarianceFactor(double b, double rho) {
+  return (1.0 + rho) / (1.0 - rho) - 2.0 * rho * (1.0 - std::pow(rho, b)) / (b * std::pow(1.0 - rho, 2));
+}
+
+struct Extrapolated {
+  double standardError = 0.0;
+  bool capped = false;  // the level was too far below the plateau for the model to say how far
+};
+
+// The blocked error at block size b (m blocks of n samples) extrapolated to the plateau under an
+// exponential correlation (header). The expected naive variance of m block means is
+// (Var_b - Var_mb) / (m - 1), Var_L the variance of the mean of L samples; its ratio h to the
+// variance of the whole mean V follows from rho, and rho from V itself: the integrated
+// correlation time tau = n V / (2 sigma^2), rho = (2 tau - 1) / (2 tau + 1), sigma^2 the
+// variance of one sample (the series' biased variance plus V). V = SE_b^2 / h is found by a
+// damped fixed point. White noise has tau = 1/2, rho = 0, h = 1: its error is left as it is.
+Extrapolated towardsThePlateau(double levelSe, double firstSe, double b, double m, double n) {
+  constexpr double kLargestCorrection = 2.0;  // in variance: at most sqrt(2) on the error
+  const double level = levelSe * levelSe;
+  if (level == 0.0 || b <= 1.0) return {levelSe, false};
+  const double biasedVariance = (n - 1.0) * firstSe * firstSe;
+  double v = level;
+  bool capped = false;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double tau = std::min(n, std::max(0.5, n * v / (2.0 * (biasedVariance + v))));
+    const double rho = (2.0 * tau - 1.0) / (2.0 * tau + 1.0);
+    double h = 1.0;
+    if (rho > 0.0) {
+      const double blocked =
+          (blockedVarianceFactor(b, rho) / b - blockedVarianceFactor(m * b, rho) / (m * b)) / (m - 1.0);
+      h = blocked / (blockedVarianceFactor(n, rho) / n);
+    }
+    capped = h < 1.0 / kLargestCorrection;
+    const double next = level / std::max(h, 1.0 / kLargestCorrection);
+    if (std::abs(next - v) <= 1e-12 * v) return {std::sqrt(next), capped};
+    v = 0.5 * (v + next);
+  }
+  return {std::sqrt(v), capped};
+}
+
 }  // namespace
 
 BlockAverage blockAverage(std::span<const double> samples) {
@@ -37,6 +79,7 @@ BlockAverage blockAverage(std::span<const double> samples) {
   if (samples.size() < BlockAverage::kMinSamplesForBlocking) {
     out.method = BlockAverage::Method::PlainFewSamples;
     out.standardError = plainError;
+    out.levelStandardError = plainError;
     out.standardErrorUncertainty = samples.size() > 1 ? plainError / std::sqrt(2.0 * (samples.size() - 1.0)) : 0.0;
     out.standardErrorByLevel = {plainError};
     return out;
@@ -52,30 +95,29 @@ BlockAverage blockAverage(std::span<const double> samples) {
     level.swap(next);
   }
   const double se1 = out.standardErrorByLevel.front();
+  // The level used: the first that meets the criterion, else the deepest with kMinBlocks blocks.
+  std::size_t used = 0;
   for (std::size_t l = 0; l < out.standardErrorByLevel.size(); ++l) {
     // A level of fewer than kMinBlocks blocks has an error of one or two degrees of freedom, which
     // can come out near zero by chance and then meets the criterion below: a 151-frame series
-    // whose levels rose to 1.4e-4 reported 8.9e-7 from its two blocks (issue 63). Never report one.
+    // whose levels rose to 1.4e-4 reported 8.9e-7 from its two blocks (issue 63). Never use one.
     if (blocks[l] < BlockAverage::kMinBlocks) break;
+    used = l;
     const double b = std::ldexp(1.0, static_cast<int>(l));
     const double ratio = se1 > 0.0 ? out.standardErrorByLevel[l] / se1 : 1.0;
     if (b * b * b > 2.0 * n * std::pow(ratio, 4)) {
       out.plateauReached = true;
-      out.blockSize = static_cast<std::size_t>(b);
-      out.standardError = out.standardErrorByLevel[l];
-      out.standardErrorUncertainty = out.standardError / std::sqrt(2.0 * (static_cast<double>(blocks[l]) - 1.0));
-      return out;
+      break;
     }
   }
-  // Not reached: the most conservative estimate from levels that still have a few blocks.
-  for (std::size_t l = 0; l < out.standardErrorByLevel.size(); ++l) {
-    if (blocks[l] < BlockAverage::kMinBlocks && l > 0) break;
-    if (out.standardErrorByLevel[l] >= out.standardError) {
-      out.standardError = out.standardErrorByLevel[l];
-      out.blockSize = std::size_t{1} << l;
-      out.standardErrorUncertainty = out.standardError / std::sqrt(2.0 * (static_cast<double>(blocks[l]) - 1.0));
-    }
-  }
+  out.blockSize = std::size_t{1} << used;
+  out.levelStandardError = out.standardErrorByLevel[used];
+  const double m = static_cast<double>(blocks[used]);
+  const auto extrapolated = towardsThePlateau(out.levelStandardError, se1, static_cast<double>(out.blockSize), m, n);
+  out.standardError = extrapolated.standardError;
+  if (extrapolated.capped) out.plateauReached = false;
+  // The error of a standard error: half the relative error 2 / (m - 1) of a variance from m blocks.
+  out.standardErrorUncertainty = out.standardError / std::sqrt(2.0 * (m - 1.0));
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include "core/averaging/RatioOfMeans.hpp"
 #include "core/text/NumberText.hpp"
 #include "extract/coarse/DissipationRate.hpp"
+#include "extract/observe/ThetaFormErrors.hpp"
 
 namespace grainbridge::extract::observe {
 
@@ -16,15 +17,17 @@ using nlohmann::json;
 
 namespace {
 
-// One time-averaged quantity: mean and block-averaging standard error.
+// One time-averaged quantity: mean, block-averaging standard error, and whether the blocking
+// curve reached its plateau (if not, the error is a lower bound).
 struct Averaged {
   double mean = 0.0;
   double error = 0.0;
+  bool plateauReached = true;
 };
 
 Averaged averaged(const std::vector<double>& samples) {
   const auto b = core::averaging::blockAverage(samples);
-  return {b.mean, b.standardError};
+  return {b.mean, b.standardError, b.plateauReached};
 }
 
 }  // namespace
@@ -79,8 +82,9 @@ void ClosurePointObserver::finish(OutputSink& out, ExtractResult& result) {
   // the dashpots are all there is: exact for frictionless grains, a lower bound with friction.
   const double shearRate = options_.shearRate;
   const bool fromShearWork = shearRate != 0.0;
-  const Averaged J =
-      fromShearWork ? Averaged{tau.mean * std::abs(shearRate), tau.error * std::abs(shearRate)} : dashpots;
+  const Averaged J = fromShearWork
+                         ? Averaged{tau.mean * std::abs(shearRate), tau.error * std::abs(shearRate), tau.plateauReached}
+                         : dashpots;
   json row = {{"family", options_.family},
               {"solid_fraction", eps.mean},
               {"diameter", diameter_},
@@ -120,9 +124,19 @@ void ClosurePointObserver::finish(OutputSink& out, ExtractResult& result) {
   // The closure forms (core/ClosureForms), each with its block-averaging error.
   const core::ClosureFormState state{density_, diameter_, T.mean, std::abs(shearRate)};
   addStressForms(row, {P.mean, P.error}, {tau.mean, tau.error}, {T.mean, T.error}, state);
+  std::vector<std::string> noPlateau;
+  for (const auto& [name, a] :
+       {std::pair{"granular_temperature", T}, std::pair{"pressure", P}, std::pair{"dissipation_rate", J}}) {
+    if (!a.plateauReached) noPlateau.emplace_back(name);
+  }
   if (T.mean > 0.0) {
     row["j_theta"] = core::toClosureForm(core::ClosureForm::JTheta, J.mean, state);
-    row["j_theta_err"] = core::closureFormError(core::ClosureForm::JTheta, {J.mean, J.error}, {T.mean, T.error}, state);
+    const auto forms = addThetaFormErrors(row, state, temperature_, pressure_, shearStress_, dissipation_);
+    noPlateau.insert(noPlateau.end(), forms.begin(), forms.end());
+  }
+  if (const auto warning = errorWarning(frames_, noPlateau)) {
+    row["error_warning"] = *warning;
+    spdlog::warn("{}: {}", out.label(), *warning);
   }
   if (shearRate != 0.0 && P.mean > 0.0) {
     // The dense-flow variables (Chialvo, Sun and Sundaresan 2012, PRE 85 021305): the inertial

@@ -9,6 +9,7 @@
 #include "core/averaging/RatioOfMeans.hpp"
 #include "extract/coarse/SpeciesStress.hpp"
 #include "extract/coarse/StressMeasures.hpp"
+#include "extract/observe/ThetaFormErrors.hpp"
 
 namespace grainbridge::extract::observe {
 
@@ -154,11 +155,18 @@ void SpeciesClosurePoints::finish(OutputSink& out, ExtractResult& /*result*/) {
       const core::MeasuredValue J{tau.mean * shearRate, tau.error * shearRate};
       row["dissipation_rate"] = J.mean;
       row["dissipation_rate_err"] = J.error;
-      if (T.mean > 0.0) {
-        row["j_theta"] = core::toClosureForm(core::ClosureForm::JTheta, J.mean, state);
-        row["j_theta_err"] = core::closureFormError(core::ClosureForm::JTheta, J, T, state);
-      }
+      if (T.mean > 0.0) row["j_theta"] = core::toClosureForm(core::ClosureForm::JTheta, J.mean, state);
     }
+    std::vector<std::string> noPlateau;
+    if (!core::averaging::blockAverage(series.temperature).plateauReached)
+      noPlateau.emplace_back("granular_temperature");
+    if (!core::averaging::blockAverage(series.pressure).plateauReached) noPlateau.emplace_back("pressure");
+    if (T.mean > 0.0) {
+      // The forms' errors from the frame series, with their correlations (ThetaFormErrors.hpp).
+      const auto forms = addThetaFormErrors(row, state, series.temperature, series.pressure, series.shearStress, {});
+      noPlateau.insert(noPlateau.end(), forms.begin(), forms.end());
+    }
+    if (const auto warning = errorWarning(frames_, noPlateau)) row["error_warning"] = *warning;
     rows.push_back(std::move(row));
   }
 

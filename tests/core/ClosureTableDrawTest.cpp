@@ -74,3 +74,43 @@ TEST(ClosureTableDraw, DrawsStayPositiveAndBadErrorsAreRefused) {
 }
 
 }  // namespace
+
+// Issue 63: a joint draw of two tables whose nodes are correlated as recorded (0.9 at the first
+// node, -0.5 at the second, none at the third) gives those correlations and keeps each table's
+// errors; tables without correlations are drawn as drawClosureTable draws them, bit for bit; a
+// coefficient outside [-1, 1] is refused.
+TEST(ClosureTableDraw, AJointDrawCorrelatesANodesQuantitiesAsRecorded) {
+  const ClosureTable p = synthetic();
+  const ClosureTable eta("eta_theta", {0.1, 0.3, 0.5}, {0.6, 1.2, 3.0});
+  const std::vector<double> etaErrors{0.03, 0.06, 0.15};
+  const std::map<std::string, std::vector<double>> pWithEta{{"eta_theta", {0.9, -0.5, 0.0}}};
+  const std::vector<TableToDraw> tables{{&p, kErrors, &pWithEta}, {&eta, etaErrors, nullptr}};
+  constexpr int kDraws = 2000;
+  std::vector<double> sumP(3), sumE(3), sumPP(3), sumEE(3), sumPE(3);
+  for (int s = 0; s < kDraws; ++s) {
+    const auto drawn = drawClosureTablesJointly(tables, static_cast<std::uint64_t>(s));
+    ASSERT_EQ(drawn.size(), 2u);
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double a = (drawn[0].values()[k] - p.values()[k]) / kErrors[k];
+      const double b = (drawn[1].values()[k] - eta.values()[k]) / etaErrors[k];
+      sumP[k] += a, sumE[k] += b, sumPP[k] += a * a, sumEE[k] += b * b, sumPE[k] += a * b;
+    }
+  }
+  const std::vector<double> expected{0.9, -0.5, 0.0};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double n = kDraws;
+    const double r = (sumPE[k] / n - sumP[k] / n * sumE[k] / n) /
+                     std::sqrt((sumPP[k] / n - std::pow(sumP[k] / n, 2)) * (sumEE[k] / n - std::pow(sumE[k] / n, 2)));
+    EXPECT_NEAR(r, expected[k], 3.0 * (1.0 - expected[k] * expected[k]) / std::sqrt(n) + 0.01) << "node " << k;
+    EXPECT_NEAR(std::sqrt(sumPP[k] / n), 1.0, 0.05) << "node " << k;  // each keeps its own error
+    EXPECT_NEAR(std::sqrt(sumEE[k] / n), 1.0, 0.05) << "node " << k;
+  }
+  // Without correlations: each table on its own stream, as drawClosureTable.
+  const std::vector<TableToDraw> independent{{&p, kErrors, nullptr}, {&eta, etaErrors, nullptr}};
+  const auto drawn = drawClosureTablesJointly(independent, 11);
+  EXPECT_EQ(drawn[0].values(), drawClosureTable(p, kErrors, 11).values());
+  EXPECT_EQ(drawn[1].values(), drawClosureTable(eta, etaErrors, 11).values());
+  const std::map<std::string, std::vector<double>> bad{{"eta_theta", {1.5, 0.0, 0.0}}};
+  const std::vector<TableToDraw> refused{{&p, kErrors, &bad}, {&eta, etaErrors, nullptr}};
+  EXPECT_THROW((void)drawClosureTablesJointly(refused, 1), Error);
+}

@@ -95,15 +95,21 @@ std::vector<core::LoadedClosureTable> sampleClosureTables(const json& p,
   const auto draw = closureDrawOf(p);
   if (!draw) return nominal;
   std::vector<core::LoadedClosureTable> drawn = nominal;
+  std::vector<core::LoadedClosureTable*> toDraw;
+  std::vector<core::TableToDraw> tables;
   for (auto& loaded : drawn) {
     if (!draw->draws(loaded.quantity())) continue;
     if (loaded.uncertainties.empty()) {
       throw Error("closure table \"" + loaded.name + "\" (" + loaded.quantity() +
                   ") has no standard errors to draw closure sample " + std::to_string(draw->sample) + " within");
     }
-    // core::drawClosureTable adds the quantity to the stream, so the tables of one sample differ.
-    loaded.table = core::drawClosureTable(loaded.table, loaded.uncertainties, draw->stream());
+    toDraw.push_back(&loaded);
   }
+  for (const auto* loaded : toDraw) tables.push_back({&loaded->table, loaded->uncertainties, &loaded->correlations});
+  // A joint sample draws a node's quantities together, correlated as their closure point's were;
+  // without recorded correlations each table has its own stream (seed, quantity), as before.
+  auto realised = core::drawClosureTablesJointly(tables, draw->stream());
+  for (std::size_t i = 0; i < toDraw.size(); ++i) toDraw[i]->table = std::move(realised[i]);
   return drawn;
 }
 

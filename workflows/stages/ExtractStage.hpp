@@ -22,7 +22,9 @@ class ExtractStage final : public StageType {
   // 7: a sheared point's inertial number and stress ratio; 8: the solid fraction's error in the summary
   // 9: a mixture's species and species-pair points (issue 60)
   // 10: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
-  [[nodiscard]] int implVersion() const override { return 10; }
+  // 11: block errors extrapolated to the plateau; theta forms' errors and correlations from the
+  //     linearised frame series; error_warning (issue 63)
+  [[nodiscard]] int implVersion() const override { return 11; }
   // The state and the closure forms (shear-scaled, then theta-scaled: core/ClosureForms).
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"solid_fraction", "–"}, {"restitution", "–"}, {"friction", "–"},  {"p_shear", "–"}, {"tau_shear", "–"},

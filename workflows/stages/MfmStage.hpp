@@ -43,7 +43,8 @@ class MfmStage final : public StageType {
   // 14: segregation_percentage in percent (Eq. 5.23 times 100), as its name says (issue 62).
   // 15: retried_iterations (detect_stall); 16: the point-coupled faces' closed-form inverses
   // 17: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
-  [[nodiscard]] int implVersion() const override { return 17; }
+  // 18: block errors extrapolated to the plateau; joint closure samples correlated (issue 63)
+  [[nodiscard]] int implVersion() const override { return 18; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

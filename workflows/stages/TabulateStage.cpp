@@ -193,17 +193,36 @@ void TabulateStage::run(StageContext& ctx) const {
   if (!species.empty()) filters["species"] = species;
   if (p.contains("restitution")) filters["restitution"] = p.at("restitution");
   json quantities = json::array();
-  for (const char* q : {"p_theta", "eta_theta", "j_theta"}) {
-    bool everywhere = true;
-    for (const auto* pt : node) everywhere = everywhere && pt->contains(q) && (*pt)[q].is_number();
-    if (!everywhere) {
+  const std::vector<std::string> forms{"p_theta", "eta_theta", "j_theta"};
+  const auto everywhere = [&](const std::string& q) {
+    return std::all_of(node.begin(), node.end(),
+                       [&](const json* pt) { return pt->contains(q) && (*pt)[q].is_number(); });
+  };
+  for (const auto& q : forms) {
+    if (!everywhere(q)) {
       spdlog::info("{}: no {} table: not every point has it (eta_theta needs sheared points)", ctx.stage(), q);
       continue;
     }
     std::vector<double> values, errors;
     for (const auto* pt : node) {
       values.push_back((*pt)[q]);
-      errors.push_back(pt->value(std::string(q) + "_err", 0.0));
+      errors.push_back(pt->value(q + "_err", 0.0));
+    }
+    // Per other form of the same points, the two's correlation at each node (extract's
+    // <a>_<b>_corr, issue 63), for the joint closure draw; a point without it (made before it)
+    // counts as uncorrelated.
+    json correlations = json::object();
+    for (const auto& other : forms) {
+      if (other == q || !everywhere(other)) continue;
+      const bool first = std::find(forms.begin(), forms.end(), q) < std::find(forms.begin(), forms.end(), other);
+      const std::string column = first ? q + "_" + other + "_corr" : other + "_" + q + "_corr";
+      std::vector<double> r;
+      bool any = false;
+      for (const auto* pt : node) {
+        r.push_back(pt->value(column, 0.0));
+        any = any || pt->contains(column);
+      }
+      if (any) correlations[other] = r;
     }
     // Building the table checks it (axes, finite values) before it reaches the database.
     core::ClosureTable table(q, xAxis, second, yAxis, values);
@@ -214,6 +233,7 @@ void TabulateStage::run(StageContext& ctx) const {
                                      {"seconds", yAxis},
                                      {"values", values},
                                      {"uncertainties", errors},
+                                     {"correlations", correlations},
                                      {"filters", filters}});
     for (std::size_t k = 0; k < node.size(); ++k) {
       csv << name << ',' << q << ',' << xAxis[k % xAxis.size()] << ','
