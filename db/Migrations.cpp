@@ -232,6 +232,17 @@ ALTER TABLE closure_points ADD COLUMN eta_theta_j_theta_corr REAL;
 ALTER TABLE closure_points ADD COLUMN error_warning TEXT;
 ALTER TABLE closure_tables ADD COLUMN correlations_json TEXT NOT NULL DEFAULT '{}';
 )sql",
+      // 7: how ordered a closure point's box was (issue 61): the bond-orientational order q6 and
+      // the share of crystalline grains (extract/structure/BondOrder), each time-averaged with
+      // its error, and ordered = 1 where that share exceeds 0.2 (tabulate leaves such points out
+      // unless keep_ordered). NULL for points made before it.
+      R"sql(
+ALTER TABLE closure_points ADD COLUMN bond_order_q6 REAL;
+ALTER TABLE closure_points ADD COLUMN bond_order_q6_err REAL;
+ALTER TABLE closure_points ADD COLUMN crystalline_share REAL;
+ALTER TABLE closure_points ADD COLUMN crystalline_share_err REAL;
+ALTER TABLE closure_points ADD COLUMN ordered INTEGER;
+)sql",
   };
   return scripts;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The closure point of an extraction: per frame the whole-domain solid fraction, granular
-// temperature, pressure, shear stress, dissipation rate and coordination (written as frames.csv),
+// temperature, pressure, shear stress, dissipation rate, coordination and bond-orientational order
+// (written as frames.csv),
 // time-averaged with block-averaging errors (core/averaging) into the point's row with its
 // closure forms (core/ClosureForms) and the state it belongs to (the materials the frames carry).
 #include <nlohmann/json.hpp>
@@ -35,7 +36,13 @@ class ClosurePointObserver final : public FrameObserver {
 
  private:
   ClosurePointOptions options_;
+  // Neighbours of the bond-orientational order: within this many mean diameters (the first shell,
+  // short of an fcc lattice's second at 1.41 d).
+  static constexpr double kBondOrderCutoff = 1.3;
+  // A point whose time-averaged crystalline share exceeds this is flagged ordered (issue 61).
+  static constexpr double kOrderedShare = 0.2;
   std::vector<double> solidFraction_, temperature_, pressure_, shearStress_, dissipation_, coordination_;
+  std::vector<double> bondOrderQ6_, crystallineShare_;
   std::ostringstream perFrame_;
   std::size_t frames_ = 0;
   double diameter_ = 0.0, density_ = 0.0;

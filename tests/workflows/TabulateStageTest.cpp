@@ -168,3 +168,42 @@ TEST(TabulateStage, PressureControlledPointsExtendTheTableToTheirMeasuredSolidFr
     EXPECT_NEAR(v.value, p["p_theta"].get<double>(), 1e-12 * std::abs(v.value));
   }
 }
+
+// Issue 61: a point whose box is crystalline (an fcc lattice of 108 grains at solid fraction 0.68,
+// sheared for half a strain unit) is recorded as ordered and left out of the tables unless
+// keep_ordered; the random gas's points are tabled either way.
+TEST(TabulateStage, AnOrderedBoxIsRecordedAndLeftOutUnlessKeepOrdered) {
+  TempDir work;
+  json lattice = shear({kBig}, {0.9});
+  lattice["params"]["insertion"] = "fcc_lattice";
+  lattice["params"]["species"][0]["count"] = 108;
+  lattice["params"]["duration"] = "0.005 s";
+  lattice["sweep"] = {{"box_hi", {{"4.37 mm", "4.37 mm", "4.37 mm"}}}, {"contact/restitution", {0.9}}};
+  json wf = workflow({{"gas", shear({kBig, kSmall}, {0.9})}, {"lattice", lattice}});
+  wf["stages"]["table"]["params"]["second_variable"] = "";
+  writeText(work.path() / "wf.json", wf.dump(2));
+  auto r = runGrainbridge(work.path(), "run wf.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  {
+    auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
+    db::ClosureStore store(database);
+    int ordered = 0;
+    for (const auto& p : store.query({})) {
+      const bool crystal = p["ordered"].get<int>() == 1;
+      ordered += crystal ? 1 : 0;
+      EXPECT_EQ(crystal, p["solid_fraction"].get<double>() > 0.6) << p.dump();
+      if (crystal) {
+        EXPECT_GT(p["crystalline_share"].get<double>(), 0.9);
+      }
+    }
+    EXPECT_EQ(ordered, 1);
+    EXPECT_EQ(store.loadTable("t", "p_theta").table.solidFractions().size(), 2u);
+  }
+  EXPECT_THAT(r.output, HasSubstr("its box ordered"));
+  wf["stages"]["table"]["params"]["keep_ordered"] = true;
+  writeText(work.path() / "wf.json", wf.dump(2));
+  r = runGrainbridge(work.path(), "run wf.json -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
+  EXPECT_EQ(db::ClosureStore(database).loadTable("t", "p_theta").table.solidFractions().size(), 3u);
+}

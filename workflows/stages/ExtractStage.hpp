@@ -24,7 +24,9 @@ class ExtractStage final : public StageType {
   // 10: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
   // 11: block errors extrapolated to the plateau; theta forms' errors and correlations from the
   //     linearised frame series; error_warning (issue 63)
-  [[nodiscard]] int implVersion() const override { return 11; }
+  // 12: the bond-orientational order and crystalline share per frame, the point's ordered flag
+  //     (issue 61)
+  [[nodiscard]] int implVersion() const override { return 12; }
   // The state and the closure forms (shear-scaled, then theta-scaled: core/ClosureForms).
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"solid_fraction", "–"}, {"restitution", "–"}, {"friction", "–"},  {"p_shear", "–"}, {"tau_shear", "–"},

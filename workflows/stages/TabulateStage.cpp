@@ -39,7 +39,12 @@ TabulateStage::TabulateStage() {
                .defaultValue(0.5)
                .positive()
                .doc("the mu(I) and phi(I) fits take the points with inertial number up to this; above it "
-                    "dilute, kinetic-theory flow follows other laws (phi(I) is linear only in dense flow)"));
+                    "dilute, kinetic-theory flow follows other laws (phi(I) is linear only in dense flow)"))
+      .add(ParamSpec::boolean("keep_ordered")
+               .defaultValue(false)
+               .doc("also table and fit the points whose box crystallised (closure_points.ordered: more than "
+                    "20 % of the grains crystalline by the bond-orientational order); left out by default, as "
+                    "their stresses are not those of the random packing a closure table means"));
 }
 
 namespace {
@@ -115,6 +120,25 @@ void TabulateStage::run(StageContext& ctx) const {
     points.push_back(std::move(s));
   }
   if (points.empty()) throw Error("tabulate: no upstream extract instances; give it \"from\"");
+  // Points whose box ordered (issue 61) stay in the database and out of the tables and fits.
+  json excluded = json::array();
+  if (!p.at("keep_ordered").get<bool>()) {
+    std::erase_if(points, [&](const json& pt) {
+      if (pt.value("ordered", 0) == 0) return false;
+      spdlog::warn(
+          "{}: leaving out the closure point of {} at solid fraction {:.4f}: its box ordered ({:.0f} % of "
+          "the grains crystalline; keep_ordered keeps it)",
+          ctx.stage(), pt["__key"].get<std::string>().substr(0, 12), pt.value("solid_fraction", 0.0),
+          100.0 * pt.value("crystalline_share", 0.0));
+      excluded.push_back(pt["__key"].get<std::string>().substr(0, 12));
+      return true;
+    });
+    if (points.empty()) {
+      throw Error("/stages/" + ctx.stage() +
+                  "/params/keep_ordered: every closure point's box ordered; "
+                  "keep_ordered: true tables them anyway");
+    }
+  }
   if (p.contains("restitution")) {
     const double e = p.at("restitution");
     std::erase_if(points, [&](const json& pt) { return !(pt.contains("restitution") && same(pt["restitution"], e)); });
@@ -188,7 +212,11 @@ void TabulateStage::run(StageContext& ctx) const {
   std::ostringstream csv;
   csv.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
   csv << "table,quantity,solid_fraction," << (second.empty() ? "second" : second) << ",value,uncertainty\n";
-  json summary = {{"table", name}, {"friction", friction}, {"solid_fractions", xAxis.size()}, {"rows", rows}};
+  json summary = {{"table", name},
+                  {"friction", friction},
+                  {"solid_fractions", xAxis.size()},
+                  {"rows", rows},
+                  {"ordered_points_left_out", excluded.size()}};
   json filters = {{"friction", friction}};
   if (!species.empty()) filters["species"] = species;
   if (p.contains("restitution")) filters["restitution"] = p.at("restitution");
