@@ -11,6 +11,10 @@
 
 namespace grainbridge::core {
 
+// The form of the mu(I) rows a continuum engine loads (Jop, Forterre and Pouliquen's): a rheology
+// table also holds the power-law form's rows (issue 61), which `plastic: mu_i` does not use.
+inline constexpr const char* kMuOfIJopForm = "mu_s + (mu_2 - mu_s) / (1 + I_0 / I)";
+
 // The quantity a stage's closure-table reference names for a tabulate stage's mu(I) rows.
 inline constexpr const char* kRheologyQuantity = "mu_of_I";
 

@@ -264,8 +264,9 @@ core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const 
 core::LoadedRheology ClosureStore::loadRheology(const std::string& name, const std::string& runKey) {
   auto newest = db_.prepare(
       "SELECT r.key FROM rheology h JOIN runs r ON r.id = h.run_id "
-      "WHERE h.name = ?1 AND h.relation = 'mu_of_I' AND (?2 = '' OR r.key = ?2) ORDER BY h.run_id DESC LIMIT 1");
-  newest.bind(1, name).bind(2, runKey);
+      "WHERE h.name = ?1 AND h.relation = 'mu_of_I' AND h.form = ?3 AND (?2 = '' OR r.key = ?2) "
+      "ORDER BY h.run_id DESC LIMIT 1");
+  newest.bind(1, name).bind(2, runKey).bind(3, std::string(core::kMuOfIJopForm));
   if (!newest.step()) {
     std::string known;
     auto all = db_.prepare("SELECT DISTINCT name FROM rheology WHERE relation = 'mu_of_I' ORDER BY 1");
@@ -280,8 +281,8 @@ core::LoadedRheology ClosureStore::loadRheology(const std::string& name, const s
   auto st = db_.prepare(
       "SELECT h.restitution, h.diameter, h.density, h.inertial_numbers_json, h.values_json, h.mu_s, h.mu_2, "
       "h.inertial_number_0 FROM rheology h JOIN runs r ON r.id = h.run_id "
-      "WHERE h.name = ?1 AND h.relation = 'mu_of_I' AND r.key = ?2 ORDER BY h.restitution, h.id");
-  st.bind(1, name).bind(2, out.runKey);
+      "WHERE h.name = ?1 AND h.relation = 'mu_of_I' AND h.form = ?3 AND r.key = ?2 ORDER BY h.restitution, h.id");
+  st.bind(1, name).bind(2, out.runKey).bind(3, std::string(core::kMuOfIJopForm));
   while (st.step()) {
     core::LoadedRheology::Row row;
     if (!st.columnIsNull(0)) row.restitution = st.columnDouble(0);

@@ -243,6 +243,23 @@ ALTER TABLE closure_points ADD COLUMN crystalline_share REAL;
 ALTER TABLE closure_points ADD COLUMN crystalline_share_err REAL;
 ALTER TABLE closure_points ADD COLUMN ordered INTEGER;
 )sql",
+      // 8: the power-law forms of the dense rheology near the critical point (issue 61):
+      // mu_c + mu_amplitude I^mu_exponent and phi_c_power - phi_amplitude I^phi_exponent, in rows
+      // of their own (relation mu_of_I or phi_of_I, form naming the law).
+      R"sql(
+ALTER TABLE rheology ADD COLUMN mu_c REAL;
+ALTER TABLE rheology ADD COLUMN mu_c_err REAL;
+ALTER TABLE rheology ADD COLUMN mu_amplitude REAL;
+ALTER TABLE rheology ADD COLUMN mu_amplitude_err REAL;
+ALTER TABLE rheology ADD COLUMN mu_exponent REAL;
+ALTER TABLE rheology ADD COLUMN mu_exponent_err REAL;
+ALTER TABLE rheology ADD COLUMN phi_c_power REAL;
+ALTER TABLE rheology ADD COLUMN phi_c_power_err REAL;
+ALTER TABLE rheology ADD COLUMN phi_amplitude REAL;
+ALTER TABLE rheology ADD COLUMN phi_amplitude_err REAL;
+ALTER TABLE rheology ADD COLUMN phi_exponent REAL;
+ALTER TABLE rheology ADD COLUMN phi_exponent_err REAL;
+)sql",
   };
   return scripts;
 }

@@ -2,28 +2,42 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Dense>
 
 #include "core/Error.hpp"
+#include "core/LoadedRheology.hpp"
 #include "extract/statistics/LeastSquares.hpp"
 
 namespace grainbridge::extract::statistics {
 
 namespace {
 
+bool isPower(RheologyRelation r) { return r == RheologyRelation::MuOfIPower || r == RheologyRelation::PhiOfIPower; }
+bool isMu(RheologyRelation r) { return r == RheologyRelation::MuOfI || r == RheologyRelation::MuOfIPower; }
+
 // The model in its fitted parameters p and its derivatives: mu(I) in (mu_s, mu_2, log I_0),
-// phi(I) in (phi_c, a).
+// phi(I) in (phi_c, a), the power laws in (critical value, log amplitude, exponent) with the
+// sign s = +1 for mu (rising with I) and -1 for phi (falling).
 struct Model {
   RheologyRelation relation;
 
+  [[nodiscard]] double sign() const { return isMu(relation) ? 1.0 : -1.0; }
+
   [[nodiscard]] double value(const Eigen::VectorXd& p, double I) const {
+    if (isPower(relation)) return p[0] + sign() * std::exp(p[1]) * std::pow(I, p[2]);
     if (relation == RheologyRelation::PhiOfI) return p[0] - p[1] * I;
     const double s = I / (I + std::exp(p[2]));  // 1 / (1 + I_0 / I)
     return p[0] + (p[1] - p[0]) * s;
   }
   // d value / d p into row.
   void gradient(const Eigen::VectorXd& p, double I, Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const {
+    if (isPower(relation)) {
+      const double term = sign() * std::exp(p[1]) * std::pow(I, p[2]);
+      row << 1.0, term, term * std::log(I);
+      return;
+    }
     if (relation == RheologyRelation::PhiOfI) {
       row << 1.0, -I;
       return;
@@ -34,27 +48,79 @@ struct Model {
   }
   // d value / d I, for the effective variance.
   [[nodiscard]] double slope(const Eigen::VectorXd& p, double I) const {
+    if (isPower(relation)) return sign() * std::exp(p[1]) * p[2] * std::pow(I, p[2] - 1.0);
     if (relation == RheologyRelation::PhiOfI) return -p[1];
     const double I0 = std::exp(p[2]);
     return (p[1] - p[0]) * I0 / ((I + I0) * (I + I0));
   }
 };
 
+// A power law's start: for each exponent on a grid over 0.1-2, the critical value and amplitude
+// by linear least squares; the exponent with the smallest squared residual and a positive
+// amplitude wins.
+Eigen::VectorXd powerLawStart(RheologyRelation relation, std::span<const RheologySample> samples,
+                              const std::string& what) {
+  const double sign = isMu(relation) ? 1.0 : -1.0;
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd start;
+  const auto m = static_cast<Eigen::Index>(samples.size());
+  for (double exponent = 0.1; exponent <= 2.0 + 1e-9; exponent += 0.02) {
+    Eigen::MatrixXd A(m, 2);
+    Eigen::VectorXd y(m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const auto& s = samples[static_cast<std::size_t>(i)];
+      A(i, 0) = 1.0;
+      A(i, 1) = sign * std::pow(s.inertialNumber, exponent);
+      y[i] = s.value;
+    }
+    const Eigen::VectorXd c = A.colPivHouseholderQr().solve(y);
+    const double sse = (A * c - y).squaredNorm();
+    if (c[1] > 0.0 && sse < best) {
+      best = sse;
+      start = Eigen::Vector3d(c[0], std::log(c[1]), exponent);
+    }
+  }
+  if (start.size() == 0) {
+    throw Error(what + ": no exponent in 0.1-2 gives a positive amplitude (the values do not " +
+                (sign > 0 ? "rise" : "fall") + " with I)");
+  }
+  return start;
+}
+
 }  // namespace
 
-const char* relationName(RheologyRelation relation) {
-  return relation == RheologyRelation::MuOfI ? "mu_of_I" : "phi_of_I";
+const char* relationName(RheologyRelation relation) { return isMu(relation) ? "mu_of_I" : "phi_of_I"; }
+
+const char* formName(RheologyRelation relation) {
+  switch (relation) {
+    case RheologyRelation::MuOfI:
+      return core::kMuOfIJopForm;
+    case RheologyRelation::PhiOfI:
+      return "phi_c - slope I";
+    case RheologyRelation::MuOfIPower:
+      return "mu_c + mu_amplitude I^mu_exponent";
+    case RheologyRelation::PhiOfIPower:
+      return "phi_c_power - phi_amplitude I^phi_exponent";
+  }
+  return "";
+}
+
+std::string fitKey(RheologyRelation relation) {
+  return std::string(relationName(relation)) + (isPower(relation) ? "_power" : "");
 }
 
 double RheologyFit::operator()(double inertialNumber) const {
+  if (isPower(relation)) {
+    return params[0] + (isMu(relation) ? 1.0 : -1.0) * params[1] * std::pow(inertialNumber, params[2]);
+  }
   if (relation == RheologyRelation::PhiOfI) return params[0] - params[1] * inertialNumber;
   return params[0] + (params[1] - params[0]) / (1.0 + params[2] / inertialNumber);
 }
 
 RheologyFit fitRheology(RheologyRelation relation, std::span<const RheologySample> samples) {
-  const std::string what = std::string("the ") + relationName(relation) + " fit";
+  const std::string what = "the " + fitKey(relation) + " fit";
   const Model model{relation};
-  const Eigen::Index n = relation == RheologyRelation::MuOfI ? 3 : 2;
+  const Eigen::Index n = relation == RheologyRelation::PhiOfI ? 2 : 3;
   const auto m = static_cast<Eigen::Index>(samples.size());
   if (m <= n) {
     throw Error(what + ": " + std::to_string(m) + " points with an inertial number cannot constrain " +
@@ -71,7 +137,9 @@ RheologyFit fitRheology(RheologyRelation relation, std::span<const RheologySampl
     logSum += std::log(s.inertialNumber);
   }
   Eigen::VectorXd p(n);
-  if (relation == RheologyRelation::MuOfI) {
+  if (isPower(relation)) {
+    p = powerLawStart(relation, samples, what);
+  } else if (relation == RheologyRelation::MuOfI) {
     // mu rises from mu_s to mu_2 around I_0: start at the data's extremes and its typical I.
     const double pad = 0.1 * (highest - lowest) + 1e-3;
     p << lowest - pad, highest + pad, logSum / static_cast<double>(m);
@@ -124,6 +192,12 @@ RheologyFit fitRheology(RheologyRelation relation, std::span<const RheologySampl
     out.names = {"mu_s", "mu_2", "inertial_number_0"};
     out.params[2] = std::exp(fit.params[2]);
     D(2, 2) = out.params[2];
+  } else if (isPower(relation)) {
+    // The amplitude from its logarithm: A = exp(log A).
+    out.names = isMu(relation) ? std::vector<std::string>{"mu_c", "mu_amplitude", "mu_exponent"}
+                               : std::vector<std::string>{"phi_c_power", "phi_amplitude", "phi_exponent"};
+    out.params[1] = std::exp(fit.params[1]);
+    D(1, 1) = out.params[1];
   } else {
     out.names = {"phi_c", "slope"};
   }

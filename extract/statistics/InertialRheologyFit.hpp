@@ -3,6 +3,11 @@
 // PRE 85 021305; Jop, Forterre and Pouliquen 2006):
 //   mu(I)  = mu_s + (mu_2 - mu_s) / (1 + I_0 / I)   (stress ratio tau / p against inertial number)
 //   phi(I) = phi_c - a I                             (solid fraction against inertial number)
+// and the power laws that hold near the critical point for frictionless beads (issue 61; Peyneau
+// and Roux 2008 report mu - mu_c and phi_c - phi as powers of I):
+//   mu(I)  = mu_c + B I^b        phi(I) = phi_c - A I^a
+// fitted as (mu_c, log B, b) and (phi_c, log A, a), so the amplitudes stay positive; a start is
+// found by scanning the exponent over 0.1-2 with the other two solved linearly.
 //
 // Estimator: weighted least squares (Levenberg-Marquardt, LeastSquares.hpp) with effective
 // variances (Orear 1982): both coordinates of a point are measured, so each point's variance is
@@ -32,11 +37,13 @@ struct RheologySample {
   double valueErr = 0.0;           // 1-sigma, 0 when unknown (a constant-volume solid fraction)
 };
 
-enum class RheologyRelation { MuOfI, PhiOfI };
+enum class RheologyRelation { MuOfI, PhiOfI, MuOfIPower, PhiOfIPower };
 
 struct RheologyFit {
   RheologyRelation relation = RheologyRelation::MuOfI;
-  std::vector<std::string> names;  // mu_s, mu_2, inertial_number_0 | phi_c, slope
+  // mu_s, mu_2, inertial_number_0 | phi_c, slope | mu_c, mu_amplitude, mu_exponent |
+  // phi_c_power, phi_amplitude, phi_exponent
+  std::vector<std::string> names;
   Eigen::VectorXd params;
   Eigen::VectorXd errors;          // 1-sigma, from the scaled covariance
   Eigen::MatrixXd covariance;      // in the order of names
@@ -50,12 +57,17 @@ struct RheologyFit {
   [[nodiscard]] double operator()(double inertialNumber) const;
 };
 
-// The name a database row and a report give the relation ("mu_of_I", "phi_of_I").
+// The name a database row and a report give the relation ("mu_of_I", "phi_of_I"; a power law is
+// of the same relation, in another form).
 const char* relationName(RheologyRelation relation);
+// The form as the database writes it ("mu_s + (mu_2 - mu_s) / (1 + I_0 / I)", ...).
+const char* formName(RheologyRelation relation);
+// The summary's key of the fit: the relation's name, "_power" added for a power law.
+std::string fitKey(RheologyRelation relation);
 
 // Fits the relation to the samples (inertial numbers > 0, finite values). Throws
-// grainbridge::Error naming the relation when there are too few samples (mu(I) needs 4,
-// phi(I) 3: one more than its parameters) or the fit fails.
+// grainbridge::Error naming the relation when there are too few samples (one more than its
+// parameters: 4, the linear phi(I) 3) or the fit fails.
 RheologyFit fitRheology(RheologyRelation relation, std::span<const RheologySample> samples);
 
 }  // namespace grainbridge::extract::statistics

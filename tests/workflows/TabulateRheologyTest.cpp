@@ -1,10 +1,11 @@
-// The tabulate stage's dense-flow part (TabulateRheology): closure-point summaries become one
-// mu(I) and one phi(I) row per restitution, each with the points as measured and the fit of the
-// points with I up to the cap; points without an inertial number stay out; points of different
-// grains are refused.
+// The tabulate stage's dense-flow part (TabulateRheology): closure-point summaries become
+// mu(I) and phi(I) rows per restitution (each in Jop's or the linear form and as a power law), each with the points as
+// measured and the fit of the points with I up to the cap; points without an inertial number stay out; points of
+// different grains are refused.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -52,7 +53,7 @@ TEST(TabulateRheology, OneMuAndOnePhiRowPerRestitutionWithTheFitOfThePointsBelow
   points.push_back(unsheared);  // no inertial number: not in the rheology
 
   const auto r = tabulateRheology(points, "glass", 0.5);
-  ASSERT_EQ(r.rows.size(), 4U);
+  ASSERT_EQ(r.rows.size(), 8U);  // per restitution mu(I) and phi(I), each in two forms
   const json* mu09 = rowOf(r, "mu_of_I", 0.9);
   ASSERT_NE(mu09, nullptr);
   EXPECT_EQ((*mu09)["points"], 6);
@@ -74,6 +75,17 @@ TEST(TabulateRheology, OneMuAndOnePhiRowPerRestitutionWithTheFitOfThePointsBelow
   EXPECT_TRUE(rowOf(r, "phi_of_I", 0.7)->contains("phi_c"));
   EXPECT_THAT(r.pointsCsv, HasSubstr("glass,mu_of_I,0.9,2,0,"));
   EXPECT_THAT(r.fitsCsv, HasSubstr("glass,phi_of_I,0.7,phi_c,"));
+  // The power-law form of phi(I) on points of a straight line: exponent 1, the line's slope and
+  // phi_c (issue 61). Its row follows the Jop and linear rows of the same restitution.
+  const auto power = std::find_if(r.rows.begin(), r.rows.end(), [](const json& row) {
+    return row["relation"] == "phi_of_I" && row["restitution"] == 0.9 &&
+           row["form"] == "phi_c_power - phi_amplitude I^phi_exponent";
+  });
+  ASSERT_NE(power, r.rows.end());
+  EXPECT_NEAR((*power)["phi_exponent"].get<double>(), 1.0, 1e-6);
+  EXPECT_NEAR((*power)["phi_amplitude"].get<double>(), 0.4, 1e-6);
+  EXPECT_NEAR((*power)["phi_c_power"].get<double>(), 0.64, 1e-8);
+  EXPECT_THAT(r.fitsCsv, HasSubstr("glass,phi_of_I_power,0.9,phi_exponent,"));
 }
 
 TEST(TabulateRheology, PointsWithoutAnInertialNumberGiveNoRows) {

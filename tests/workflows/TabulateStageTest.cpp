@@ -105,7 +105,7 @@ TEST(TabulateStage, ShearedPointsGiveTheRheologyRowsThatDbQueryShows) {
   r = runGrainbridge(work.path(), "db query --config wf.json --table rheology --format json");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const json rows = json::parse(r.output);
-  ASSERT_EQ(rows.size(), 2U) << r.output;
+  ASSERT_EQ(rows.size(), 4U) << r.output;  // mu(I) and phi(I), each in two forms
   auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
   db::ClosureQuery q;
   const json points = db::ClosureStore(database).query(q);
@@ -121,11 +121,14 @@ TEST(TabulateStage, ShearedPointsGiveTheRheologyRowsThatDbQueryShows) {
     for (const auto& p : points) {
       EXPECT_NE(std::find(I.begin(), I.end(), p["inertial_number"].get<double>()), I.end());
     }
-    if (row["relation"] == "phi_of_I") {
+    const bool power = row["form"].get<std::string>().find('^') != std::string::npos;
+    if (row["relation"] == "phi_of_I" && !power) {
+      EXPECT_EQ(row["form"], "phi_c - slope I");
       EXPECT_TRUE(row.contains("phi_c") && row["phi_c"].is_number()) << row.dump();
       EXPECT_TRUE(row.contains("slope_err") && row["slope_err"].is_number()) << row.dump();
-    } else {
+    } else if (!power) {
       EXPECT_EQ(row["relation"], "mu_of_I");
+      EXPECT_EQ(row["form"], "mu_s + (mu_2 - mu_s) / (1 + I_0 / I)");
     }
   }
   // 0.02 s of 40 grains is noise, not rheology: mu(I) need not fit. The table is still made, and
@@ -133,7 +136,10 @@ TEST(TabulateStage, ShearedPointsGiveTheRheologyRowsThatDbQueryShows) {
   auto st = database.prepare("SELECT summary_json FROM runs WHERE stage = 'table' AND status = 'done'");
   ASSERT_TRUE(st.step());
   const json summary = json::parse(st.columnText(0));
-  EXPECT_EQ(summary["rheology_rows"], 2) << summary.dump();
+  EXPECT_EQ(summary["rheology_rows"], 4) << summary.dump();
+  // The power laws (3 parameters on 4 noisy points): fitted, or why not.
+  EXPECT_TRUE(summary.contains("phi_c_power") || summary.value("phi_of_I_power_fit", "").starts_with("none:"))
+      << summary.dump();
   EXPECT_TRUE(summary.contains("phi_c") && summary.contains("phi_c_err")) << summary.dump();
   EXPECT_TRUE(summary.contains("mu_s") || summary.value("mu_of_I_fit", "").starts_with("none: the mu_of_I fit"))
       << summary.dump();

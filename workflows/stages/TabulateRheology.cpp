@@ -29,14 +29,17 @@ std::optional<double> restitutionOf(const json& point) {
 
 struct Relation {
   st::RheologyRelation kind;
-  const char* value;      // the point's column
-  const char* error;      // its error's column
-  const char* form;       // as the database and the report write it
+  const char* value;  // the point's column
+  const char* error;  // its error's column
 };
 
+// Each relation in two forms: Jop et al.'s mu(I) and the linear phi(I), and the power laws near
+// the critical point (issue 61); the summary says which fits better (chi2/dof).
 constexpr Relation kRelations[] = {
-    {st::RheologyRelation::MuOfI, "stress_ratio", "stress_ratio_err", "mu_s + (mu_2 - mu_s) / (1 + I_0 / I)"},
-    {st::RheologyRelation::PhiOfI, "solid_fraction", "solid_fraction_err", "phi_c - slope I"},
+    {st::RheologyRelation::MuOfI, "stress_ratio", "stress_ratio_err"},
+    {st::RheologyRelation::PhiOfI, "solid_fraction", "solid_fraction_err"},
+    {st::RheologyRelation::MuOfIPower, "stress_ratio", "stress_ratio_err"},
+    {st::RheologyRelation::PhiOfIPower, "solid_fraction", "solid_fraction_err"},
 };
 
 // The fit, or why there is none.
@@ -112,13 +115,15 @@ TabulatedRheology tabulateRheology(const std::vector<json>& points, const std::s
         valueErr.push_back(pt->value(relation.error, 0.0));
         const bool inFit = I.back() <= fitMax;
         if (inFit) fitted.push_back({I.back(), IErr.back(), value.back(), valueErr.back()});
+        // The points once per relation (its power-law form fits the same points).
+        if (st::fitKey(relation.kind) != st::relationName(relation.kind)) continue;
         pointsCsv << name << ',' << st::relationName(relation.kind) << ',' << eText << ',' << I.back() << ','
                   << IErr.back() << ',' << value.back() << ',' << valueErr.back() << ',' << (inFit ? 1 : 0) << '\n';
       }
       json row = {{"name", name},
                   {"family", group.front()->value("family", std::string("unknown"))},
                   {"relation", st::relationName(relation.kind)},
-                  {"form", relation.form},
+                  {"form", st::formName(relation.kind)},
                   {"restitution", e},
                   {"friction", group.front()->contains("friction") ? group.front()->at("friction") : json()},
                   {"diameter", diameter},
@@ -130,21 +135,23 @@ TabulatedRheology tabulateRheology(const std::vector<json>& points, const std::s
                   {"uncertainties_json", valueErr},
                   {"fit_inertial_number_max", fitMax},
                   {"fitted_points", fitted.size()}};
-      json brief = {{"relation", st::relationName(relation.kind)}, {"restitution", e}, {"points", I.size()},
+      json brief = {{"relation", st::fitKey(relation.kind)},
+                    {"restitution", e},
+                    {"points", I.size()},
                     {"fitted_points", fitted.size()}};
-      const std::size_t needed = relation.kind == st::RheologyRelation::MuOfI ? 4 : 3;
+      const std::size_t needed = relation.kind == st::RheologyRelation::PhiOfI ? 3 : 4;
       if (fitted.size() < needed) {
         // Expected on a dilute sweep (the quickstart's), so not a line per relation and restitution
         // in every run's log: the summary says it, the log at -v.
         const std::string why = std::to_string(fitted.size()) + " points with I <= " + core::humanNumber(fitMax) +
                                 ", too few to fit (needs " + std::to_string(needed) + ")";
-        spdlog::debug("tabulate {}: {} at restitution {}: {}", name, st::relationName(relation.kind),
+        spdlog::debug("tabulate {}: {} at restitution {}: {}", name, st::fitKey(relation.kind),
                       eText.empty() ? "-" : eText, why);
         brief["fit"] = "none: " + why;
       } else if (const auto [fit, why] = fitOrExplain(relation.kind, fitted); !fit) {
         // Points that do not determine the law (mu not rising with I, I_0 outside the points'
         // range) are still a table; the fit's absence is said, not turned into a failed stage.
-        spdlog::warn("tabulate {}: {} at restitution {}: {}", name, st::relationName(relation.kind),
+        spdlog::warn("tabulate {}: {} at restitution {}: {}", name, st::fitKey(relation.kind),
                      eText.empty() ? "-" : eText, why);
         brief["fit"] = "none: " + why;
       } else {
@@ -160,7 +167,7 @@ TabulatedRheology tabulateRheology(const std::vector<json>& points, const std::s
           row[fit->names[k] + "_err"] = fit->errors[i];
           brief[fit->names[k]] = fit->params[i];
           brief[fit->names[k] + "_err"] = fit->errors[i];
-          fitsCsv << name << ',' << st::relationName(relation.kind) << ',' << eText << ',' << fit->names[k] << ','
+          fitsCsv << name << ',' << st::fitKey(relation.kind) << ',' << eText << ',' << fit->names[k] << ','
                   << fit->params[i] << ',' << fit->errors[i] << ',' << fit->chi2PerDof << ',' << fit->dof << ','
                   << fit->points << '\n';
         }

@@ -285,7 +285,10 @@ void TabulateStage::run(StageContext& ctx) const {
     // Summary values are scalars (a report shows them as columns). Every row is in the CSVs and
     // the database; with one restitution its fits are summary values too, or why there is none.
     summary["rheology_rows"] = rheology.rows.size();
-    if (rheology.summary.size() == 2) {
+    const bool oneRestitution = std::all_of(rheology.summary.begin(), rheology.summary.end(), [&](const json& f) {
+      return f.at("restitution") == rheology.summary.front().at("restitution");
+    });
+    if (oneRestitution) {
       for (const auto& fit : rheology.summary) {
         const std::string relation = fit.at("relation");
         for (const auto& [k, v] : fit.items()) {
@@ -295,6 +298,14 @@ void TabulateStage::run(StageContext& ctx) const {
             summary[k] = v;
           }
         }
+      }
+      // Which form describes the points better, by chi2/dof (issue 61).
+      for (const std::string relation : {"mu_of_I", "phi_of_I"}) {
+        const auto base = summary.find(relation + "_chi2_per_dof");
+        const auto power = summary.find(relation + "_power_chi2_per_dof");
+        if (base == summary.end() || power == summary.end()) continue;
+        summary[relation + "_better_form"] =
+            power->get<double>() < base->get<double>() ? "power_law" : (relation == "mu_of_I" ? "jop" : "linear");
       }
     }
   }

@@ -18,7 +18,8 @@ class TabulateStage final : public StageType {
   // 2: table CSV at full precision (17 significant digits, was 12)
   // 3: the mu(I) and phi(I) tables and fits (rheology records, TabulateRheology)
   // 4: each table keeps its nodes' correlations with the other theta forms (issue 63)
-  // 5: points whose box ordered are left out unless keep_ordered (issue 61)
+  // 5: points whose box ordered are left out unless keep_ordered; mu(I) and phi(I) also as
+  //    power laws near the critical point, with the better form by chi2/dof (issue 61)
   [[nodiscard]] int implVersion() const override { return 5; }
   [[nodiscard]] std::string summary() const override {
     return "closure tables (p_theta, eta_theta, j_theta against solid fraction [and restitution]) from closure "
