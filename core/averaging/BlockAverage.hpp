@@ -15,11 +15,11 @@
 // form) with the integrated correlation time the extrapolated error itself implies, and solves
 // for the variance of the mean; white noise is left as it is, and the correction is capped at a
 // factor 2 in variance (beyond it the level says too little, plateauReached = false). Issue 63:
-// over 300 AR(1) series of correlation 0.9 (integrated time 9.5 samples), the level alone gave
-// 0.85 of the true error at n = 200 and 0.91 at 400 (root mean square), the extrapolated 1.04 and
-// 1.00; a sheared gas's temperature has that correlation at 5 ms frames. A slower component the
-// level has not seen (white noise plus a weak slow exponential) stays underestimated, by about
-// 5 % in that test, as by the level alone.
+// over 400 AR(1) series of correlation 0.9 (integrated time 9.5 samples), the level alone gave
+// 0.865 of the true error at n = 200 and 0.940 at 400 (root mean square; BlockAverageTest), the
+// extrapolated 1.066 and 1.041; a sheared gas's temperature has that correlation at 5 ms frames.
+// A slower component the level has not seen (white noise plus a weak slow exponential) stays
+// underestimated, by about 5 % in a prototype of that test, as by the level alone.
 //
 // Fewer than kMinSamplesForBlocking frames give the plain standard error sqrt(var / (n - 1)),
 // which assumes independent frames (method PlainFewSamples says so). When no level meets the

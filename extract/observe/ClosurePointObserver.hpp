@@ -48,7 +48,8 @@ class ClosurePointObserver final : public FrameObserver {
   double diameter_ = 0.0, density_ = 0.0;
 };
 
-// The forms of a point's stresses (core/ClosureForms), each with its block-averaging error: p_theta
+// The forms of a point's stresses (core/ClosureForms), each with its block-averaging error (the
+// theta forms' by quadrature, which both callers then replace by addThetaFormErrors'): p_theta
 // where theta > 0; under shear (state.shearRate > 0) also shear_rate, shear_stress, viscosity and
 // the shear-scaled forms, and eta_theta where theta > 0. A mixture's species use it too.
 void addStressForms(nlohmann::json& row, const core::MeasuredValue& pressure, const core::MeasuredValue& shearStress,

@@ -118,8 +118,11 @@ void SpeciesClosurePoints::finish(OutputSink& out, ExtractResult& /*result*/) {
 
   for (std::size_t s = 0; s < species_.size(); ++s) {
     const Series& series = perSpecies_[s];
-    const core::MeasuredValue eps = averaged(series.solidFraction), T = averaged(series.temperature),
-                              P = averaged(series.pressure), kinetic = averaged(series.pressureKinetic),
+    // Temperature and pressure block-averaged once: their means, errors and plateau verdicts.
+    const auto blockedT = core::averaging::blockAverage(series.temperature);
+    const auto blockedP = core::averaging::blockAverage(series.pressure);
+    const core::MeasuredValue T{blockedT.mean, blockedT.standardError}, P{blockedP.mean, blockedP.standardError};
+    const core::MeasuredValue eps = averaged(series.solidFraction), kinetic = averaged(series.pressureKinetic),
                               contact = averaged(series.pressureContact), tau = averaged(series.shearStress);
     json row = {{"family", options_.family},
                 {"species", nameOf(species_[s])},
@@ -158,9 +161,8 @@ void SpeciesClosurePoints::finish(OutputSink& out, ExtractResult& /*result*/) {
       if (T.mean > 0.0) row["j_theta"] = core::toClosureForm(core::ClosureForm::JTheta, J.mean, state);
     }
     std::vector<std::string> noPlateau;
-    if (!core::averaging::blockAverage(series.temperature).plateauReached)
-      noPlateau.emplace_back("granular_temperature");
-    if (!core::averaging::blockAverage(series.pressure).plateauReached) noPlateau.emplace_back("pressure");
+    if (!blockedT.plateauReached) noPlateau.emplace_back("granular_temperature");
+    if (!blockedP.plateauReached) noPlateau.emplace_back("pressure");
     if (T.mean > 0.0) {
       // The forms' errors from the frame series, with their correlations (ThetaFormErrors.hpp).
       const auto forms = addThetaFormErrors(row, state, series.temperature, series.pressure, series.shearStress, {});
