@@ -177,7 +177,8 @@ TEST(TabulateStage, PressureControlledPointsExtendTheTableToTheirMeasuredSolidFr
 
 // Issue 61: a point whose box is crystalline (an fcc lattice of 108 grains at solid fraction 0.68,
 // sheared for half a strain unit) is recorded as ordered and left out of the tables unless
-// keep_ordered; the random gas's points are tabled either way.
+// keep_ordered; the random gas's points are tabled either way. compare draws the ordered point
+// apart and counts it.
 TEST(TabulateStage, AnOrderedBoxIsRecordedAndLeftOutUnlessKeepOrdered) {
   TempDir work;
   json lattice = shear({kBig}, {0.9});
@@ -187,11 +188,17 @@ TEST(TabulateStage, AnOrderedBoxIsRecordedAndLeftOutUnlessKeepOrdered) {
   lattice["sweep"] = {{"box_hi", {{"4.37 mm", "4.37 mm", "4.37 mm"}}}, {"contact/restitution", {0.9}}};
   json wf = workflow({{"gas", shear({kBig, kSmall}, {0.9})}, {"lattice", lattice}});
   wf["stages"]["table"]["params"]["second_variable"] = "";
+  wf["stages"]["cmp"] = {{"type", "compare"}, {"from", wf["stages"]["table"]["from"]}};
   writeText(work.path() / "wf.json", wf.dump(2));
   auto r = runGrainbridge(work.path(), "run wf.json -q");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   {
     auto database = db::Database::openReadOnly(work.path() / "results/tab/grainbridge.sqlite");
+    auto st = database.prepare("SELECT summary_json FROM runs WHERE stage = 'cmp' AND status = 'done'");
+    ASSERT_TRUE(st.step());
+    const json compared = json::parse(st.columnText(0));
+    EXPECT_EQ(compared["points"], 3) << compared.dump();
+    EXPECT_EQ(compared["ordered_points"], 1) << compared.dump();
     db::ClosureStore store(database);
     int ordered = 0;
     for (const auto& p : store.query({})) {

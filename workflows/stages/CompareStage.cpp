@@ -1,6 +1,7 @@
 #include "workflows/stages/CompareStage.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -49,6 +50,7 @@ namespace {
 struct Point {
   std::string key;
   double solidFraction = 0, restitution = 1, friction = 0, shearRate = 0, diameter = 0, density = 0;
+  bool ordered = false;  // its box crystallised (issue 61): drawn apart, left out of bands and fits
   json summary;
   [[nodiscard]] bool has(const char* q) const { return summary.contains(q) && summary[q].is_number(); }
   [[nodiscard]] double value(const char* q) const { return summary.at(q).get<double>(); }
@@ -194,72 +196,127 @@ report::Series kineticTheoryCurve(kt::KineticModelName model, double e, int vari
   return curve;
 }
 
+// A DEM series' label: its restitution and, when not zero, its friction.
+std::string demLabel(const Point& pt) {
+  return "DEM, e " + core::humanNumber(pt.restitution) +
+         (pt.friction != 0.0 ? ", μ " + core::humanNumber(pt.friction) : "");
+}
+
+// The points whose box ordered, whatever their state, in grey: shown, and left out of the table
+// bands and the fits as tabulate leaves them out (issue 61).
+report::Series orderedSeries() {
+  report::Series s;
+  s.label = "DEM, box ordered (left out of table and fits)";
+  s.model = "DEM";
+  s.style = report::Series::Style::PointsWithErrors;
+  s.variant = 5;
+  s.colour = "#888888";
+  return s;
+}
+
+// One fitted relation's legend entry: its parameters with their errors and its chi2/dof.
+std::string fitLabel(const extract::statistics::RheologyFit& fit, double restitution) {
+  namespace st = extract::statistics;
+  static const std::map<std::string, std::string> symbols = {
+      {"mu_s", "μs"},        {"mu_2", "μ2"},         {"inertial_number_0", "I0"}, {"phi_c", "φc"},
+      {"slope", "a"},        {"mu_c", "μc"},         {"mu_amplitude", "B"},       {"mu_exponent", "b"},
+      {"phi_c_power", "φc"}, {"phi_amplitude", "A"}, {"phi_exponent", "a"}};
+  const char* form = "";
+  switch (fit.relation) {
+    case st::RheologyRelation::MuOfI:
+      form = "μs + (μ2 − μs)/(1 + I0/I)";
+      break;
+    case st::RheologyRelation::PhiOfI:
+      form = "φc − a I";
+      break;
+    case st::RheologyRelation::MuOfIPower:
+      form = "μc + B I^b";
+      break;
+    case st::RheologyRelation::PhiOfIPower:
+      form = "φc − A I^a";
+      break;
+  }
+  std::string label = std::string("fit ") + form + ", e " + core::humanNumber(restitution) + ":";
+  for (std::size_t k = 0; k < fit.names.size(); ++k) {
+    const auto sym = symbols.find(fit.names[k]);
+    label += (k == 0 ? " " : ", ") + (sym != symbols.end() ? sym->second : fit.names[k]) + " " +
+             core::humanNumber(fit.params[static_cast<Eigen::Index>(k)], 3) + " ± " +
+             core::humanNumber(fit.errors[static_cast<Eigen::Index>(k)], 1);
+  }
+  return label + ", χ²/dof " + core::humanNumber(fit.chi2PerDof, 3);
+}
+
 // The dense-flow rheology (Chialvo, Sun and Sundaresan 2012): the stress ratio mu = tau / p and
-// the solid fraction against the inertial number I, DEM points per (e, friction) with their fit
-// (extract/statistics/InertialRheologyFit, points with I <= fitMax), and each kinetic theory's
-// steady simple shear, where I = 1 / sqrt(p*) and mu = tau* / p* depend on (phi, e) only.
+// the solid fraction against the inertial number I, DEM points per (e, friction) with their fits
+// (extract/statistics/InertialRheologyFit, points with I <= fitMax, ordered boxes left out): Jop's
+// mu(I) and the linear phi(I) beside the power laws near the critical point (issue 61), each
+// labelled with its chi2/dof; and each kinetic theory's steady simple shear, where
+// I = 1 / sqrt(p*) and mu = tau* / p* depend on (phi, e) only.
 std::vector<report::Figure> rheologyFigures(const std::vector<Point>& points, const std::set<double>& restitutions,
                                             double fitMax) {
   namespace st = extract::statistics;
   std::vector<report::Figure> figures;
-  for (const auto relation : {st::RheologyRelation::MuOfI, st::RheologyRelation::PhiOfI}) {
-    const bool mu = relation == st::RheologyRelation::MuOfI;
+  for (const bool mu : {true, false}) {
+    const std::array relations = mu ? std::array{st::RheologyRelation::MuOfI, st::RheologyRelation::MuOfIPower}
+                                    : std::array{st::RheologyRelation::PhiOfI, st::RheologyRelation::PhiOfIPower};
     report::Figure fig;
     fig.title = mu ? "Stress ratio against inertial number" : "Solid fraction against inertial number";
     fig.x = {"inertial number I", "–", true};
     fig.y = mu ? report::Axis{"μ = τ/p", "–", false} : report::Axis{"solid fraction φ", "–", false};
     std::map<std::pair<double, double>, std::pair<report::Series, std::vector<st::RheologySample>>> dem;
+    report::Series ordered = orderedSeries();
+    double lowest = std::numeric_limits<double>::infinity(), highest = 0.0;
     for (const auto& pt : points) {
       if (!pt.has("inertial_number") || !pt.has("stress_ratio")) continue;
-      auto& [s, samples] = dem[{pt.restitution, pt.friction}];
-      s.label = "DEM, e " + core::humanNumber(pt.restitution) +
-                (pt.friction != 0.0 ? ", μ " + core::humanNumber(pt.friction) : "");
-      s.model = "DEM";
-      s.style = report::Series::Style::PointsWithErrors;
       const double I = pt.value("inertial_number");
       const double y = mu ? pt.value("stress_ratio") : pt.solidFraction;
       const double yErr = pt.error(mu ? "stress_ratio" : "solid_fraction");
+      lowest = std::min(lowest, I);
+      highest = std::max(highest, I);
+      if (pt.ordered) {
+        ordered.x.push_back(I);
+        ordered.y.push_back(y);
+        ordered.yError.push_back(yErr);
+        continue;
+      }
+      auto& [s, samples] = dem[{pt.restitution, pt.friction}];
+      s.label = demLabel(pt);
+      s.model = "DEM";
+      s.style = report::Series::Style::PointsWithErrors;
       s.x.push_back(I);
       s.y.push_back(y);
       s.yError.push_back(yErr);
       if (I <= fitMax) samples.push_back({I, pt.error("inertial_number"), y, yErr});
     }
-    if (dem.empty()) return {};
+    if (dem.empty() && ordered.x.empty()) return {};
     int variant = 0;
-    double lowest = std::numeric_limits<double>::infinity(), highest = 0.0;
     for (auto& [state, entry] : dem) {
       auto& [s, samples] = entry;
       s.variant = variant;
-      lowest = std::min(lowest, *std::min_element(s.x.begin(), s.x.end()));
-      highest = std::max(highest, *std::max_element(s.x.begin(), s.x.end()));
-      report::Series fitted;
-      try {
-        const auto fit = st::fitRheology(relation, samples);
-        fitted.label = mu ? "fit, e " + core::humanNumber(state.first) + ": μs " +
-                                core::humanNumber(fit.params[0], 3) + " ± " + core::humanNumber(fit.errors[0], 1) +
-                                ", μ2 " + core::humanNumber(fit.params[1], 3) + " ± " +
-                                core::humanNumber(fit.errors[1], 1) + ", I0 " + core::humanNumber(fit.params[2], 3) +
-                                " ± " + core::humanNumber(fit.errors[2], 1)
-                          : "fit, e " + core::humanNumber(state.first) + ": φc " + core::humanNumber(fit.params[0], 4) +
-                                " ± " + core::humanNumber(fit.errors[0], 1) + ", a " +
-                                core::humanNumber(fit.params[1], 3) + " ± " + core::humanNumber(fit.errors[1], 1);
-        fitted.model = "DEM";
-        fitted.style = report::Series::Style::Line;
-        fitted.variant = variant;
-        double from = samples.front().inertialNumber, to = from;
-        for (const auto& x : samples) from = std::min(from, x.inertialNumber), to = std::max(to, x.inertialNumber);
-        for (int k = 0; k <= 60; ++k) {
-          const double I = from * std::pow(to / from, k / 60.0);
-          fitted.x.push_back(I);
-          fitted.y.push_back(fit(I));
-        }
-      } catch (const Error&) {
-        // Too few points below the cap, or points that do not determine the law: no line.
-      }
       fig.series.push_back(std::move(s));
-      if (!fitted.x.empty()) fig.series.push_back(std::move(fitted));
-      ++variant;
+      for (std::size_t form = 0; form < relations.size(); ++form) {
+        try {
+          const auto fit = st::fitRheology(relations[form], samples);
+          report::Series fitted;
+          fitted.label = fitLabel(fit, state.first);
+          fitted.model = "DEM";
+          fitted.style = report::Series::Style::Line;
+          fitted.variant = variant + static_cast<int>(form);
+          double from = samples.front().inertialNumber, to = from;
+          for (const auto& x : samples) from = std::min(from, x.inertialNumber), to = std::max(to, x.inertialNumber);
+          for (int k = 0; k <= 60; ++k) {
+            const double I = from * std::pow(to / from, k / 60.0);
+            fitted.x.push_back(I);
+            fitted.y.push_back(fit(I));
+          }
+          fig.series.push_back(std::move(fitted));
+        } catch (const Error&) {
+          // Too few points below the cap, or points that do not determine the law: no line.
+        }
+      }
+      variant += static_cast<int>(relations.size());
     }
+    if (!ordered.x.empty()) fig.series.push_back(std::move(ordered));
     int eIndex = 0;
     for (double e : restitutions) {
       for (auto model : kt::kAllKineticModels) {
@@ -312,6 +369,7 @@ void CompareStage::run(StageContext& ctx) const {
     pt.restitution = pt.value("restitution");
     pt.friction = pt.has("friction") ? pt.value("friction") : 0.0;
     pt.shearRate = pt.has("shear_rate") ? pt.value("shear_rate") : 0.0;
+    pt.ordered = pt.has("ordered") && pt.value("ordered") != 0.0;
     points.push_back(std::move(pt));
   }
   if (points.empty()) throw Error("compare: no upstream closure points; give it \"from\"");
@@ -325,7 +383,10 @@ void CompareStage::run(StageContext& ctx) const {
   // The state identifies the point; which extract run it came from is in the database
   // (run_inputs), not here, so the CSV does not change when an upstream key does.
   csv << "solid_fraction,restitution,friction,shear_rate,quantity,dem,dem_err,model,prediction,deviation\n";
-  json summary = {{"model", kt::toString(primary)}, {"points", points.size()}};
+  json summary = {
+      {"model", kt::toString(primary)},
+      {"points", points.size()},
+      {"ordered_points", std::count_if(points.begin(), points.end(), [](const Point& pt) { return pt.ordered; })}};
   const double limit = p.at("summary_max_solid_fraction");
   std::map<std::string, double> worst;
   std::vector<Deviation> deviations;  // the finite ones, for the findings
@@ -365,18 +426,20 @@ void CompareStage::run(StageContext& ctx) const {
     fig.x = {"solid fraction φ", "–"};
     fig.y = {std::string(form.symbol), "–", true};
     std::map<std::pair<double, double>, report::Series> dem;
+    report::Series ordered = orderedSeries();
     for (const auto& pt : points) {
       if (!pt.has(q.c_str())) continue;
-      auto& s = dem[{pt.restitution, pt.friction}];
-      s.label = "DEM, e " + core::humanNumber(pt.restitution) +
-                (pt.friction != 0.0 ? ", μ " + core::humanNumber(pt.friction) : "");
-      s.model = "DEM";
-      s.style = report::Series::Style::PointsWithErrors;
+      auto& s = pt.ordered ? ordered : dem[{pt.restitution, pt.friction}];
+      if (!pt.ordered) {
+        s.label = demLabel(pt);
+        s.model = "DEM";
+        s.style = report::Series::Style::PointsWithErrors;
+      }
       s.x.push_back(pt.solidFraction);
       s.y.push_back(pt.value(q.c_str()));
       s.yError.push_back(pt.error(q));
     }
-    if (dem.empty()) continue;
+    if (dem.empty() && ordered.x.empty()) continue;
     int variant = 0;
     for (auto& [k, s] : dem) {
       s.variant = variant++;
@@ -403,6 +466,7 @@ void CompareStage::run(StageContext& ctx) const {
       }
       fig.series.push_back(std::move(s));
     }
+    if (!ordered.x.empty()) fig.series.push_back(std::move(ordered));
     const double shearRate = ref.shearRate;
     int eIndex = 0;
     for (double e : restitutions) {

@@ -24,7 +24,9 @@ class CompareStage final : public StageType {
   // 5: figures as wide as their title and legend need (report/Plot)
   // 6: mu(I) and phi(I) figures with their fits beside kinetic theory's steady shear
   // 7: each DEM series' table drawn as a band of ± one standard error (issue 31)
-  [[nodiscard]] int implVersion() const override { return 7; }
+  // 8: ordered boxes drawn apart and left out of bands and fits; the power-law fits beside Jop's
+  //    and the line, each with its chi2/dof (issue 61)
+  [[nodiscard]] int implVersion() const override { return 8; }
   // The headline and its table are the findings; the report's row shows how many points.
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override { return {{"points", "–"}}; }
   [[nodiscard]] std::string summary() const override {
