@@ -55,6 +55,10 @@ struct Model {
   }
 };
 
+// A fitted exponent below this is a power law running away towards a logarithm (see
+// bestExponentAtLowEdge), not a critical point.
+constexpr double kLowestExponent = 0.02;
+
 // A power law's start: for each exponent on a grid over 0.1-2, the critical value and amplitude
 // by linear least squares; the exponent with the smallest squared residual and a positive
 // amplitude wins.
@@ -85,6 +89,37 @@ Eigen::VectorXd powerLawStart(RheologyRelation relation, std::span<const Rheolog
                 (sign > 0 ? "rise" : "fall") + " with I)");
   }
   return start;
+}
+
+// The weighted chi^2 of the best power law at each exponent on a grid (the critical value and
+// amplitude solved linearly at each), for the diagnosis of a power law that runs away: whether
+// the smallest chi^2 lies at the grid's low edge, where the exponent heads for 0 and the critical
+// value and amplitude grow without bound together (the points bend like a logarithm of I).
+bool bestExponentAtLowEdge(RheologyRelation relation, std::span<const RheologySample> samples,
+                           const Eigen::VectorXd& sigma) {
+  const double sign = isMu(relation) ? 1.0 : -1.0;
+  const auto m = static_cast<Eigen::Index>(samples.size());
+  double best = std::numeric_limits<double>::infinity(), bestExponent = 0.0;
+  for (double exponent = kLowestExponent; exponent <= 2.0 + 1e-9; exponent += 0.01) {
+    Eigen::MatrixXd A(m, 2);
+    Eigen::VectorXd y(m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const auto& s = samples[static_cast<std::size_t>(i)];
+      A(i, 0) = 1.0 / sigma[i];
+      A(i, 1) = sign * std::pow(s.inertialNumber, exponent) / sigma[i];
+      y[i] = s.value / sigma[i];
+    }
+    const Eigen::VectorXd c = A.colPivHouseholderQr().solve(y);
+    const double chi2 = (A * c - y).squaredNorm();
+    if (c[1] > 0.0 && chi2 < best) best = chi2, bestExponent = exponent;
+  }
+  return bestExponent < kLowestExponent + 0.005;
+}
+
+std::string runawayPowerLaw(const std::string& what) {
+  return what + ": the points determine no power law: its chi^2 keeps falling as the exponent goes to 0, with " +
+         "the critical value and the amplitude growing without bound (the points bend like a logarithm of I); " +
+         "fit a range nearer the critical point, or add points there";
 }
 
 }  // namespace
@@ -160,7 +195,18 @@ RheologyFit fitRheology(RheologyRelation relation, std::span<const RheologySampl
       }
     }
   };
-  LeastSquaresResult fit = levenbergMarquardt(residuals, samples.size(), p, what);
+  // A power law whose fit fails or whose exponent heads for 0 is diagnosed, not reported.
+  const auto fitOrDiagnose = [&](const Eigen::VectorXd& from) {
+    try {
+      LeastSquaresResult r = levenbergMarquardt(residuals, samples.size(), from, what);
+      if (isPower(relation) && r.params[2] < kLowestExponent) throw Error(runawayPowerLaw(what));
+      return r;
+    } catch (const Error&) {
+      if (isPower(relation) && bestExponentAtLowEdge(relation, samples, sigma)) throw Error(runawayPowerLaw(what));
+      throw;
+    }
+  };
+  LeastSquaresResult fit = fitOrDiagnose(p);
   for (int pass = 0; pass < 50; ++pass) {
     Eigen::VectorXd next(m);
     for (Eigen::Index i = 0; i < m; ++i) {
@@ -173,7 +219,7 @@ RheologyFit fitRheology(RheologyRelation relation, std::span<const RheologySampl
     sigma = next;
     weighted = true;
     if (settled) break;
-    fit = levenbergMarquardt(residuals, samples.size(), fit.params, what);
+    fit = fitOrDiagnose(fit.params);
   }
 
   RheologyFit out;

@@ -20,7 +20,8 @@ class TabulateStage final : public StageType {
   // 4: each table keeps its nodes' correlations with the other theta forms (issue 63)
   // 5: points whose box ordered are left out unless keep_ordered; mu(I) and phi(I) also as
   //    power laws near the critical point, with the better form by chi2/dof (issue 61)
-  [[nodiscard]] int implVersion() const override { return 5; }
+  // 6: a power law whose exponent runs to 0 is reported as no fit, with the reason
+  [[nodiscard]] int implVersion() const override { return 6; }
   [[nodiscard]] std::string summary() const override {
     return "closure tables (p_theta, eta_theta, j_theta against solid fraction [and restitution]) from closure "
            "points";

@@ -178,3 +178,29 @@ TEST(InertialRheologyFit, PowerLawsRecoverTheirExponentsAndBeatTheLineOnCurvedPo
   EXPECT_EQ(fitKey(RheologyRelation::MuOfIPower), "mu_of_I_power");
   EXPECT_STREQ(relationName(RheologyRelation::MuOfIPower), "mu_of_I");
 }
+
+// Points on a logarithm of I (phi = 0.62 - 0.02 ln(I / 0.1), with a little noise) have no
+// critical value at finite distance: a power law's exponent runs to 0 while phi_c and the
+// amplitude grow together. The fit says so instead of returning those parameters (issue 61: the
+// frictional glass's phi(I) failed with MINPACK's bare "no convergence").
+TEST(InertialRheologyFit, APowerLawThatRunsTowardsALogarithmIsDiagnosed) {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<RheologySample> phi;
+  for (int k = 0; k < 8; ++k) {
+    const double I = 0.01 * std::pow(30.0, k / 7.0);
+    phi.push_back({I, 0.0, 0.62 - 0.02 * std::log(I / 0.1) + 2e-4 * g(rng), 2e-4});
+  }
+  try {
+    const auto fit = fitRheology(RheologyRelation::PhiOfIPower, phi);
+    ADD_FAILURE() << "fitted phi_c " << fit.params[0] << " exponent " << fit.params[2];
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the points determine no power law"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("phi_of_I_power"), std::string::npos) << e.what();
+  }
+  // The line and the same points bent towards a critical value still fit.
+  EXPECT_NO_THROW(fitRheology(RheologyRelation::PhiOfI, phi));
+  for (auto& s : phi) s.value = 0.64 - 0.3 * std::pow(s.inertialNumber, 0.7) + 2e-4 * g(rng);
+  const auto bent = fitRheology(RheologyRelation::PhiOfIPower, phi);
+  EXPECT_NEAR(bent.params[2], 0.7, 5.0 * bent.errors[2]);
+}
