@@ -192,7 +192,15 @@ void Boundaries::apply(FlowState& state, const FlowProperties* properties) const
           // momentum coefficients (its mean fraction) do not jump when a phase hovering at the
           // outlet turns: that flip kept the chaff at the combine's top outlet from converging.
           // What a solids phase brings back in is the backflow state's all the same (massFluxes).
-          phase.fraction[g] = m > 0 || gasLeaves ? phase.fraction[in] : patch->phases[m].fraction;
+          // Never below the backflow state's, though: a ghost as empty as an empty interior
+          // gave the face no solids to move, so a nonzero backflow never came in (issue 56);
+          // the larger of the two does not depend on the direction, so nothing flips.
+          const double backflow = patch->phases[m].fraction;
+          if (m > 0) {
+            phase.fraction[g] = backflow > 0.0 ? std::max(phase.fraction[in], backflow) : phase.fraction[in];
+          } else {
+            phase.fraction[g] = gasLeaves ? phase.fraction[in] : backflow;
+          }
           break;
         }
         default:

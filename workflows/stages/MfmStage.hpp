@@ -44,7 +44,8 @@ class MfmStage final : public StageType {
   // 15: retried_iterations (detect_stall); 16: the point-coupled faces' closed-form inverses
   // 17: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
   // 18: block errors extrapolated to the plateau; joint closure samples correlated (issue 63)
-  [[nodiscard]] int implVersion() const override { return 18; }
+  // 19: a pressure outlet with a solids backflow lets it in where the interior holds none (issue 56)
+  [[nodiscard]] int implVersion() const override { return 19; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }
