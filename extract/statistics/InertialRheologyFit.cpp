@@ -59,48 +59,20 @@ struct Model {
 // bestExponentAtLowEdge), not a critical point.
 constexpr double kLowestExponent = 0.02;
 
-// A power law's start: for each exponent on a grid over 0.1-2, the critical value and amplitude
-// by linear least squares; the exponent with the smallest squared residual and a positive
-// amplitude wins.
-Eigen::VectorXd powerLawStart(RheologyRelation relation, std::span<const RheologySample> samples,
-                              const std::string& what) {
+// The best power law on a grid of exponents, from `from` to 2 in steps of `step`: at each, the
+// critical value and amplitude by weighted linear least squares (residuals over sigma); the
+// exponent with the smallest chi^2 and a positive amplitude wins. NaN exponent when none has one.
+struct ExponentScan {
+  double exponent = std::numeric_limits<double>::quiet_NaN();
+  double critical = 0.0, amplitude = 0.0;
+};
+ExponentScan scanExponents(RheologyRelation relation, std::span<const RheologySample> samples,
+                           const Eigen::VectorXd& sigma, double from, double step) {
   const double sign = isMu(relation) ? 1.0 : -1.0;
+  const auto m = static_cast<Eigen::Index>(samples.size());
   double best = std::numeric_limits<double>::infinity();
-  Eigen::VectorXd start;
-  const auto m = static_cast<Eigen::Index>(samples.size());
-  for (double exponent = 0.1; exponent <= 2.0 + 1e-9; exponent += 0.02) {
-    Eigen::MatrixXd A(m, 2);
-    Eigen::VectorXd y(m);
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const auto& s = samples[static_cast<std::size_t>(i)];
-      A(i, 0) = 1.0;
-      A(i, 1) = sign * std::pow(s.inertialNumber, exponent);
-      y[i] = s.value;
-    }
-    const Eigen::VectorXd c = A.colPivHouseholderQr().solve(y);
-    const double sse = (A * c - y).squaredNorm();
-    if (c[1] > 0.0 && sse < best) {
-      best = sse;
-      start = Eigen::Vector3d(c[0], std::log(c[1]), exponent);
-    }
-  }
-  if (start.size() == 0) {
-    throw Error(what + ": no exponent in 0.1-2 gives a positive amplitude (the values do not " +
-                (sign > 0 ? "rise" : "fall") + " with I)");
-  }
-  return start;
-}
-
-// The weighted chi^2 of the best power law at each exponent on a grid (the critical value and
-// amplitude solved linearly at each), for the diagnosis of a power law that runs away: whether
-// the smallest chi^2 lies at the grid's low edge, where the exponent heads for 0 and the critical
-// value and amplitude grow without bound together (the points bend like a logarithm of I).
-bool bestExponentAtLowEdge(RheologyRelation relation, std::span<const RheologySample> samples,
-                           const Eigen::VectorXd& sigma) {
-  const double sign = isMu(relation) ? 1.0 : -1.0;
-  const auto m = static_cast<Eigen::Index>(samples.size());
-  double best = std::numeric_limits<double>::infinity(), bestExponent = 0.0;
-  for (double exponent = kLowestExponent; exponent <= 2.0 + 1e-9; exponent += 0.01) {
+  ExponentScan out;
+  for (double exponent = from; exponent <= 2.0 + 1e-9; exponent += step) {
     Eigen::MatrixXd A(m, 2);
     Eigen::VectorXd y(m);
     for (Eigen::Index i = 0; i < m; ++i) {
@@ -111,9 +83,32 @@ bool bestExponentAtLowEdge(RheologyRelation relation, std::span<const RheologySa
     }
     const Eigen::VectorXd c = A.colPivHouseholderQr().solve(y);
     const double chi2 = (A * c - y).squaredNorm();
-    if (c[1] > 0.0 && chi2 < best) best = chi2, bestExponent = exponent;
+    if (c[1] > 0.0 && chi2 < best) {
+      best = chi2;
+      out = {exponent, c[0], c[1]};
+    }
   }
-  return bestExponent < kLowestExponent + 0.005;
+  return out;
+}
+
+// A power law's start: the unweighted scan over exponents 0.1-2.
+Eigen::VectorXd powerLawStart(RheologyRelation relation, std::span<const RheologySample> samples,
+                              const std::string& what) {
+  const ExponentScan scan =
+      scanExponents(relation, samples, Eigen::VectorXd::Ones(static_cast<Eigen::Index>(samples.size())), 0.1, 0.02);
+  if (std::isnan(scan.exponent)) {
+    throw Error(what + ": no exponent in 0.1-2 gives a positive amplitude (the values do not " +
+                (isMu(relation) ? "rise" : "fall") + " with I)");
+  }
+  return Eigen::Vector3d(scan.critical, std::log(scan.amplitude), scan.exponent);
+}
+
+// For the diagnosis of a power law that runs away: whether the weighted scan's smallest chi^2
+// lies at the grid's low edge, where the exponent heads for 0 and the critical value and
+// amplitude grow without bound together (the points bend like a logarithm of I).
+bool bestExponentAtLowEdge(RheologyRelation relation, std::span<const RheologySample> samples,
+                           const Eigen::VectorXd& sigma) {
+  return !(scanExponents(relation, samples, sigma, kLowestExponent, 0.01).exponent >= kLowestExponent + 0.005);
 }
 
 std::string runawayPowerLaw(const std::string& what) {

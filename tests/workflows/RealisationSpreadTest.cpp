@@ -19,6 +19,7 @@
 #include "db/ClosureStore.hpp"
 #include "db/Database.hpp"
 #include "tests/support/Cli.hpp"
+#include "tests/support/TinyShear.hpp"
 
 using namespace grainbridge;
 using namespace grainbridge::testing;
@@ -34,25 +35,17 @@ json workflow() {
   edge << std::cbrt(200.0 * M_PI / 6.0 / 0.2) << " mm";
   json seeds = json::array();
   for (int s = 1; s <= kSeeds; ++s) seeds.push_back(s);
+  json shear = tinyShearDemParams();
+  shear["box_hi"] = {edge.str(), edge.str(), edge.str()};
+  shear["dt"] = "2e-6 s";
+  shear["duration"] = "0.5 s";
+  shear["frames"] = 100;
+  shear["series_points"] = 10;
+  shear["species"][0]["count"] = 200;
   return {
       {"name", "realisations"},
       {"stages",
-       {{"shear",
-         {{"type", "dem"},
-          {"params",
-           {{"box_lo", {0, 0, 0}},
-            {"box_hi", {edge.str(), edge.str(), edge.str()}},
-            {"periodic", "xyz"},
-            {"gravity", {0, 0, 0}},
-            {"shear_rate", "100 1/s"},
-            {"dt", "2e-6 s"},
-            {"duration", "0.5 s"},
-            {"frames", 100},
-            {"series_points", 10},
-            {"progress", false},
-            {"species", {{{"name", "grain"}, {"diameter", "1 mm"}, {"density", "2500 kg/m3"}, {"count", 200}}}},
-            {"contact", {{"kn", "2500 N/m"}, {"restitution", 0.9}, {"mu", 0}}}}},
-          {"sweep", {{"seed", seeds}}}}},
+       {{"shear", {{"type", "dem"}, {"params", shear}, {"sweep", {{"seed", seeds}}}}},
         {"closure",
          {{"type", "extract"}, {"from", "shear"}, {"params", {{"family", "simple_shear"}, {"start_strain", 10}}}}}}}};
 }
