@@ -199,6 +199,17 @@ void closeSolidsContinuity(FlowState& state, const FlowState& old, const FlowPro
 // faces carry exactly what each cell's gas gains (to the linear solve's tolerance); the pressure
 // keeps the converged iterate's, the correction being a continuity residual's size. Not for a
 // compressible gas, whose density follows the pressure.
+// Runs a system's solve, naming the system in the SingularSystem it may throw (the solver names
+// the cell), so that a failed step says which equation broke.
+template <class Solve>
+void solveNamed(const std::string& system, Solve&& solve) {
+  try {
+    solve();
+  } catch (const SingularSystem& e) {
+    throw SingularSystem(system + ": " + e.what());
+  }
+}
+
 void closeGasContinuity(FlowState& state, const FlowState& old, const FlowProperties& props,
                         const FlowProperties& oldProps, const Boundaries& boundaries,
                         const std::array<const FaceField*, 3>& d, const LinearSolve& how, double dt) {
@@ -209,7 +220,7 @@ void closeGasContinuity(FlowState& state, const FlowState& old, const FlowProper
   const auto gasFlux = massFluxes(state.phases[0], props.phases[0].density, boundaries);
   const StencilSystem system = assemblePressureCorrection(state, old, props, oldProps, boundaries, gasFlux, d, dt);
   CellField correction(grid, 0.0);
-  system.solve(correction, how);
+  solveNamed("the gas's closing pressure correction", [&] { system.solve(correction, how); });
   for (int a = 0; a < grid.dimensions(); ++a) {
     FaceField& u = state.phases[0].velocity[static_cast<std::size_t>(a)];
     const FaceField& da = *d[static_cast<std::size_t>(a)];
@@ -283,7 +294,8 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
         FaceField& u = state.phases[m].velocity[static_cast<std::size_t>(a)];
         const auto r = systems[m].normalisedResidual(u.values(), speed[m]);
         worst.offer(r.value, phaseName(settings, m) + " " + std::string(1, "xyz"[a]) + " momentum", r.worst);
-        systems[m].solve(u, settings.momentumSolve);
+        solveNamed(phaseName(settings, m) + " " + std::string(1, "xyz"[a]) + " momentum",
+                   [&] { systems[m].solve(u, settings.momentumSolve); });
       }
     }
     for (int a = dims; a < 3; ++a) corrections.emplace_back();
@@ -299,7 +311,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
     const StencilSystem pressureSystem =
         assemblePressureCorrection(state, old, props, oldProps, boundaries, gasFlux, d, dt);
     CellField pressureCorrection(grid, 0.0);
-    pressureSystem.solve(pressureCorrection.values(), settings.pressureSolve);
+    solveNamed("the pressure correction", [&] { pressureSystem.solve(pressureCorrection.values(), settings.pressureSolve); });
     for (std::size_t c = 0; c < grid.paddedCount(); ++c) {
       if (grid.interior(c)) state.pressure[c] += settings.pressureRelaxation * pressureCorrection[c];
     }
@@ -328,7 +340,8 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       const StencilSystem fractionSystem =
           assembleFractionCorrection(state, old, props, oldProps, m, solidsFlux, e, dt);
       CellField fractionCorrection(grid, 0.0);
-      fractionSystem.solve(fractionCorrection, settings.fractionSolve);
+      solveNamed(phaseName(settings, m) + " fraction correction",
+                 [&] { fractionSystem.solve(fractionCorrection, settings.fractionSolve); });
       // The correction conserves the phase's mass exactly (its fluxes telescope); Eq. 3.68's
       // relaxation withholds part of it, which the next iteration hands back. A step converges
       // only once what was withheld is negligible, so under-relaxation never leaks mass.

@@ -63,6 +63,28 @@ Lu& analysedFor(const std::vector<char>& active, const Eigen::SparseMatrix<doubl
   return *it->second;
 }
 
+// " at cell (i, j, k)" of the system's unknown (empty when there is none such).
+std::string atCell(const StaggeredGrid& grid, const std::vector<long>& rowOfCell, long unknown) {
+  for (std::size_t c = 0; c < rowOfCell.size(); ++c) {
+    if (rowOfCell[c] != unknown) continue;
+    const auto ijk = grid.coordinates(c);
+    return " at cell (" + std::to_string(ijk[0]) + ", " + std::to_string(ijk[1]) + ", " + std::to_string(ijk[2]) + ")";
+  }
+  return {};
+}
+
+// Where a sparse LU met its zero pivot: Eigen reports the pivot's column in its fill-reducing
+// order, one based, at the end of its message; the inverse column permutation gives the unknown.
+std::string pivotCellOf(const StaggeredGrid& grid, const std::vector<long>& rowOfCell, const Lu& lu) {
+  const std::string message = lu.lastErrorMessage();
+  const std::size_t digits = message.find_last_not_of("0123456789");
+  if (digits == std::string::npos || digits + 1 >= message.size()) return {};
+  const long column = std::stol(message.substr(digits + 1)) - 1;
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> original = lu.colsPermutation().inverse();
+  if (column < 0 || column >= original.indices().size()) return {};
+  return atCell(grid, rowOfCell, original.indices()(column));
+}
+
 }  // namespace
 
 namespace {
@@ -160,8 +182,12 @@ void StencilSystem::solveDirect(Assembled& system, std::vector<double>& phi, boo
     x = std::move(system.rhs);
   } else if (system.bandwidth <= kBandLimit) {
     std::string failure;
-    if (!solveBanded(system.unknowns, system.bandwidth, system.entries, system.rhs, failure))
-      throw SingularSystem("fluid: the discretised system is singular (" + failure + ")");
+    if (!solveBanded(system.unknowns, system.bandwidth, system.entries, system.rhs, failure)) {
+      // dgbsv's info is the one-based index of U's zero diagonal: that unknown's column.
+      const long unknown = std::stol(failure.substr(failure.find_last_of(' ') + 1)) - 1;
+      throw SingularSystem("fluid: the discretised system is singular (" + failure + ")" +
+                           atCell(*grid_, system.row, unknown));
+    }
     x = std::move(system.rhs);
   } else {
     Eigen::SparseMatrix<double> A(system.unknowns, system.unknowns);
@@ -169,8 +195,10 @@ void StencilSystem::solveDirect(Assembled& system, std::vector<double>& phi, boo
     A.makeCompressed();
     Lu& lu = analysedFor(active_, A);
     lu.factorize(A);
-    if (lu.info() != Eigen::Success)
-      throw SingularSystem("fluid: the discretised system is singular (" + lu.lastErrorMessage() + ")");
+    if (lu.info() != Eigen::Success) {
+      throw SingularSystem("fluid: the discretised system is singular (" + lu.lastErrorMessage() + ")" +
+                           pivotCellOf(*grid_, system.row, lu));
+    }
     x = lu.solve(system.rhs);
   }
   for (std::size_t c = 0; c < ap_.size(); ++c) {

@@ -57,8 +57,9 @@ void MultiFluidEngine::step(double limit) {
       msg << "t = " << state_->time << " s: the step of " << dt << " s did not converge ("
           << (r.failure.empty() ? "the " + r.equation + " residual " + std::to_string(r.residual) : r.failure);
       if (r.stalledAt > 0) msg << ", stalled at iteration " << r.stalledAt;
-      msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")); retrying with "
-          << control_.current() << " s";
+      // The worst residual's cell; a failure (a singular system) names its own.
+      if (r.failure.empty()) msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")";
+      msg << "); retrying with " << control_.current() << " s";
       onRetry_(msg.str());
     }
     if (!retry) {
@@ -69,9 +70,9 @@ void MultiFluidEngine::step(double limit) {
         msg << r.failure;
       } else {
         msg << "the " << r.equation << " residual stayed at " << r.residual << " (tolerance " << settings_.tolerance
-            << ") after " << r.iterations << " iterations";
+            << ") after " << r.iterations << " iterations, cell (" << r.cell[0] << ", " << r.cell[1] << ", "
+            << r.cell[2] << ")";
       }
-      msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")";
       throw Error(msg.str());
     }
   }

@@ -78,9 +78,10 @@ class CellSolidFractions {
 
 // Phase m's share of the plastic viscosity (Eq. 3.27). Schaeffer's mu^p is written with P*, not
 // eps_sm P* (PlasticRegime.hpp), so each phase of a mixture takes eps_sm / eps_s of it, as MFIX
-// does (calc_mu_s.f: EP_s(M)/SUM_EPS_CP), and identical phases add up to one; one phase takes it all.
-double plasticViscosityShare(const CellSolidFractions& fractions, std::size_t m) {
-  if (fractions.size() == 1) return 1.0;
+// does (calc_mu_s.f: EP_s(M)/SUM_EPS_CP), and identical phases add up to one; one phase takes it all,
+// and so does each phase when the plastic pressure is per phase (its own P*).
+double plasticViscosityShare(const CellSolidFractions& fractions, std::size_t m, PlasticPressure form) {
+  if (fractions.size() == 1 || form == PlasticPressure::PerPhase) return 1.0;
   double total = 0.0;
   for (double eps : fractions.values()) total += eps;
   return total > 0.0 ? fractions[m - 1] / total : 0.0;
@@ -269,18 +270,24 @@ void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::Fl
   const SolidsState now = solidsState(state, m, c);
   const double eps = now.solidFraction, theta = now.theta;
   const closures::SyamlalCoefficients& kc = now.coefficients;
+  const double plasticVoid = plasticVoidFraction(epsG, eps);
   const closures::PlasticRegime::Result pl =
-      params_.plastic.evaluate(epsG, eps, now.strain.deviatorInvariant(), epsGStar);
+      params_.plastic.evaluate(plasticVoid, eps, now.strain.deviatorInvariant(), epsGStar);
   out.solidsPressure[c] = kc.k1 * eps * eps * theta + pl.pressure;  // Eqs. 3.21 + 3.26
   out.plasticPressure[c] = pl.pressure;
-  out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + plasticViscosityShare(cell.fractions, m) * pl.viscosity;
+  out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + plasticViscosityShare(cell.fractions, m, params_.plasticPressure) * pl.viscosity;
   out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
   double slope = 2.0 * kc.k1 * eps * theta;
   if (pl.plastic) {
     slope +=
-        pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - epsG, plastic.exponent - 1.0);
+        pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - plasticVoid, plastic.exponent - 1.0);
   }
   out.solidsPressureSlope[c] = slope;
+}
+
+double MultiFluidModel::plasticVoidFraction(double epsG, double eps) const {
+  if (params_.plasticPressure == PlasticPressure::Shared || params_.solids.size() == 1) return epsG;
+  return std::max(1.0 - eps, epsG);
 }
 
 MultiFluidModel::KineticCell MultiFluidModel::kineticCell(const fluid::FlowState& state,
@@ -321,11 +328,12 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   fluid::PhaseProperties& out = p.phases[m];
   const KineticCell kin = kineticCell(state, p, m, c, cell);
   const double eps = kin.state.solidFraction;
+  const double plasticVoid = plasticVoidFraction(epsG, eps);
   const closures::PlasticRegime::Result pl =
-      params_.plastic.evaluate(epsG, eps, fluid::strainRate(state.phases[m], c).deviatorInvariant(), epsGStar);
+      params_.plastic.evaluate(plasticVoid, eps, fluid::strainRate(state.phases[m], c).deviatorInvariant(), epsGStar);
   out.solidsPressure[c] = kin.transport.pressure + pl.pressure;  // kinetic + Eq. 3.26
   out.plasticPressure[c] = pl.pressure;
-  out.shearViscosity[c] = kin.transport.shearViscosity + plasticViscosityShare(cell.fractions, m) * pl.viscosity;
+  out.shearViscosity[c] = kin.transport.shearViscosity + plasticViscosityShare(cell.fractions, m, params_.plasticPressure) * pl.viscosity;
   out.bulkViscosity[c] = kin.transport.secondViscosity();  // lambda_s; the plastic regime has none
   // The kinetic slope at the cell's theta, by a one-sided difference of the kinetic-theory
   // model's pressure (never the table's: the slope only steers the fraction correction, and the
@@ -341,7 +349,7 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   double slope = std::max((p1 - p0) / (shifted.solidFraction - eps), 0.0);
   if (pl.plastic) {
     slope +=
-        pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - epsG, plastic.exponent - 1.0);
+        pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - plasticVoid, plastic.exponent - 1.0);
   }
   out.solidsPressureSlope[c] = slope;
   if (params_.wall) {

@@ -98,6 +98,14 @@ struct SolidsPair {
 // values of theta_m to zero when Ep_g < EP_star (Schaeffer, 1987)").
 enum class PlasticTheta { Solved, Pinned };
 
+// Which void fraction a mixture's plastic pressure and viscosity (Eqs. 3.26-3.27) are of: Shared,
+// the cell's (P* of the total solids fraction, each phase taking eps_sm P* and eps_sm / eps_s of
+// the viscosity, as MFiX does); PerPhase, each phase's own as if it were alone (P*(1 - eps_sm),
+// all of its own viscosity), so that one phase's packing does not push another. PerPhase is a
+// diagnostic (issue 56: does the grain's packing hold the combine's chaff in the feed's plume?),
+// not a model from the reference; with one solids phase the two are the same.
+enum class PlasticPressure { Shared, PerPhase };
+
 // How a phase of a mixture counts contacts in its kinetic theory (Lebowitz g0): Summed (MFiX's
 // SUM_EpsGo) or PerPhase (the equations as printed), closures/MixtureContacts.hpp.
 using MixtureKineticTheory = closures::MixtureKineticTheory;
@@ -121,6 +129,7 @@ struct MultiFluidParams {
   std::optional<closures::JohnsonJackson::Params> wall;
   bool rotation = false;  // the particle-rotation model (pde form)
   PlasticTheta plasticTheta = PlasticTheta::Solved;  // (pde form)
+  PlasticPressure plasticPressure = PlasticPressure::Shared;
   MixtureKineticTheory mixtureKineticTheory = MixtureKineticTheory::Summed;  // (pde form, Lebowitz g0)
   // eps_g* of each cell: the plastic regime's criticalVoidFraction (fixed), or the packing limit of
   // the cell's composition from each phase's maxPacking (MixturePacking.hpp), in the plastic
@@ -208,6 +217,9 @@ class MultiFluidModel final : public fluid::FlowModel {
     double theta;
   };
   [[nodiscard]] SolidsState solidsState(const fluid::FlowState& state, std::size_t m, std::size_t c) const;
+  // The void fraction phase m's plastic stress is of (PlasticPressure): the cell's epsG, or 1 minus
+  // the phase's own eps when per phase in a mixture.
+  [[nodiscard]] double plasticVoidFraction(double epsG, double eps) const;
 
   MultiFluidParams params_;
   std::vector<double> dissipationScale_;              // per phase, [0] unused

@@ -85,6 +85,8 @@ void from_json(const json& p, MultiFluidSetup& s) {
       radial == "lebowitz" ? RadialDistributionModel::Lebowitz : RadialDistributionModel::CarnahanStarling;
   model.plasticTheta =
       p.at("plastic_theta").get<std::string>() == "pinned" ? PlasticTheta::Pinned : PlasticTheta::Solved;
+  model.plasticPressure =
+      p.at("plastic_pressure").get<std::string>() == "per_phase" ? PlasticPressure::PerPhase : PlasticPressure::Shared;
   model.plastic.params.criticalVoidFraction = p.at("critical_void_fraction").get<double>();
   model.mixtureKineticTheory = p.at("mixture_kinetic_theory").get<std::string>() == "per_phase"
                                    ? MixtureKineticTheory::PerPhase

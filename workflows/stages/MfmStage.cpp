@@ -177,6 +177,12 @@ MfmStage::MfmStage() {
                .options({"solved", "pinned"})
                .doc("theta where eps_g < critical_void_fraction: solved there too (kinetic stress adds to the "
                     "plastic one), or pinned near zero as MFiX does (the plastic stress alone)"))
+      .add(ParamSpec::string("plastic_pressure")
+               .defaultValue("shared")
+               .options({"shared", "per_phase"})
+               .doc("several solids phases: the plastic pressure and viscosity (Eqs. 3.26-3.27) of the cell's void "
+                    "fraction, eps_sm P*(eps_g) (MFiX), or of each phase's own packing, eps_sm P*(1 - eps_sm), a "
+                    "diagnostic that keeps one phase's packing from pushing another; one phase: the same"))
       .add(ParamSpec::string("mixture_kinetic_theory")
                .defaultValue("summed")
                .options({"summed", "per_phase"})

@@ -95,6 +95,39 @@ TEST(StencilSystem, ACellWithoutAnEquationIsRefused) {
 }
 
 
+// A singular system names the cell of its zero pivot, by the band LU (a narrow grid) and by the
+// sparse LU (a large one): two cells (i0, 1) and (i0 + 1, 1) coupled to each other alone with
+// rows x0 - x1 and x1 - x0, an exactly singular block that elimination meets exactly.
+TEST(StencilSystem, ASingularSystemNamesTheCellOfItsZeroPivot) {
+  for (const int nx : {6, 100}) {  // bandwidth 6 and 100, above the band LU's limit of 96
+    const auto grid = makeGrid({nx, nx, 1}, Vec3(1, 1, 1));
+    auto system = diffusion(grid, 1.0);
+    const int i0 = nx / 2;
+    const std::size_t c0 = grid.index(i0, 1, 0), c1 = grid.index(i0 + 1, 1, 0);
+    for (const std::size_t c : {c0, c1}) {
+      for (int nb = 0; nb < 4; ++nb) system.anb(c, nb) = 0.0;  // a 2D grid: west to north
+      system.ap(c) = 1.0;
+    }
+    system.anb(c0, East) = 1.0;
+    system.anb(c1, West) = 1.0;
+    for (const auto& [c, nb] : {std::pair{grid.index(i0 - 1, 1, 0), East}, {grid.index(i0, 0, 0), North},
+                                {grid.index(i0, 2, 0), South}, {grid.index(i0 + 2, 1, 0), West},
+                                {grid.index(i0 + 1, 0, 0), North}, {grid.index(i0 + 1, 2, 0), South}})
+      system.anb(c, nb) = 0.0;
+    CellField phi(grid);
+    try {
+      system.solve(phi);
+      ADD_FAILURE() << nx << ": a singular system was solved";
+    } catch (const SingularSystem& e) {
+      const std::string what = e.what();
+      const bool named = what.find("at cell (" + std::to_string(i0) + ", 1, 0)") != std::string::npos ||
+                         what.find("at cell (" + std::to_string(i0 + 1) + ", 1, 0)") != std::string::npos;
+      EXPECT_TRUE(named) << nx << ": " << what;
+      EXPECT_NE(what.find(nx > 96 ? "STRUCTURALLY SINGULAR" : "dgbsv"), std::string::npos) << what;
+    }
+  }
+}
+
 // The Poisson problem solved each way: the band Cholesky is exact for this symmetric positive
 // definite system; the sweeps and BiCGSTAB reach their tolerance.
 TEST(StencilSystem, EveryMethodSolvesThePoissonProblem) {

@@ -139,3 +139,27 @@ TEST(MixtureModel, OnePhaseUnderAPackingLimitKeepsTheFixedOne) {
   state.phases[1].fraction[grid.index(0, 0, 0)] = 0.6;
   EXPECT_EQ(model.criticalVoidFraction(state, grid.index(0, 0, 0)), 0.417);
 }
+
+// plastic_pressure per_phase (issue 56's diagnostic): a cell packed past eps_g* by a mostly-large
+// mixture (0.55 + 0.05: eps_g 0.40 < 0.417). Shared, both phases feel P* of the cell (Eq. 3.26,
+// eps_sm P*); per phase, each is at its own packing, eps_g of 1 - 0.55 and 1 - 0.05, both above
+// eps_g*, so neither is plastic: the small phase is no longer pushed by the large one's packing.
+TEST(MixtureModel, APerPhasePlasticPressureIsOfEachPhasesOwnPacking) {
+  const OneCell cell(0.05, 0.55, 1e-4, 1e-4);
+  const auto shared = cell.evaluate(mfm::MultiFluidModel(binaryParams()));
+  const double pStar = 1e24 * std::pow(0.417 - 0.40, 10.0);
+  EXPECT_NEAR(shared.phases[1].plasticPressure[cell.c], 0.05 * pStar, 1e-9 * 0.05 * pStar);
+  EXPECT_NEAR(shared.phases[2].plasticPressure[cell.c], 0.55 * pStar, 1e-9 * 0.55 * pStar);
+  auto params = binaryParams();
+  params.plasticPressure = mfm::PlasticPressure::PerPhase;
+  const auto perPhase = cell.evaluate(mfm::MultiFluidModel(params));
+  EXPECT_EQ(perPhase.phases[1].plasticPressure[cell.c], 0.0);
+  EXPECT_EQ(perPhase.phases[2].plasticPressure[cell.c], 0.0);
+  EXPECT_LT(perPhase.phases[1].solidsPressure[cell.c], shared.phases[1].solidsPressure[cell.c]);
+
+  // The large phase alone past eps_g* (0.60 + 0.01): P* of its own void fraction 0.40.
+  const OneCell packed(0.01, 0.60, 1e-4, 1e-4);
+  const auto own = packed.evaluate(mfm::MultiFluidModel(params));
+  EXPECT_EQ(own.phases[1].plasticPressure[packed.c], 0.0);
+  EXPECT_NEAR(own.phases[2].plasticPressure[packed.c], 0.60 * pStar, 1e-9 * 0.60 * pStar);
+}
