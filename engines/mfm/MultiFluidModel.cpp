@@ -20,6 +20,8 @@ namespace grainbridge::mfm {
 
 double algebraicGranularTemperature(const closures::SyamlalCoefficients& k, double eps, double traceD,
                                     double doubleDotD) {
+  constexpr double kNoSolids = 1e-15;  // MFiX's SMALL_NUMBER: theta_m = 0 at or below it
+  if (!(eps > kNoSolids)) return 0.0;
   const double a = k.k4 * eps;
   const double b = k.k1 * eps * traceD;
   const double c = -(k.k2 * traceD * traceD + 2.0 * k.k3 * doubleDotD);

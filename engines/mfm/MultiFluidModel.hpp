@@ -230,7 +230,10 @@ class MultiFluidModel final : public fluid::FlowModel {
 
 // The algebraic granular temperature of MFiX's gt_algebraic: the positive root x = sqrt(theta) of
 //   K4 eps x^2 + K1 eps tr(D) x - (K2 tr(D)^2 + 2 K3 D:D) = 0,
-// zero where the solids do not shear. [m^2/s^2]
+// zero where the solids do not shear, and zero where eps <= 1e-15 (MFiX's SMALL_NUMBER, calc_mu_s.f):
+// as eps -> 0 the root grows as eps^-1/2, and in a cell of round-off solids (5e-316 of the chaff
+// in the combine) theta overflowed to infinity, the pressure slope with it, and the fraction
+// correction met 0 * inf. [m^2/s^2]
 [[nodiscard]] double algebraicGranularTemperature(const closures::SyamlalCoefficients& k, double solidFraction,
                                                   double traceD, double doubleDotD);
 

@@ -45,7 +45,9 @@ class MfmStage final : public StageType {
   // 17: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
   // 18: block errors extrapolated to the plateau; joint closure samples correlated (issue 63)
   // 19: a pressure outlet with a solids backflow lets it in where the interior holds none (issue 56)
-  [[nodiscard]] int implVersion() const override { return 19; }
+  // 20: the algebraic theta is zero where eps_s <= 1e-15, as MFiX's (it overflowed in round-off
+  //     solids and failed the fraction correction; issue 56)
+  [[nodiscard]] int implVersion() const override { return 20; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }

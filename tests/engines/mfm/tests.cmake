@@ -7,6 +7,7 @@ grainbridge_add_test(test_mfm
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/BoundaryAccountTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/BinaryBedTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/MixtureModelTest.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/mfm/AlgebraicTemperatureTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/FluidizationCurveTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/GranularEnergyTest.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/mfm/TabulatedClosureRunTest.cpp
