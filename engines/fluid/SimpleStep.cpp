@@ -191,14 +191,6 @@ void closeSolidsContinuity(FlowState& state, const FlowState& old, const FlowPro
   boundaries.apply(state, &props);
 }
 
-// The gas's continuity closed with the step's final fractions, once the solids' are (the gas is
-// what they leave): the SIMPLE loop meets it to the tolerance only, with the last iterate's
-// fractions, and each step's remainder would add up in the gas's mass balance (1.6e-4 of the
-// inflow over the combine's 10 s). One more pressure correction, from the final fractions'
-// imbalance and the last iteration's coefficients d, moves the gas's face velocities only, so its
-// faces carry exactly what each cell's gas gains (to the linear solve's tolerance); the pressure
-// keeps the converged iterate's, the correction being a continuity residual's size. Not for a
-// compressible gas, whose density follows the pressure.
 // Runs a system's solve, naming the system in the SingularSystem it may throw (the solver names
 // the cell), so that a failed step says which equation broke.
 template <class Solve>
@@ -210,6 +202,14 @@ void solveNamed(const std::string& system, Solve&& solve) {
   }
 }
 
+// The gas's continuity closed with the step's final fractions, once the solids' are (the gas is
+// what they leave): the SIMPLE loop meets it to the tolerance only, with the last iterate's
+// fractions, and each step's remainder would add up in the gas's mass balance (1.6e-4 of the
+// inflow over the combine's 10 s). One more pressure correction, from the final fractions'
+// imbalance and the last iteration's coefficients d, moves the gas's face velocities only, so its
+// faces carry exactly what each cell's gas gains (to the linear solve's tolerance); the pressure
+// keeps the converged iterate's, the correction being a continuity residual's size. Not for a
+// compressible gas, whose density follows the pressure.
 void closeGasContinuity(FlowState& state, const FlowState& old, const FlowProperties& props,
                         const FlowProperties& oldProps, const Boundaries& boundaries,
                         const std::array<const FaceField*, 3>& d, const LinearSolve& how, double dt) {
