@@ -7,7 +7,10 @@ takes the frame at --time (the reference's Figs. 4.7-4.11 show 5 s) and prints, 
 cells from the bottom, the x-z means of ep_s_grain and ep_s_chaff and the vertical velocity of the
 gas, the grain and the chaff (solids-weighted), then the same for the central x-y plane column by
 column along x (Figs. 4.7 and 4.9's plane). --table writes the central plane cell by cell
-(x, y, ep_s_grain, ep_s_chaff, u_g, v_g, u_chaff, v_chaff) for gnuplot.
+(x, y, ep_s_grain, ep_s_chaff, u_g, v_g, u_chaff, v_chaff) for gnuplot. The row table's last
+columns are the gas's vertical velocity where the chaff is (chaff-weighted) and the chaff's slip
+against it, beside a lone chaff sphere's settling speed in still air (0.971 m/s under Eq. 3.16):
+the gas a falling plume drags down with it shows there (issue 56).
 """
 import argparse
 import sys
@@ -49,8 +52,8 @@ def main():
     zs = sorted({round(c[2], 9) for c in cells})
     grain, chaff = arrays["ep_s_grain"], arrays["ep_s_chaff"]
     print(f"{args.xmf} at t = {t:g} s: {len(xs)} x {len(ys)} x {len(zs)} cells")
-    print("row  y[cm]  ep_s_grain  ep_s_chaff   u_g[m/s] v_g[m/s]  u_chaff  v_grain  v_chaff  (x-z means; solids' velocities "
-          "solids-weighted)")
+    print("row  y[cm]  ep_s_grain  ep_s_chaff   u_g[m/s] v_g[m/s]  u_chaff  v_grain  v_chaff  v_g@chaff  slip  (x-z means; "
+          "solids' velocities and v_g@chaff solids-weighted, slip = v_chaff - v_g@chaff)")
     for j, y in enumerate(ys):
         row = [c[3] for c in cells if round(c[1], 9) == y]
         eg = sum(grain.GetValue(k) for k in row) / len(row)
@@ -62,7 +65,9 @@ def main():
         vgr = sum(grain.GetValue(k) * arrays["u_s_grain"].GetComponent(k, 1) for k in row) / wg if wg > 0 else 0.0
         vch = sum(chaff.GetValue(k) * arrays["u_s_chaff"].GetComponent(k, 1) for k in row) / wc if wc > 0 else 0.0
         uch = sum(chaff.GetValue(k) * arrays["u_s_chaff"].GetComponent(k, 0) for k in row) / wc if wc > 0 else 0.0
-        print(f"{j:3d} {100 * y:6.1f}  {eg:10.3e}  {ec:10.3e}  {ug:8.3f} {vg:8.3f} {uch:8.3f} {vgr:8.3f} {vch:8.3f}")
+        vgc = sum(chaff.GetValue(k) * arrays["u_g"].GetComponent(k, 1) for k in row) / wc if wc > 0 else 0.0
+        print(f"{j:3d} {100 * y:6.1f}  {eg:10.3e}  {ec:10.3e}  {ug:8.3f} {vg:8.3f} {uch:8.3f} {vgr:8.3f} {vch:8.3f}"
+              f" {vgc:9.3f} {vch - vgc:6.3f}")
     zc = zs[len(zs) // 2]
     plane = [c for c in cells if round(c[2], 9) == zc]
     print(f"central x-y plane (z = {100 * zc:.0f} cm), column means over y, along x:")
