@@ -132,8 +132,17 @@ std::array<FaceField, 3> solveFractionNonNegative(PhaseFields& phase, const Cell
       const std::size_t high = grid.neighbour(f, a, +1);
       const bool forward = v[f] >= 0.0;
       const std::size_t upwind = forward ? f : high, downwind = forward ? high : f;
-      const double coefficient = eps[upwind] > 0.0 ? std::abs(F[f]) / eps[upwind]
-                                                   : density[upwind] * grid.faceArea(a) * std::abs(v[f]);
+      // An empty upwind cell moves what it will hold at rho A |v|. An empty (or round-off
+      // negative) upwind ghost brings nothing: what comes in through a boundary face is F's, the
+      // backflow state's at an outlet, which a ghost holding no solids has none of (a ghost that
+      // repeats an interior at -3e-16 brought that negative mass in at every step: it doubled each
+      // step until the top row of the combine's feed column went below -1e-4 and failed the step).
+      double coefficient = density[upwind] * grid.faceArea(a) * std::abs(v[f]);
+      if (eps[upwind] > 0.0) {
+        coefficient = std::abs(F[f]) / eps[upwind];
+      } else if (!grid.interior(upwind)) {
+        coefficient = 0.0;
+      }
       // Out of the upwind cell (its diagonal), into the downwind one (its neighbour slot facing
       // upwind); a ghost on either side is a known value or no equation.
       if (grid.interior(upwind)) system.ap(upwind) += coefficient;

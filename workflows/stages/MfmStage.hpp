@@ -47,7 +47,9 @@ class MfmStage final : public StageType {
   // 19: a pressure outlet with a solids backflow lets it in where the interior holds none (issue 56)
   // 20: the algebraic theta is zero where eps_s <= 1e-15, as MFiX's (it overflowed in round-off
   //     solids and failed the fraction correction; issue 56)
-  [[nodiscard]] int implVersion() const override { return 20; }
+  // 21: an empty or round-off negative ghost brings no solids into the closing continuity solve
+  //     (a negative one fed back on itself at outlets; issue 56)
+  [[nodiscard]] int implVersion() const override { return 21; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"solver_steps", "–"}, {"retries", "–"}};
   }
