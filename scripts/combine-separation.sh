@@ -59,6 +59,21 @@ rm -f "$out/map.csv.body"
     $2, $3, $4, $5, $7, $8, $11, $6, $9, $10, $13, $14, $15 }'
 } >"$out/map.md"
 
+# The Eq. 4.1 heights of every map run at 1, 3, 5 and 10 s (the series row nearest each).
+{
+  echo
+  echo "| inflow [m/s] | feed | <h> grain / chaff at 1 s [cm] | at 3 s | at 5 s | at 10 s |"
+  echo "|---|---|---|---|---|---|"
+  tail -n +2 "$out/map.csv" | while IFS=, read -r stage inflow feed _; do
+    s=$(series_of "$stage")
+    # shellcheck disable=SC2046
+    awk -F, $(columns "$s") -v inflow="$inflow" -v feed="$feed" 'BEGIN { n = split("1 3 5 10", at, " ") }
+      NR > 1 { for (k = 1; k <= n; ++k) { d = $c_time - at[k]; if (d < 0) d = -d
+        if (!(k in best) || d < best[k]) { best[k] = d; h[k] = sprintf("%.1f / %.1f", 100 * $c_mean_height_grain, 100 * $c_mean_height_chaff) } } }
+      END { printf "| %s | %s | %s | %s | %s | %s |\n", inflow, feed, h[1], h[2], h[3], h[4] }' "$s"
+  done
+} >>"$out/map.md"
+
 for feed in dense dilute; do
   awk -F, -v feed="$feed" 'NR > 1 && $3 == feed { print $2, $12, $13 }' "$out/map.csv" >"$out/map-$feed.dat"
 done
