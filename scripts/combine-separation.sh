@@ -15,6 +15,7 @@ set -euo pipefail
 results=${1:?usage: scripts/combine-separation.sh RESULTS_DIR [OUT_DIR]}
 out=${2:-$results/separation}
 mkdir -p "$out"
+rm -f "$out"/heights-*.dat "$out"/map-*.dat  # a rerun over fewer runs leaves none of the last one's
 
 # The series.csv of a stage (its one instance), or nothing when the stage has not finished.
 series_of() {
@@ -78,7 +79,7 @@ for feed in dense dilute; do
   awk -F, -v feed="$feed" 'NR > 1 && $3 == feed { print $2, $12, $13 }' "$out/map.csv" >"$out/map-$feed.dat"
 done
 [ "$(wc -l <"$out/map.csv")" -gt 1 ] && gnuplot <<EOF
-set terminal pngcairo size 900,600
+set terminal pngcairo noenhanced size 900,600
 set output "$out/map.png"
 set title "The combine as a separator (configs/combine-separation.json, 10 s)"
 set xlabel "air inflow through the bottom [m/s]"
@@ -94,8 +95,20 @@ plot "$out/map-dense.dat" using 1:3 with linespoints lw 2 pt 7 title "chaff remo
      "$out/map-dilute.dat" using 1:2 axes x1y2 with linespoints lw 2 dt 2 pt 4 title "grain lost, feed 0.20 (3x taller)"
 EOF
 
-# The heights against time: one file per map run (time, grain, chaff in cm).
-plots=()
+# The heights against time: one file per map run (time, grain, chaff in cm), one panel per feed.
+panel() {  # the plot command of one feed's runs
+  local feed=$1 list=() u
+  for dat in "$out"/heights-map_u*_"$feed".dat; do
+    [ -e "$dat" ] || continue
+    u=$(basename "$dat" | sed -E 's/heights-map_u([0-9]+)_.*/\1/')
+    u=$(awk -v u="$u" 'BEGIN { printf "%.2f", (length(u) == 2 ? u / 10 : u / 100) }')
+    list+=("\"$dat\" using 1:3 with lines lw 2 lc $((${#list[@]} / 2 + 1)) title \"$u m/s chaff\"")
+    list+=("\"$dat\" using 1:2 with lines dt 2 lc $((${#list[@]} / 2 + 1)) title \"$u m/s grain\"")
+  done
+  local joined
+  joined=$(printf '%s, ' "${list[@]}")
+  echo "plot ${joined%, }"
+}
 for dir in "$results"/map_u*; do
   stage=$(basename "$dir")
   s=$(series_of "$stage")
@@ -103,20 +116,22 @@ for dir in "$results"/map_u*; do
   # shellcheck disable=SC2046
   awk -F, $(columns "$s") 'NR > 1 { print $c_time, 100 * $c_mean_height_grain, 100 * $c_mean_height_chaff }' "$s" \
     >"$out/heights-$stage.dat"
-  plots+=("\"$out/heights-$stage.dat\" using 1:3 with lines lw 2 title \"$stage chaff\"")
-  plots+=("\"$out/heights-$stage.dat\" using 1:2 with lines dt 2 title \"$stage grain\"")
 done
-if [ ${#plots[@]} -gt 0 ]; then
-  joined=$(printf '%s, ' "${plots[@]}")
+if compgen -G "$out/heights-map_u*.dat" >/dev/null; then
   gnuplot <<EOF
-set terminal pngcairo size 1100,700
+set terminal pngcairo noenhanced size 1200,550
 set output "$out/heights.png"
-set title "Eq. 4.1 mean heights (chaff solid, grain dashed)"
+set multiplot layout 1,2 title "Eq. 4.1 mean heights against time (chaff solid, grain dashed)"
 set xlabel "t [s]"
 set ylabel "mean height [cm]"
-set key outside right
+set yrange [0:45]
 set grid
-plot ${joined%, }
+set key top right
+set title "feed 0.60 over y 36-48 cm (Table 4.4)"
+$(if compgen -G "$out/heights-map_u*_dense.dat" >/dev/null; then panel dense; else echo "plot 0 notitle"; fi)
+set title "feed 0.20 over y 12-48 cm (the same mass flow)"
+$(if compgen -G "$out/heights-map_u*_dilute.dat" >/dev/null; then panel dilute; else echo "plot 0 notitle"; fi)
+unset multiplot
 EOF
 fi
 
