@@ -27,7 +27,7 @@ series_of() {
 # Columns by name from a series' header: prints the awk program's column indices as name=index.
 columns() { head -1 "$1" | tr ',' '\n' | awk '{printf "-v c_%s=%d ", $1, NR}'; }
 
-echo "stage,inflow_m_s,feed,t_s,grain_fed_kg,chaff_fed_kg,grain_out_right_pct,grain_out_top_pct,chaff_out_right_pct,chaff_out_top_pct,grain_lost_kg,grain_lost_pct,chaff_removed_pct,h_grain_cm,h_chaff_cm" >"$out/map.csv"
+echo "stage,inflow_m_s,feed,t_s,grain_fed_kg,chaff_fed_kg,grain_out_right_pct,grain_out_top_pct,chaff_out_right_pct,chaff_out_top_pct,grain_lost_kg,grain_lost_pct,chaff_removed_pct,h_grain_cm,h_chaff_cm,grain_lost_5s_pct,chaff_removed_5s_pct,first_grain_out_s" >"$out/map.csv"
 for dir in "$results"/map_u*; do
   [ -d "$dir" ] || continue
   stage=$(basename "$dir")
@@ -39,25 +39,32 @@ for dir in "$results"/map_u*; do
   u=$(echo "$stage" | sed -E 's/map_u([0-9]+)_.*/\1/')
   inflow=$(awk -v u="$u" 'BEGIN { printf "%.2f", (length(u) == 2 ? u / 10 : u / 100) }')
   feed=${stage##*_}
+  # The last row, the row nearest 5 s, and the first time more than a gram of grain has left.
   # shellcheck disable=SC2046
-  tail -1 "$s" | awk -F, $(columns "$s") -v stage="$stage" -v inflow="$inflow" -v feed="$feed" '{
+  awk -F, $(columns "$s") -v stage="$stage" -v inflow="$inflow" -v feed="$feed" 'NR > 1 {
     gin = $c_mass_in_grain; cin = $c_mass_in_chaff
     gr = $c_mass_out_grain_x_high; gt = $c_mass_out_grain_y_high
     cr = $c_mass_out_chaff_x_high; ct = $c_mass_out_chaff_y_high
-    printf "%s,%s,%s,%.2f,%.4f,%.4f,%.3f,%.3f,%.2f,%.2f,%.4f,%.3f,%.2f,%.2f,%.2f\n", stage, inflow, feed, $c_time,
+    t = $c_time; hg = $c_mean_height_grain; hc = $c_mean_height_chaff
+    d = t - 5; if (d < 0) d = -d
+    if (best == "" || d < best) { best = d; lost5 = 100 * (gr + gt) / gin; removed5 = 100 * (cr + ct) / cin }
+    if (first == "" && gr + gt > 1e-3) first = sprintf("%.2f", t)
+  } END {
+    if (first == "") first = "-"
+    printf "%s,%s,%s,%.2f,%.4f,%.4f,%.3f,%.3f,%.2f,%.2f,%.4f,%.3f,%.2f,%.2f,%.2f,%.3f,%.2f,%s\n", stage, inflow, feed, t,
       gin, cin, 100 * gr / gin, 100 * gt / gin, 100 * cr / cin, 100 * ct / cin, gr + gt, 100 * (gr + gt) / gin,
-      100 * (cr + ct) / cin, 100 * $c_mean_height_grain, 100 * $c_mean_height_chaff
-  }' >>"$out/map.csv"
+      100 * (cr + ct) / cin, 100 * hg, 100 * hc, lost5, removed5, first
+  }' "$s" >>"$out/map.csv"
 done
 sort -t, -k3,3 -k2,2n -o "$out/map.csv.body" <(tail -n +2 "$out/map.csv")
 { head -1 "$out/map.csv"; cat "$out/map.csv.body"; } >"$out/map.csv.sorted" && mv "$out/map.csv.sorted" "$out/map.csv"
 rm -f "$out/map.csv.body"
 
 {
-  echo "| inflow [m/s] | feed | t [s] | grain fed [kg] | grain out right / top [%] | grain lost [kg] | chaff fed [kg] | chaff out right / top [%] | chaff removed [%] | <h> grain / chaff [cm] |"
-  echo "|---|---|---|---|---|---|---|---|---|---|"
-  tail -n +2 "$out/map.csv" | awk -F, '{ printf "| %s | %s | %s | %s | %s / %s | %s | %s | %s / %s | %s | %s / %s |\n",
-    $2, $3, $4, $5, $7, $8, $11, $6, $9, $10, $13, $14, $15 }'
+  echo "| inflow [m/s] | feed | t [s] | grain fed [kg] | grain out right / top [%] | grain lost [kg] | chaff fed [kg] | chaff out right / top [%] | chaff removed [%] | <h> grain / chaff [cm] | at 5 s: grain lost / chaff removed [%] | grain out from [s] |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+  tail -n +2 "$out/map.csv" | awk -F, '{ printf "| %s | %s | %s | %s | %s / %s | %s | %s | %s / %s | %s | %s / %s | %s / %s | %s |\n",
+    $2, $3, $4, $5, $7, $8, $11, $6, $9, $10, $13, $14, $15, $16, $17, $18 }'
 } >"$out/map.md"
 
 # The Eq. 4.1 heights of every map run at 1, 3, 5 and 10 s (the series row nearest each).
