@@ -8,6 +8,15 @@
 
 namespace grainbridge::mfm {
 
+namespace {
+
+// Whether a failed step's message already names its cell: a singular system's does (the solver's
+// zero pivot, fluid::StencilSystem), and the step's own cell would be a residual's that no
+// iteration set.
+bool namesItsCell(const fluid::StepResult& r) { return r.failure.find(" at cell (") != std::string::npos; }
+
+}  // namespace
+
 MultiFluidEngine::MultiFluidEngine(const core::data::GridGeometry& geometry, std::vector<fluid::BoundaryPatch> patches,
                                    MultiFluidParams model, fluid::SimpleSettings settings, fluid::TimeStepLimits limits)
     : grid_(std::make_unique<fluid::StaggeredGrid>(geometry)),
@@ -57,8 +66,8 @@ void MultiFluidEngine::step(double limit) {
       msg << "t = " << state_->time << " s: the step of " << dt << " s did not converge ("
           << (r.failure.empty() ? "the " + r.equation + " residual " + std::to_string(r.residual) : r.failure);
       if (r.stalledAt > 0) msg << ", stalled at iteration " << r.stalledAt;
-      // The worst residual's cell; a failure (a singular system) names its own.
-      if (r.failure.empty()) msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")";
+      // The step's cell (the worst residual's, or the bad iterate's); a singular system names its own.
+      if (!namesItsCell(r)) msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")";
       msg << "); retrying with " << control_.current() << " s";
       onRetry_(msg.str());
     }
@@ -70,9 +79,9 @@ void MultiFluidEngine::step(double limit) {
         msg << r.failure;
       } else {
         msg << "the " << r.equation << " residual stayed at " << r.residual << " (tolerance " << settings_.tolerance
-            << ") after " << r.iterations << " iterations, cell (" << r.cell[0] << ", " << r.cell[1] << ", "
-            << r.cell[2] << ")";
+            << ") after " << r.iterations << " iterations";
       }
+      if (!namesItsCell(r)) msg << ", cell (" << r.cell[0] << ", " << r.cell[1] << ", " << r.cell[2] << ")";
       throw Error(msg.str());
     }
   }
