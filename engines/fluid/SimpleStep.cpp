@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "engines/fluid/Continuity.hpp"
@@ -194,11 +196,11 @@ void closeSolidsContinuity(FlowState& state, const FlowState& old, const FlowPro
 // Runs a system's solve, naming the system in the SingularSystem it may throw (the solver names
 // the cell), so that a failed step says which equation broke.
 template <class Solve>
-void solveNamed(const std::string& system, Solve&& solve) {
+void solveNamed(std::string_view system, Solve&& solve) {
   try {
     solve();
   } catch (const SingularSystem& e) {
-    throw SingularSystem(system + ": " + e.what());
+    throw SingularSystem(std::string(system) + ": " + e.what());
   }
 }
 
@@ -293,9 +295,9 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
         if (given[m] != 0) continue;
         FaceField& u = state.phases[m].velocity[static_cast<std::size_t>(a)];
         const auto r = systems[m].normalisedResidual(u.values(), speed[m]);
-        worst.offer(r.value, phaseName(settings, m) + " " + std::string(1, "xyz"[a]) + " momentum", r.worst);
-        solveNamed(phaseName(settings, m) + " " + std::string(1, "xyz"[a]) + " momentum",
-                   [&] { systems[m].solve(u, settings.momentumSolve); });
+        const std::string equation = phaseName(settings, m) + " " + std::string(1, "xyz"[a]) + " momentum";
+        worst.offer(r.value, equation, r.worst);
+        solveNamed(equation, [&] { systems[m].solve(u, settings.momentumSolve); });
       }
     }
     for (int a = dims; a < 3; ++a) corrections.emplace_back();
@@ -332,7 +334,8 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       boundaries.apply(state, &props);
       PhaseFields& phase = state.phases[m];
       const auto solidsFlux = massFluxes(phase, props.phases[m].density, boundaries, outflowBudget(old, m, dt), m);
-      offerContinuity(worst, phaseName(settings, m), phase.fraction, old.phases[m].fraction, props.phases[m].density,
+      const std::string name = phaseName(settings, m);
+      offerContinuity(worst, name, phase.fraction, old.phases[m].fraction, props.phases[m].density,
                       oldProps.phases[m].density, solidsFlux, dt);
       std::array<const FaceField*, 3> e{nullptr, nullptr, nullptr};
       for (int a = 0; a < dims; ++a)
@@ -340,7 +343,7 @@ StepResult iterate(FlowState& state, const FlowState& old, double dt, const Flow
       const StencilSystem fractionSystem =
           assembleFractionCorrection(state, old, props, oldProps, m, solidsFlux, e, dt);
       CellField fractionCorrection(grid, 0.0);
-      solveNamed(phaseName(settings, m) + " fraction correction",
+      solveNamed(name + " fraction correction",
                  [&] { fractionSystem.solve(fractionCorrection, settings.fractionSolve); });
       // The correction conserves the phase's mass exactly (its fluxes telescope); Eq. 3.68's
       // relaxation withholds part of it, which the next iteration hands back. A step converges

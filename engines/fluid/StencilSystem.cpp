@@ -95,8 +95,9 @@ namespace {
 constexpr long kBandLimit = 96;
 
 // Solves A x = rhs by LAPACK's band LU (dgbsv). `entries` hold A; `bandwidth` bounds |row - col|.
-bool solveBanded(long unknowns, long bandwidth, const std::vector<Eigen::Triplet<double>>& entries,
-                 Eigen::VectorXd& rhs, std::string& failure) {
+// Returns dgbsv's info: 0 when solved, i > 0 when U(i, i) is zero (one based).
+int solveBanded(long unknowns, long bandwidth, const std::vector<Eigen::Triplet<double>>& entries,
+                Eigen::VectorXd& rhs) {
   const int n = static_cast<int>(unknowns), kl = static_cast<int>(bandwidth), ku = kl, nrhs = 1;
   const int ldab = 2 * kl + ku + 1;
   thread_local std::vector<double> band;
@@ -110,8 +111,7 @@ bool solveBanded(long unknowns, long bandwidth, const std::vector<Eigen::Triplet
   }
   int info = 0;
   dgbsv_(&n, &kl, &ku, &nrhs, band.data(), &ldab, pivots.data(), rhs.data(), &n, &info);
-  if (info != 0) failure = "LAPACK dgbsv info " + std::to_string(info);
-  return info == 0;
+  return info;
 }
 
 // Solves A x = rhs by LAPACK's band Cholesky (dpbsv) when A is symmetric; false, with rhs
@@ -181,12 +181,10 @@ void StencilSystem::solveDirect(Assembled& system, std::vector<double>& phi, boo
       solveBandedCholesky(system.unknowns, system.bandwidth, system.entries, system.rhs)) {
     x = std::move(system.rhs);
   } else if (system.bandwidth <= kBandLimit) {
-    std::string failure;
-    if (!solveBanded(system.unknowns, system.bandwidth, system.entries, system.rhs, failure)) {
-      // dgbsv's info is the one-based index of U's zero diagonal: that unknown's column.
-      const long unknown = std::stol(failure.substr(failure.find_last_of(' ') + 1)) - 1;
-      throw SingularSystem("fluid: the discretised system is singular (" + failure + ")" +
-                           atCell(*grid_, system.row, unknown));
+    if (const int info = solveBanded(system.unknowns, system.bandwidth, system.entries, system.rhs); info != 0) {
+      // A positive info is the one-based index of U's zero diagonal: that unknown's column.
+      throw SingularSystem("fluid: the discretised system is singular (LAPACK dgbsv info " + std::to_string(info) +
+                           ")" + atCell(*grid_, system.row, info - 1L));
     }
     x = std::move(system.rhs);
   } else {

@@ -89,6 +89,14 @@ double plasticViscosityShare(const CellSolidFractions& fractions, std::size_t m,
   return total > 0.0 ? fractions[m - 1] / total : 0.0;
 }
 
+// d(eps P*)/d eps of Eq. 3.26 at void fraction voidFraction, P* = A (eps_g* - eps_g)^n: the
+// fraction correction's plastic slope, zero outside the plastic regime.
+double plasticPressureSlope(const closures::PlasticRegime::Params& plastic, const closures::PlasticRegime::Result& pl,
+                            double eps, double voidFraction, double epsGStar) {
+  if (!pl.plastic) return 0.0;
+  return pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - voidFraction, plastic.exponent - 1.0);
+}
+
 // |v_g - v_s| at the cell centre, component by component as the drag has always read it.
 double slipSpeed(const fluid::PhaseFields& gas, const fluid::PhaseFields& solids, std::size_t c) {
   const fluid::StaggeredGrid& grid = gas.fraction.grid();
@@ -280,10 +288,7 @@ void MultiFluidModel::evaluateAlgebraic(const fluid::FlowState& state, fluid::Fl
   out.shearViscosity[c] = kc.k3 * eps * std::sqrt(theta) + plasticViscosityShare(cell.fractions, m, params_.plasticPressure) * pl.viscosity;
   out.bulkViscosity[c] = kc.k2 * eps * std::sqrt(theta);
   double slope = 2.0 * kc.k1 * eps * theta;
-  if (pl.plastic) {
-    slope +=
-        pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - plasticVoid, plastic.exponent - 1.0);
-  }
+  slope += plasticPressureSlope(plastic, pl, eps, plasticVoid, epsGStar);
   out.solidsPressureSlope[c] = slope;
 }
 
@@ -349,10 +354,7 @@ void MultiFluidModel::evaluatePde(const fluid::FlowState& state, fluid::FlowProp
   const double p0 = params_.closure.modelPressure(kin.state, kin.transport);
   const double p1 = closures::evaluate(params_.closure.kineticModel(), shifted).pressure;
   double slope = std::max((p1 - p0) / (shifted.solidFraction - eps), 0.0);
-  if (pl.plastic) {
-    slope +=
-        pl.pStar + eps * plastic.exponent * plastic.coefficient * std::pow(epsGStar - plasticVoid, plastic.exponent - 1.0);
-  }
+  slope += plasticPressureSlope(plastic, pl, eps, plasticVoid, epsGStar);
   out.solidsPressureSlope[c] = slope;
   if (params_.wall) {
     const closures::JohnsonJackson::State ws{eps, kin.state.density, kin.g0, kin.state.granularTemperature, 0.0};
