@@ -39,7 +39,7 @@ Simulation::Simulation(SimulationSetup setup, EngineState state)
   time_ = state.time;
   step_ = state.step;
   rebuildsSinceSort_ = state.rebuildsSinceSort;
-  if (setup_.pressureControl.active()) {
+  if (setup_.boxMovesAlongY()) {
     setup_.hi[1] = state.boxHighY;
     shearOffsetBase_ = state.shearOffsetBase;
     shearOffsetTime_ = state.shearOffsetTime;
@@ -99,6 +99,20 @@ void Simulation::validateSetup() {
   // the skin ran no faster.
   innerSkin_ = 0.25 * setup_.skin;
   wallForce_.assign(setup_.walls.size(), Vec3::Zero());
+  if (setup_.compression.active()) {
+    // The schedule runs from the configured box (a resumed run restores its current box after
+    // this) to the length along y at which the particles fill the target fraction.
+    double volume = 0.0;
+    for (std::size_t i = 0; i < p_.nOwned; ++i) volume += 4.0 / 3.0 * M_PI * std::pow(p_.radius[i], 3);
+    const Vec3 length = setup_.hi - setup_.lo;
+    compressionStartHighY_ = setup_.hi[1];
+    compressionTargetHighY_ = setup_.lo[1] + volume / (length[0] * length[2] * setup_.compression.solidFraction);
+    if (!(compressionTargetHighY_ < compressionStartHighY_)) {
+      throw Error("DEM: compression to solid fraction " + std::to_string(setup_.compression.solidFraction) +
+                  ": the particles already fill " + std::to_string(volume / length.prod()) +
+                  " of the box as configured, and compression only shrinks it (a larger box_hi along y)");
+    }
+  }
 }
 
 double Simulation::shearOffset(double t) const {
@@ -254,6 +268,7 @@ void Simulation::step(bool recordContacts) {
     omegaNow[i] += (half * invInertiaNow[i]) * torqueNow[i];
   });
   if (setup_.pressureControl.active()) controlPressure();
+  if (setup_.compression.active()) compress();
 }
 
 void Simulation::controlPressure() {
@@ -272,6 +287,25 @@ void Simulation::controlPressure() {
   normalStressSamples_ = 0;
   const double error = std::clamp((mean - control.stress) / control.stress, -1.0, 1.0);
   const double scale = 1.0 + control.interval * setup_.dt / control.relaxationTime * error;
+  resizeAlongY(scale, length[1] * scale,
+               "pressure control: the target stress packs these particles into a slab too thin for this box; use "
+               "more particles, a larger box in x and z, or a lower stress");
+}
+
+void Simulation::compress() {
+  const auto& c = setup_.compression;
+  if (step_ % c.interval != 0 || setup_.hi[1] == compressionTargetHighY_) return;
+  // Linear in time; the last change lands on the target exactly (a fixed-volume box from then on).
+  const double s = std::min(1.0, time_ / c.duration);
+  const double high = s < 1.0 ? compressionStartHighY_ + s * (compressionTargetHighY_ - compressionStartHighY_)
+                              : compressionTargetHighY_;
+  const double length = high - setup_.lo[1];
+  resizeAlongY(length / (setup_.hi[1] - setup_.lo[1]), length,
+               "compression: its solid fraction packs these particles into a slab too thin for this box; use more "
+               "particles or a box_hi longer along x and z");
+}
+
+void Simulation::resizeAlongY(double scale, double length, const char* why) {
   // The offset so far, then the new box: positions scaled affinely about its lower face,
   // velocities kept (as LAMMPS's fix deform with remap x). The forces of this step stay those of
   // the positions they were computed at; the list is rebuilt for the new box.
@@ -279,13 +313,11 @@ void Simulation::controlPressure() {
   shearOffsetTime_ = time_;
   const double low = setup_.lo[1];
   for (std::size_t i = 0; i < p_.nOwned; ++i) p_.x[i][1] = low + (p_.x[i][1] - low) * scale;
-  setup_.hi[1] = low + length[1] * scale;
-  if (setup_.hi[1] - low < 2.0 * cutoff_) {
+  setup_.hi[1] = low + length;
+  if (length < 2.0 * cutoff_) {
     // Ghosts need a periodic length of at least twice the interaction range (problems()).
-    throw Error("DEM: pressure control shrank the box along y to " + std::to_string(setup_.hi[1] - low) +
-                " m at step " + std::to_string(step_) + ", below twice the interaction range (" +
-                std::to_string(2.0 * cutoff_) + " m): the target stress packs these particles into a slab "
-                "too thin for this box; use more particles, a larger box in x and z, or a lower stress");
+    throw Error("DEM: the box along y shrank to " + std::to_string(length) + " m at step " + std::to_string(step_) +
+                ", below twice the interaction range (" + std::to_string(2.0 * cutoff_) + " m); " + why);
   }
   rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
 }

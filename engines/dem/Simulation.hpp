@@ -153,6 +153,14 @@ class Simulation {
   // Pressure control: p_yy of this step into the running mean, and every interval steps the box
   // scaled along y (SimulationSetup::PressureControl).
   void controlPressure();
+  // Compression: every interval steps the box's length along y set by its schedule
+  // (SimulationSetup::Compression), until it holds the target.
+  void compress();
+  // The box's length along y changed to `length` (= scale times the old one; both given so
+  // pressure control's box stays bit for bit as it was): the Lees-Edwards offset so far kept,
+  // positions scaled affinely about the lower face, the neighbour list rebuilt. `why` names the
+  // cause in the error of a box too thin for its ghosts.
+  void resizeAlongY(double scale, double length, const char* why);
 
   SimulationSetup setup_;
   contact::AnyContactLaw law_;  // the composition setup_.contact names
@@ -167,6 +175,9 @@ class Simulation {
   // constant between box changes (both 0 without pressure control: the plain formula).
   double shearOffsetBase_ = 0.0;
   double shearOffsetTime_ = 0.0;
+  // Compression: the box's upper y as configured (the schedule's start) and as it is to end.
+  double compressionStartHighY_ = 0.0;
+  double compressionTargetHighY_ = 0.0;
   double cutoff_ = 0.0;
   double time_ = 0.0;
   double buildTime_ = 0.0;

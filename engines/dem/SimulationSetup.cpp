@@ -106,6 +106,27 @@ std::vector<SetupProblem> SimulationSetup::problems(double largestDiameter,
       add("/pressure_control/interval", text("the interval must be at least 1 step, found ", pressureControl.interval));
     }
   }
+  if (compression.solidFraction != 0.0) {  // configured
+    if (!(compression.solidFraction > 0.0 && compression.solidFraction < 1.0)) {
+      add("/compression", text("the solid fraction to compress to (the grains' in the box they are to fill) must lie "
+                               "in (0, 1), found ",
+                               compression.solidFraction));
+    }
+    if (!(compression.duration > 0.0)) {
+      add("/compression/duration", text("the compression's duration must be positive, found ", compression.duration));
+    }
+    if (compression.interval < 1) {
+      add("/compression/interval", text("the interval must be at least 1 step, found ", compression.interval));
+    }
+    if (shearRate == 0.0) add("/compression", text("compression shrinks a Lees-Edwards box: give a shear_rate"));
+    if (!(periodic[0] && periodic[1] && periodic[2])) {
+      add("/compression", text("compression needs a box periodic in \"xyz\""));
+    }
+    if (!walls.empty()) add("/compression", text("compression needs a box without walls, found ", walls.size()));
+    if (pressureControl.stress != 0.0) {
+      add("/compression", text("compression fixes the box's volume and pressure control varies it: give one of them"));
+    }
+  }
   if (planarAxis < -1 || planarAxis > 2) {
     add("/planar", text("the planar axis must be x, y, z or none, found index ", planarAxis));
   }
@@ -184,6 +205,11 @@ void to_json(json& j, const SimulationSetup& s) {
                              {"relaxation_time", s.pressureControl.relaxationTime},
                              {"interval", s.pressureControl.interval}};
   }
+  if (s.compression.active()) {
+    j["compression"] = {{"solid_fraction", s.compression.solidFraction},
+                        {"duration", s.compression.duration},
+                        {"interval", s.compression.interval}};
+  }
 }
 
 void from_json(const json& j, SimulationSetup& s) {
@@ -225,6 +251,13 @@ void from_json(const json& j, SimulationSetup& s) {
     s.pressureControl.stress = pc.at("stress");
     s.pressureControl.relaxationTime = pc.at("relaxation_time");
     s.pressureControl.interval = pc.at("interval");
+  }
+  s.compression = {};
+  if (j.contains("compression")) {
+    const auto& c = j.at("compression");
+    s.compression.solidFraction = c.at("solid_fraction");
+    s.compression.duration = c.at("duration");
+    s.compression.interval = c.at("interval");
   }
 }
 

@@ -43,6 +43,20 @@ struct SimulationSetup {
     int interval = 10;            // steps between box adjustments
     [[nodiscard]] bool active() const { return stress > 0.0; }
   } pressureControl;
+  // Compression to a fixed solid fraction (issue 60) when `solidFraction` > 0: a Lees-Edwards box
+  // whose length along the gradient (y) shrinks linearly in time, positions scaled with it as
+  // pressure control scales them, from the length it started with to the one at which its
+  // particles fill `solidFraction` of it, reached at `duration` and held from then on. The start
+  // of fixed-volume dense states that random insertion cannot reach (it jams near 0.38) and an
+  // fcc lattice of a mixture cannot (its spacing is the largest grain's).
+  struct Compression {
+    double solidFraction = 0.0;  // the fraction held after `duration`
+    double duration = 0.0;       // [s] from the start of the run
+    int interval = 10;           // steps between box changes
+    [[nodiscard]] bool active() const { return solidFraction > 0.0; }
+  } compression;
+  // Whether the box length along y changes during the run (pressure control or compression).
+  [[nodiscard]] bool boxMovesAlongY() const { return pressureControl.active() || compression.active(); }
   // Planar mode for 2-D beds (one particle layer): no motion along this axis (0, 1, 2) and
   // rotation about it only; -1 for full 3-D.
   int planarAxis = -1;

@@ -162,6 +162,8 @@ std::vector<core::engine::SetupProblem> lammpsProblems(const dem::SimulationSetu
     add("/pressure_control",
         "engine lammps: the pressure-controlled box is grainbridge's own (issue 30); not offered "
         "on LAMMPS");
+  if (s.compression.active())
+    add("/compression", "engine lammps: the compressed box is grainbridge's own (issue 60); not offered on LAMMPS");
   if (s.fluidCoupled) add("", "engine lammps: a fluid-coupled (TF-DEM) run needs grainbridge's engine");
   for (std::size_t w = 0; w < s.walls.size(); ++w) {
     const auto& wall = s.walls[w];

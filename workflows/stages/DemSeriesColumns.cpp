@@ -61,12 +61,14 @@ class StressColumns final : public SeriesColumns {
   dem::ParticleEngine& engine_;
 };
 
-// Pressure control: the box length along the gradient, the solid fraction in it, and the p_yy
-// the control saw at the step (the stress_yy column is Eq. 2.3 of the frame, the same state).
-class PressureControlColumns final : public SeriesColumns {
+// A box moving along y (pressure control or compression): its length along the gradient and the
+// solid fraction in it; under pressure control also the p_yy the control saw at the step (the
+// stress_yy column is Eq. 2.3 of the frame, the same state).
+class MovingBoxColumns final : public SeriesColumns {
  public:
-  explicit PressureControlColumns(const dem::DemEngine& engine) : engine_(engine) {}
+  MovingBoxColumns(const dem::DemEngine& engine, bool controlled) : engine_(engine), controlled_(controlled) {}
   [[nodiscard]] std::vector<std::string> names() const override {
+    if (!controlled_) return {"box_length_y", "solid_fraction"};
     return {"box_length_y", "solid_fraction", "controlled_stress_yy"};
   }
   void sample(SeriesRow& row) override {
@@ -75,11 +77,13 @@ class PressureControlColumns final : public SeriesColumns {
     const auto& p = sim.particles();
     double volume = 0.0;
     for (std::size_t i = 0; i < p.nOwned; ++i) volume += 4.0 / 3.0 * M_PI * std::pow(p.radius[i], 3);
-    row.add(length[1]).add(volume / length.prod()).add(sim.normalStressYY());
+    row.add(length[1]).add(volume / length.prod());
+    if (controlled_) row.add(sim.normalStressYY());
   }
 
  private:
   const dem::DemEngine& engine_;
+  bool controlled_;
 };
 
 class WallForceColumns final : public SeriesColumns {
@@ -163,11 +167,11 @@ std::vector<std::unique_ptr<SeriesColumns>> demSeriesColumns(dem::ParticleEngine
   out.push_back(std::make_unique<EnergyColumns>(engine));
   out.push_back(std::make_unique<ContactColumns>(engine));
   out.push_back(std::make_unique<StressColumns>(engine));
-  if (setup.engine.pressureControl.active()) {
-    // Pressure control is grainbridge's own (refused on engine lammps at check).
+  if (setup.engine.boxMovesAlongY()) {
+    // Pressure control and compression are grainbridge's own (refused on engine lammps at check).
     auto* own = dynamic_cast<dem::DemEngine*>(&engine);
-    GB_ASSERT(own != nullptr, "pressure control runs on grainbridge's engine only");
-    out.push_back(std::make_unique<PressureControlColumns>(*own));
+    GB_ASSERT(own != nullptr, "a box moving along y runs on grainbridge's engine only");
+    out.push_back(std::make_unique<MovingBoxColumns>(*own, setup.engine.pressureControl.active()));
   }
   out.push_back(std::make_unique<WallForceColumns>(engine, setup.engine.walls.size()));
   out.push_back(std::make_unique<SpeciesHeightColumns>(engine, std::move(species)));

@@ -119,6 +119,16 @@ void addWall(DemSetup& setup, dem::Wall wall, const json& contact, const std::st
   setup.engine.walls.push_back(std::move(wall));
 }
 
+double speciesSolidFraction(const json& p) {
+  double volume = 0.0;
+  for (const auto& s : p.at("species")) {
+    volume += static_cast<double>(s.at("count").get<std::int64_t>()) * M_PI / 6.0 * std::pow(s.at("diameter").get<double>(), 3);
+  }
+  double box = 1.0;
+  for (int a = 0; a < 3; ++a) box *= p.at("box_hi")[a].get<double>() - p.at("box_lo")[a].get<double>();
+  return volume / box;
+}
+
 DemSetup makeDemSetup(const json& p) {
   DemSetup out = makeParticleSetup(p);
   auto& e = out.engine;
@@ -136,6 +146,17 @@ DemSetup makeDemSetup(const json& p) {
     e.pressureControl.stress = pc.at("stress");
     e.pressureControl.relaxationTime = pc.at("relaxation_time");
     e.pressureControl.interval = pc.at("interval");
+  }
+  if (p.contains("compression")) {
+    // The engine compresses from the box the grains are inserted in to the fraction they fill in
+    // box_hi's: the inserted box is box_hi's made longer along y by held / from.
+    const auto& c = p.at("compression");
+    const double held = speciesSolidFraction(p);
+    const double from = c.at("from_solid_fraction");
+    e.compression.solidFraction = held;
+    e.compression.duration = c.at("duration");
+    e.compression.interval = c.at("interval");
+    if (from > 0.0 && held > from) e.hi[1] = e.lo[1] + (e.hi[1] - e.lo[1]) * (held / from);
   }
   const std::string planar = p.at("planar");
   e.planarAxis = planar.empty() ? -1 : planar[0] - 'x';

@@ -42,6 +42,8 @@ struct DemSetup {
 
 // Builds the setup; assumes individually valid parameters.
 DemSetup makeDemSetup(const nlohmann::json& params);
+// The solid fraction the species' counts fill in box_lo/box_hi's box (a compressed box holds it).
+double speciesSolidFraction(const nlohmann::json& params);
 
 // The particles alone, from the keys the dem and tfdem stages share (ParticleSchema.hpp: species,
 // contact, pair_contacts, skin, dt and the contact sub-models): species, pair materials and their

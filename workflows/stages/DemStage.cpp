@@ -92,6 +92,18 @@ std::shared_ptr<ParamSchema> pressureControlSchema() {
   return s;
 }
 
+std::shared_ptr<ParamSchema> compressionSchema() {
+  auto s = std::make_shared<ParamSchema>();
+  s->add(ParamSpec::number("from_solid_fraction")
+             .defaultValue(0.3)
+             .doc("the solid fraction the grains are inserted at, in box_hi's box made longer along y"))
+      .add(ParamSpec::quantity("duration", Dimension::timeDim())
+               .required()
+               .doc("time from the run's start over which the box shrinks linearly to box_hi"))
+      .add(ParamSpec::integer("interval").defaultValue(10).doc("steps between box changes"));
+  return s;
+}
+
 std::shared_ptr<ParamSchema> preparationSchema() {
   auto s = std::make_shared<ParamSchema>();
   s->add(
@@ -158,6 +170,9 @@ DemStage::DemStage() {
       .add(ParamSpec::object("pressure_control", pressureControlSchema())
                .doc("hold p_yy at a target by relaxing the box length along y (sheared box periodic in xyz, no "
                     "walls; docs/dem.md)"))
+      .add(ParamSpec::object("compression", compressionSchema())
+               .doc("insert dilute in a box longer along y, shrink it to box_hi, then hold it: a fixed-volume "
+                    "sheared box above the 0.38 random insertion reaches (periodic in xyz, no walls; docs/dem.md)"))
       .add(ParamSpec::quantity("background_damping", Dimension{0, 1, -1})
                .defaultValue(0.0)
                .min(0.0)
@@ -276,6 +291,20 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
       for (const auto& w : p["walls"]) {
         if (w.at("kind") == "cylinder") d.add(ptr + "/insertion", "an fcc lattice fills a box, not a cylinder");
       }
+    }
+  }
+  if (p.contains("compression")) {
+    const std::string where = ptr + "/compression";
+    if (p.contains("preparation")) d.add(where, "compression and a preparation exclude each other");
+    if (fromFile) d.add(where, "compression starts from inserted grains, not from lammps_data or initial_frame");
+    const double from = p["compression"].at("from_solid_fraction");
+    const double held = speciesSolidFraction(p);
+    if (!(from > 0.0)) {
+      d.add(where + "/from_solid_fraction", "must be positive, found " + core::humanNumber(from));
+    } else if (!(held > from)) {
+      d.add(where + "/from_solid_fraction", "the species fill " + core::humanNumber(held) +
+                                                " of box_hi's box, no more than the " + core::humanNumber(from) +
+                                                " they are inserted at: nothing to compress");
     }
   }
   if (p.contains("preparation")) {

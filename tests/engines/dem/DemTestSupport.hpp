@@ -67,6 +67,25 @@ inline PairMaterial frictionlessUnitMass(double kn, double e) {
   return m;
 }
 
+// Unit spheres (d = m = 1) at `centres`, moving with the streaming profile of the Lees-Edwards
+// box `s`, u_x = shearRate (y - y_mid): the start of the sheared-box tests.
+inline Particles shearedUnitSpheres(const SimulationSetup& s, const std::vector<Vec3>& centres) {
+  const double mid = 0.5 * (s.lo[1] + s.hi[1]);
+  Particles p;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const Vec3& x = centres[i];
+    p.addOwned(static_cast<std::int64_t>(i), 0, 0.5, 1.0, x, Vec3(s.shearRate * (x[1] - mid), 0, 0), Vec3::Zero(),
+               false);
+  }
+  return p;
+}
+
+// The solid fraction of n unit spheres in the simulation's box as it now is.
+inline double unitSphereSolidFraction(const Simulation& sim, int n) {
+  const Vec3 l = sim.boxHigh() - sim.boxLow();
+  return n * M_PI / 6.0 / (l[0] * l[1] * l[2]);
+}
+
 // Centres of n spheres of radius r, inserted at random without overlap in the box of `s`
 // (periodic as it is), drawing from `rng`.
 inline std::vector<Vec3> randomCentres(const SimulationSetup& s, int n, double r, std::mt19937_64& rng) {

@@ -39,20 +39,10 @@ SimulationSetup controlledBox(double phi) {
 Particles shearedGas(const SimulationSetup& s, unsigned seed) {
   // A lattice start: random insertion jams near phi 0.38. Shear melts it in a few strain units.
   std::mt19937_64 rng(seed);
-  const auto centres = fccLatticeSites(s.lo, s.hi, kParticles, 1.0, rng);
-  const double mid = 0.5 * (s.lo[1] + s.hi[1]);
-  Particles p;
-  for (int i = 0; i < kParticles; ++i) {
-    const Vec3& x = centres[static_cast<std::size_t>(i)];
-    p.addOwned(i, 0, 0.5, 1.0, x, Vec3(s.shearRate * (x[1] - mid), 0, 0), Vec3::Zero(), false);
-  }
-  return p;
+  return shearedUnitSpheres(s, fccLatticeSites(s.lo, s.hi, kParticles, 1.0, rng));
 }
 
-double solidFraction(const Simulation& sim) {
-  const Vec3 l = sim.boxHigh() - sim.boxLow();
-  return kParticles * M_PI / 6.0 / (l[0] * l[1] * l[2]);
-}
+double solidFraction(const Simulation& sim) { return unitSphereSolidFraction(sim, kParticles); }
 
 struct Held {
   double stress = 0.0;  // mean p_yy over the second half

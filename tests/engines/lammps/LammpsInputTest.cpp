@@ -118,6 +118,7 @@ TEST(LammpsInput, EveryRefusalNamesItsKey) {
   s.contact.normal = "hertz";
   s.planarAxis = 1;
   s.pressureControl.stress = 10.0;
+  s.compression.solidFraction = 0.5;
   s.pairMaterial[1].gammaN = 40.0;
   s.pairMaterial[2].gammaN = 40.0;
   s.walls[0].direction = Vec3(0, 1, 1);
@@ -139,7 +140,7 @@ TEST(LammpsInput, EveryRefusalNamesItsKey) {
   shaker.vibration = {Vec3(0, 0, 1), 1e-3, 35.0};  // 3 / (4 f dt) = 2142.9 steps: not whole
   s.walls.push_back(shaker);
   const auto found = pointers(s, radii);
-  for (const char* key : {"/tangential_model", "/damping_model", "/normal_model", "/planar", "/pressure_control",
+  for (const char* key : {"/tangential_model", "/damping_model", "/normal_model", "/planar", "/pressure_control", "/compression",
                           "/pair_contacts", "/walls/0/direction", "/walls/1", "/walls/2", "/walls/2/vibration_direction",
                           "/walls/3/vibration_direction", "/walls/4/vibration_start"}) {
     EXPECT_TRUE(has(found, key)) << key;
