@@ -65,17 +65,30 @@ ClosureTable::ClosureTable(std::string quantity, std::vector<double> solidFracti
 
 ClosureTable::ClosureTable(std::string quantity, std::vector<double> solidFraction, std::string secondVariable,
                            std::vector<double> second, std::vector<double> values)
+    : ClosureTable(std::move(quantity), std::move(solidFraction), std::move(secondVariable), std::move(second), "", {},
+                   std::move(values)) {}
+
+ClosureTable::ClosureTable(std::string quantity, std::vector<double> solidFraction, std::string secondVariable,
+                           std::vector<double> second, std::string thirdVariable, std::vector<double> third,
+                           std::vector<double> values)
     : quantity_(std::move(quantity)),
       solidFraction_(std::move(solidFraction)),
       secondVariable_(std::move(secondVariable)),
       second_(std::move(second)),
+      thirdVariable_(std::move(thirdVariable)),
+      third_(std::move(third)),
       values_(std::move(values)) {
   requireIncreasing(quantity_, "solid fraction", solidFraction_);
   if (!second_.empty()) requireIncreasing(quantity_, secondVariable_.c_str(), second_);
-  const std::size_t rows = std::max<std::size_t>(1, second_.size());
+  if (!third_.empty()) {
+    if (second_.empty()) throw Error("closure table " + quantity_ + ": a third axis needs a second one");
+    requireIncreasing(quantity_, thirdVariable_.c_str(), third_);
+  }
+  const std::size_t rows = std::max<std::size_t>(1, second_.size()) * std::max<std::size_t>(1, third_.size());
   if (values_.size() != rows * solidFraction_.size()) {
     throw Error("closure table " + quantity_ + ": " + std::to_string(values_.size()) + " values for a " +
-                std::to_string(solidFraction_.size()) + " x " + std::to_string(rows) + " grid");
+                std::to_string(solidFraction_.size()) + " x " + std::to_string(std::max<std::size_t>(1, second_.size())) +
+                (third_.empty() ? "" : " x " + std::to_string(third_.size())) + " grid");
   }
   for (std::size_t i = 0; i < values_.size(); ++i) {
     if (!std::isfinite(values_[i])) {
@@ -107,7 +120,21 @@ double ClosureTable::alongSolidFraction(std::size_t row, double x) const {
          (t3 - t2) * h * d[k + 1];
 }
 
-ClosureLookup ClosureTable::operator()(double solidFraction, double second) const {
+namespace {
+
+// Where y falls on a coarse axis (already clamped to it): the node below and the weight of the
+// one above (0 on a one-node axis).
+std::pair<std::size_t, double> bracket(const std::vector<double>& axis, double y) {
+  if (axis.size() < 2) return {0, 0.0};
+  const auto upper = std::upper_bound(axis.begin(), axis.end(), y);
+  const std::size_t r = std::min<std::size_t>(
+      axis.size() - 2, static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, upper - axis.begin() - 1)));
+  return {r, (y - axis[r]) / (axis[r + 1] - axis[r])};
+}
+
+}  // namespace
+
+ClosureLookup ClosureTable::operator()(double solidFraction, double second, double third) const {
   ClosureLookup out;
   const double x = std::clamp(solidFraction, solidFraction_.front(), solidFraction_.back());
   out.inRange = x == solidFraction;
@@ -117,15 +144,21 @@ ClosureLookup ClosureTable::operator()(double solidFraction, double second) cons
   }
   const double y = std::clamp(second, second_.front(), second_.back());
   out.inRange = out.inRange && y == second;
-  if (second_.size() == 1) {
-    out.value = alongSolidFraction(0, x);
+  const auto [r, s] = bracket(second_, y);
+  const std::size_t ny = second_.size();
+  // Linear in the second variable within one plane of the third (iz).
+  auto plane = [&](std::size_t iz) {
+    const double low = alongSolidFraction(iz * ny + r, x);
+    return s == 0.0 ? low : (1.0 - s) * low + s * alongSolidFraction(iz * ny + r + 1, x);
+  };
+  if (third_.empty()) {
+    out.value = plane(0);
     return out;
   }
-  const auto upper = std::upper_bound(second_.begin(), second_.end(), y);
-  const std::size_t r = std::min<std::size_t>(
-      second_.size() - 2, static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, upper - second_.begin() - 1)));
-  const double s = (y - second_[r]) / (second_[r + 1] - second_[r]);
-  out.value = (1.0 - s) * alongSolidFraction(r, x) + s * alongSolidFraction(r + 1, x);
+  const double z = std::clamp(third, third_.front(), third_.back());
+  out.inRange = out.inRange && z == third;
+  const auto [q, t] = bracket(third_, z);
+  out.value = t == 0.0 ? plane(q) : (1.0 - t) * plane(q) + t * plane(q + 1);
   return out;
 }
 

@@ -44,13 +44,13 @@ void checkErrors(const ClosureTable& nominal, std::span<const double> standardEr
 ClosureTable withValues(const ClosureTable& nominal, std::vector<double> values) {
   if (nominal.twoDimensional()) {
     return ClosureTable(nominal.quantity(), nominal.solidFractions(), nominal.secondVariable(), nominal.seconds(),
-                        std::move(values));
+                        nominal.thirdVariable(), nominal.thirds(), std::move(values));
   }
   return ClosureTable(nominal.quantity(), nominal.solidFractions(), std::move(values));
 }
 
 bool sameLayout(const ClosureTable& a, const ClosureTable& b) {
-  return a.solidFractions() == b.solidFractions() && a.seconds() == b.seconds();
+  return a.solidFractions() == b.solidFractions() && a.seconds() == b.seconds() && a.thirds() == b.thirds();
 }
 
 }  // namespace

@@ -13,11 +13,17 @@ namespace {
 
 json contentJson(const ClosureTable& table) {
   // Key order is nlohmann's (sorted), so the hash does not depend on how a record was built.
-  return {{"quantity", table.quantity()},
-          {"second_variable", table.secondVariable()},
-          {"solid_fractions", table.solidFractions()},
-          {"seconds", table.seconds()},
-          {"values", table.values()}};
+  json j = {{"quantity", table.quantity()},
+            {"second_variable", table.secondVariable()},
+            {"solid_fractions", table.solidFractions()},
+            {"seconds", table.seconds()},
+            {"values", table.values()}};
+  // Only with a third axis: a table without one keeps the hash it always had.
+  if (table.threeDimensional()) {
+    j["third_variable"] = table.thirdVariable();
+    j["thirds"] = table.thirds();
+  }
+  return j;
 }
 
 }  // namespace
@@ -43,6 +49,7 @@ LoadedClosureTable loadedClosureTableFromJson(const json& j) {
         j.at("filters").value("friction", 0.0),
         ClosureTable(j.at("quantity").get<std::string>(), j.at("solid_fractions").get<std::vector<double>>(),
                      j.at("second_variable").get<std::string>(), j.at("seconds").get<std::vector<double>>(),
+                     j.value("third_variable", std::string()), j.value("thirds", std::vector<double>{}),
                      j.at("values").get<std::vector<double>>()),
         j.value("uncertainties", std::vector<double>{}),
         j.value("correlations", std::map<std::string, std::vector<double>>{})};

@@ -104,14 +104,16 @@ void ClosureStore::insertClosureTable(std::int64_t runId, const json& row, const
     const auto second = row.value("seconds", json::array()).get<std::vector<double>>();
     core::ClosureTable check(
         row.at("quantity").get<std::string>(), row.at("solid_fractions").get<std::vector<double>>(),
-        row.value("second_variable", std::string()), second, row.at("values").get<std::vector<double>>());
+        row.value("second_variable", std::string()), second, row.value("third_variable", std::string()),
+        row.value("thirds", json::array()).get<std::vector<double>>(), row.at("values").get<std::vector<double>>());
     (void)check;
   } catch (const json::exception& e) {
     throw Error("closure database: " + where + ": " + e.what());
   }
   auto st = db_.prepare(
       "INSERT INTO closure_tables(run_id, name, quantity, second_variable, solid_fractions_json, seconds_json, "
-      "values_json, uncertainties_json, filters_json, correlations_json) VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10)");
+      "values_json, uncertainties_json, filters_json, correlations_json, third_variable, thirds_json) "
+      "VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12)");
   st.bind(1, runId)
       .bind(2, row.at("name").get<std::string>())
       .bind(3, row.at("quantity").get<std::string>())
@@ -121,7 +123,9 @@ void ClosureStore::insertClosureTable(std::int64_t runId, const json& row, const
       .bind(7, row.at("values").dump())
       .bind(8, row.value("uncertainties", json::array()).dump())
       .bind(9, row.value("filters", json::object()).dump())
-      .bind(10, row.value("correlations", json::object()).dump());
+      .bind(10, row.value("correlations", json::object()).dump())
+      .bind(11, row.value("third_variable", std::string()))
+      .bind(12, row.value("thirds", json::array()).dump());
   st.step();
 }
 
@@ -183,15 +187,15 @@ json ClosureStore::query(const ClosureQuery& q) {
 const std::vector<std::string>& ClosureStore::tableNodeColumns() {
   static const std::vector<std::string> columns = {
       "table_id", "run_id", "name",        "quantity", "second_variable", "solid_fraction", "second",
-      "value",    "uncertainty", "workflow", "stage",    "run_key"};
+      "third_variable", "third", "value", "uncertainty", "workflow", "stage", "run_key"};
   return columns;
 }
 
 json ClosureStore::tableNodes(const ClosureQuery& query) {
   auto st = db_.prepare(
       "SELECT t.id, t.run_id, t.name, t.quantity, t.second_variable, t.solid_fractions_json, t.seconds_json, "
-      "t.values_json, t.uncertainties_json, r.workflow, r.stage, r.key FROM closure_tables t "
-      "JOIN runs r ON r.id = t.run_id WHERE (?1 = '' OR r.workflow = ?1) AND (?2 = 0 OR t.run_id = ?2) "
+      "t.values_json, t.uncertainties_json, r.workflow, r.stage, r.key, t.third_variable, t.thirds_json "
+      "FROM closure_tables t JOIN runs r ON r.id = t.run_id WHERE (?1 = '' OR r.workflow = ?1) AND (?2 = 0 OR t.run_id = ?2) "
       "ORDER BY t.id");
   st.bind(1, query.workflow).bind(2, query.runId.value_or(0));
   const auto& known = tableNodeColumns();
@@ -207,6 +211,9 @@ json ClosureStore::tableNodes(const ClosureQuery& query) {
     const auto seconds = json::parse(st.columnText(6)).get<std::vector<double>>();
     const auto values = json::parse(st.columnText(7)).get<std::vector<double>>();
     const auto errors = json::parse(st.columnText(8)).get<std::vector<double>>();
+    const auto thirds = json::parse(st.columnText(13)).get<std::vector<double>>();
+    // values[(iz * seconds + iy) * fractions + ix]
+    const std::size_t perThird = fractions.size() * std::max<std::size_t>(1, seconds.size());
     for (std::size_t k = 0; k < values.size(); ++k) {
       json row = {{"table_id", st.columnInt64(0)},
                   {"run_id", st.columnInt64(1)},
@@ -214,7 +221,9 @@ json ClosureStore::tableNodes(const ClosureQuery& query) {
                   {"quantity", st.columnText(3)},
                   {"second_variable", st.columnText(4)},
                   {"solid_fraction", fractions.at(k % fractions.size())},
-                  {"second", seconds.empty() ? json() : json(seconds.at(k / fractions.size()))},
+                  {"second", seconds.empty() ? json() : json(seconds.at((k % perThird) / fractions.size()))},
+                  {"third_variable", st.columnText(12)},
+                  {"third", thirds.empty() ? json() : json(thirds.at(k / perThird))},
                   {"value", values[k]},
                   {"uncertainty", k < errors.size() ? json(errors[k]) : json()},
                   {"workflow", st.columnText(9)},
@@ -236,7 +245,7 @@ core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const 
                                                 const std::string& runKey) {
   auto st = db_.prepare(
       "SELECT t.solid_fractions_json, t.second_variable, t.seconds_json, t.values_json, t.filters_json, r.key, "
-      "t.uncertainties_json, t.correlations_json "
+      "t.uncertainties_json, t.correlations_json, t.third_variable, t.thirds_json "
       "FROM closure_tables t JOIN runs r ON r.id = t.run_id "
       "WHERE t.name = ?1 AND t.quantity = ?2 AND (?3 = '' OR r.key = ?3) ORDER BY t.run_id DESC, t.id DESC LIMIT 1");
   st.bind(1, name).bind(2, quantity).bind(3, runKey);
@@ -249,7 +258,8 @@ core::LoadedClosureTable ClosureStore::loadTable(const std::string& name, const 
                 " (tables: " + (known.empty() ? "none" : known) + ")");
   }
   core::ClosureTable table(quantity, json::parse(st.columnText(0)).get<std::vector<double>>(), st.columnText(1),
-                           json::parse(st.columnText(2)).get<std::vector<double>>(),
+                           json::parse(st.columnText(2)).get<std::vector<double>>(), st.columnText(8),
+                           json::parse(st.columnText(9)).get<std::vector<double>>(),
                            json::parse(st.columnText(3)).get<std::vector<double>>());
   std::string sha256 = core::contentSha256(table);
   return core::LoadedClosureTable{name,

@@ -260,6 +260,12 @@ ALTER TABLE rheology ADD COLUMN phi_amplitude_err REAL;
 ALTER TABLE rheology ADD COLUMN phi_exponent REAL;
 ALTER TABLE rheology ADD COLUMN phi_exponent_err REAL;
 )sql",
+      // 9: a table's third axis (issue 60: a mixture species' table over total solid fraction,
+      // volume share and restitution); '' and [] for tables of one or two axes.
+      R"sql(
+ALTER TABLE closure_tables ADD COLUMN third_variable TEXT NOT NULL DEFAULT '';
+ALTER TABLE closure_tables ADD COLUMN thirds_json TEXT NOT NULL DEFAULT '[]';
+)sql",
   };
   return scripts;
 }

@@ -41,6 +41,11 @@ TabulatedClosure::TabulatedClosure(core::ClosureTable table, OutOfRangePolicy po
     throw Error("closure table of \"" + q +
                 "\": a continuum engine can use p_theta, eta_theta or j_theta (the theta-scaled forms)");
   }
+  if (table_.threeDimensional()) {
+    throw Error("closure table " + q + ": a table of three axes (" + table_.secondVariable() + ", " +
+                table_.thirdVariable() + ") is a mixture species' (issue 60); a continuum phase's table has solid "
+                "fraction and restitution");
+  }
   if (table_.twoDimensional() && table_.secondVariable() != "restitution") {
     throw Error("closure table " + q + ": second variable \"" + table_.secondVariable() +
                 "\" is not a kinetic-theory state variable (expected restitution)");

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 #include <nlohmann/json.hpp>
 
 #include "core/Error.hpp"
@@ -139,4 +140,42 @@ TEST(LoadedClosureTable, RoundTripsThroughJsonAndRefusesAMalformedRecord) {
   nlohmann::json short_ = j;
   short_["values"] = {1.0};
   EXPECT_THROW((void)grainbridge::core::loadedClosureTableFromJson(short_), grainbridge::Error);
+}
+
+// A mixture species' table (issue 60): (total solid fraction, volume share x, restitution).
+// f = 2 phi + 3 x + 5 e + 7 x e is linear in phi (which PCHIP reproduces: its slopes are the
+// secants) and bilinear in (x, e), so the table returns it exactly between its nodes.
+TEST(ClosureTable, AThirdAxisInterpolatesBilinearlyWithTheSecond) {
+  const std::vector<double> phi{0.1, 0.2, 0.4}, x{0.25, 0.5, 0.75}, e{0.9, 0.97};
+  auto f = [](double p, double s, double r) { return 2 * p + 3 * s + 5 * r + 7 * s * r; };
+  std::vector<double> values;
+  for (double r : e) {
+    for (double s : x) {
+      for (double p : phi) values.push_back(f(p, s, r));
+    }
+  }
+  const ClosureTable table("p_theta", phi, "volume_share", x, "restitution", e, values);
+  ASSERT_TRUE(table.threeDimensional());
+  EXPECT_EQ(table.thirdVariable(), "restitution");
+  for (const auto& [p, s, r] : {std::tuple{0.15, 0.3, 0.93}, std::tuple{0.4, 0.75, 0.97}, std::tuple{0.33, 0.6, 0.9}}) {
+    const auto v = table(p, s, r);
+    EXPECT_TRUE(v.inRange);
+    EXPECT_NEAR(v.value, f(p, s, r), 1e-12) << p << " " << s << " " << r;
+  }
+  // The nodes are the values as given, in the order the header says.
+  EXPECT_DOUBLE_EQ(table(0.2, 0.75, 0.97).value, values[(1 * 3 + 2) * 3 + 1]);
+  // Outside along the third axis: the edge's value, flagged.
+  const auto beyond = table(0.2, 0.5, 0.99);
+  EXPECT_FALSE(beyond.inRange);
+  EXPECT_NEAR(beyond.value, f(0.2, 0.5, 0.97), 1e-12);
+  // A third axis needs a second, and a value per node.
+  EXPECT_THROW(ClosureTable("p_theta", phi, "", {}, "restitution", e, std::vector<double>(6, 1.0)), Error);
+  EXPECT_THROW(ClosureTable("p_theta", phi, "volume_share", x, "restitution", e, std::vector<double>(9, 1.0)), Error);
+  // Its JSON form carries the third axis, and a table without one keeps the hash it had.
+  const grainbridge::core::LoadedClosureTable loaded{"mix", "key", "", 0.0, table, {}};
+  const auto back = grainbridge::core::loadedClosureTableFromJson(nlohmann::json(loaded));
+  EXPECT_EQ(back.table.thirds(), e);
+  EXPECT_DOUBLE_EQ(back.table(0.15, 0.3, 0.93).value, table(0.15, 0.3, 0.93).value);
+  const ClosureTable plain("p_theta", phi, "volume_share", x, std::vector<double>(values.begin(), values.begin() + 9));
+  EXPECT_EQ(nlohmann::json(grainbridge::core::LoadedClosureTable{"m", "k", "", 0.0, plain, {}}).count("thirds"), 0u);
 }

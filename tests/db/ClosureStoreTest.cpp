@@ -163,6 +163,44 @@ TEST(ClosureStore, AClosureTableLoadsIntoCoreClosureTableNewestFirst) {
               HasSubstr("2 values for a 3 x 2 grid"));
 }
 
+// A mixture species' table of three axes (issue 60) is stored with its third and comes back
+// whole; its nodes name their third value.
+TEST(ClosureStore, ATableOfThreeAxesKeepsItsThirdAxis) {
+  TempDir dir;
+  Database db = Database::open(dir / "gb.sqlite");
+  const auto run = newRun(db, "k1");
+  std::vector<double> values;
+  for (int k = 0; k < 2 * 2 * 3; ++k) values.push_back(1.0 + k);
+  const json table = {{"name", "pair_small"},
+                      {"quantity", "p_theta"},
+                      {"second_variable", "volume_share"},
+                      {"solid_fractions", {0.1, 0.2, 0.3}},
+                      {"seconds", {0.25, 0.75}},
+                      {"third_variable", "restitution"},
+                      {"thirds", {0.9, 0.97}},
+                      {"values", values},
+                      {"uncertainties", std::vector<double>(12, 0.1)}};
+  db.transaction([&](Database& d) { ClosureStore(d).insertRecords(run, {{"closure_tables", {table}}}); });
+  ClosureStore store(db);
+  const auto loaded = store.loadTable("pair_small", "p_theta");
+  ASSERT_TRUE(loaded.table.threeDimensional());
+  EXPECT_EQ(loaded.table.thirdVariable(), "restitution");
+  EXPECT_EQ(loaded.table.thirds(), (std::vector<double>{0.9, 0.97}));
+  // values[(iz * 2 + iy) * 3 + ix]: (0.2, 0.75, 0.97) is node (1, 1, 1), value 1 + 10.
+  EXPECT_DOUBLE_EQ(loaded.table(0.2, 0.75, 0.97).value, 11.0);
+  const auto nodes = store.tableNodes({});
+  ASSERT_EQ(nodes.size(), 12u);
+  EXPECT_EQ(nodes[10]["third_variable"], "restitution");
+  EXPECT_DOUBLE_EQ(nodes[10]["third"].get<double>(), 0.97);
+  EXPECT_DOUBLE_EQ(nodes[10]["second"].get<double>(), 0.75);
+  EXPECT_DOUBLE_EQ(nodes[10]["solid_fraction"].get<double>(), 0.2);
+  EXPECT_DOUBLE_EQ(nodes[10]["value"].get<double>(), 11.0);
+  json malformed = table;
+  malformed["values"] = std::vector<double>(6, 1.0);
+  EXPECT_THAT(errorOf([&] { store.insertRecords(run, {{"closure_tables", {malformed}}}); }),
+              HasSubstr("6 values for a 3 x 2 x 2 grid"));
+}
+
 json rheologyRow(std::optional<double> restitution, double muS) {
   json row = {{"name", "dense"},
               {"family", "simple_shear"},

@@ -25,6 +25,11 @@ TabulateStage::TabulateStage() {
                .options({"", "restitution", "volume_share"})
                .doc("second axis of the tables; \"\" for tables in solid fraction only; volume_share (the "
                     "species' share x of the solids volume) with `species`"))
+      .add(ParamSpec::string("third_variable")
+               .options({"restitution"})
+               .doc("a third axis (issue 60): restitution, for a species' table over (total solid fraction, "
+                    "volume_share, restitution); the points of every restitution then enter, without the "
+                    "`restitution` filter (absent: no third axis)"))
       .add(ParamSpec::string("species").defaultValue("").doc(
           "a mixture's species (its name in the frames): tables of that species' closure points "
           "against the mixture's total solid fraction (issue 60); \"\" for the mixture's or one "
@@ -82,6 +87,17 @@ void TabulateStage::checkParams(const json& p, const std::string& ptr, core::jso
   if (p.at("second_variable") == "volume_share" && p.at("species").get<std::string>().empty()) {
     d.add(ptr + "/second_variable", "volume_share is a species' share of a mixture: give `species` too");
   }
+  const std::string third = p.value("third_variable", std::string());
+  if (!third.empty()) {
+    if (p.at("second_variable") == "" || p.at("second_variable") == third) {
+      d.add(ptr + "/third_variable", "a third axis needs a second one of another variable (second_variable is \"" +
+                                         p.at("second_variable").get<std::string>() + "\")");
+    }
+    if (p.contains(third)) {
+      d.add(ptr + "/" + third, "the table's third axis is " + third + ": its points are of every " + third +
+                                   ", not filtered by one");
+    }
+  }
 }
 
 void TabulateStage::checkAgainstUpstream(const json& /*p*/, const std::string& ptr,
@@ -95,6 +111,7 @@ void TabulateStage::run(StageContext& ctx) const {
   const json& p = ctx.params();
   const std::string name = p.at("table");
   const std::string second = p.at("second_variable");
+  const std::string third = p.value("third_variable", std::string());
   const std::string species = p.at("species");
   std::vector<json> points;
   for (const auto& up : ctx.inputs()) {
@@ -169,29 +186,41 @@ void TabulateStage::run(StageContext& ctx) const {
                 std::to_string(friction));
   }
 
-  std::vector<double> xs, ys;
+  std::vector<double> xs, ys, zs;
   for (const auto& pt : points) {
     xs.push_back(pt.at("solid_fraction"));
-    if (!second.empty()) {
-      if (!pt.contains(second))
+    for (const auto& [variable, values] : {std::pair{&second, &ys}, std::pair{&third, &zs}}) {
+      if (variable->empty()) continue;
+      if (!pt.contains(*variable))
         throw Error("tabulate: a closure point (" + pt["__key"].get<std::string>().substr(0, 12) + ") has no " +
-                    second);
-      ys.push_back(pt.at(second));
+                    *variable);
+      values->push_back(pt.at(*variable));
     }
   }
   const double tolerance = species.empty() ? kNodeTolerance : kMixtureNodeTolerance;
   const auto xAxis = distinct(xs, tolerance);
   const auto yAxis = second.empty() ? std::vector<double>{} : distinct(ys, tolerance);
-  const std::size_t rows = std::max<std::size_t>(1, yAxis.size());
+  const auto zAxis = third.empty() ? std::vector<double>{} : distinct(zs, tolerance);
+  const std::size_t ny = std::max<std::size_t>(1, yAxis.size());
+  const std::size_t rows = ny * std::max<std::size_t>(1, zAxis.size());
   std::vector<const json*> node(xAxis.size() * rows, nullptr);
+  // The state of node k, for messages: values[(iz * ny + iy) * nx + ix].
+  const auto state = [&](std::size_t k) {
+    std::ostringstream out;
+    out << "solid fraction " << xAxis[k % xAxis.size()];
+    if (!second.empty()) out << ", " << second << " " << yAxis[(k / xAxis.size()) % ny];
+    if (!third.empty()) out << ", " << third << " " << zAxis[k / (xAxis.size() * ny)];
+    return out.str();
+  };
   for (const auto& pt : points) {
     const std::size_t ix = indexOf(xAxis, pt.at("solid_fraction"), tolerance);
     const std::size_t iy = second.empty() ? 0 : indexOf(yAxis, pt.at(second), tolerance);
-    auto& slot = node[iy * xAxis.size() + ix];
+    const std::size_t iz = third.empty() ? 0 : indexOf(zAxis, pt.at(third), tolerance);
+    const std::size_t k = (iz * ny + iy) * xAxis.size() + ix;
+    auto& slot = node[k];
     if (slot != nullptr) {
       std::ostringstream msg;
-      msg << "tabulate: two closure points at solid fraction " << xAxis[ix];
-      if (!second.empty()) msg << ", " << second << " " << yAxis[iy];
+      msg << "tabulate: two closure points at " << state(k);
       msg << " (from extract instances " << (*slot)["__key"].get<std::string>().substr(0, 12) << " and "
           << pt["__key"].get<std::string>().substr(0, 12) << ")";
       throw Error(msg.str());
@@ -201,22 +230,24 @@ void TabulateStage::run(StageContext& ctx) const {
   for (std::size_t k = 0; k < node.size(); ++k) {
     if (node[k] == nullptr) {
       std::ostringstream msg;
-      msg << "tabulate: no closure point at solid fraction " << xAxis[k % xAxis.size()];
-      if (!second.empty()) msg << ", " << second << " " << yAxis[k / xAxis.size()];
-      msg << ": the table needs every combination of the " << xAxis.size() << " solid fractions"
-          << (second.empty() ? "" : " and " + std::to_string(yAxis.size()) + " " + second + "s");
+      msg << "tabulate: no closure point at " << state(k) << ": the table needs every combination of the "
+          << xAxis.size() << " solid fractions"
+          << (second.empty() ? "" : ", " + std::to_string(yAxis.size()) + " " + second + "s")
+          << (third.empty() ? "" : " and " + std::to_string(zAxis.size()) + " " + third + "s");
       throw Error(msg.str());
     }
   }
 
   std::ostringstream csv;
   csv.precision(std::numeric_limits<double>::max_digits10);  // full precision: a CSV is read back by programs
-  csv << "table,quantity,solid_fraction," << (second.empty() ? "second" : second) << ",value,uncertainty\n";
+  csv << "table,quantity,solid_fraction," << (second.empty() ? "second" : second) << (third.empty() ? "" : "," + third)
+      << ",value,uncertainty\n";
   json summary = {{"table", name},
                   {"friction", friction},
                   {"solid_fractions", xAxis.size()},
-                  {"rows", rows},
+                  {"rows", ny},
                   {"ordered_points_left_out", excluded.size()}};
+  if (!third.empty()) summary[third + "_values"] = zAxis.size();
   json filters = {{"friction", friction}};
   if (!species.empty()) filters["species"] = species;
   if (p.contains("restitution")) filters["restitution"] = p.at("restitution");
@@ -253,19 +284,26 @@ void TabulateStage::run(StageContext& ctx) const {
       if (any) correlations[other] = r;
     }
     // Building the table checks it (axes, finite values) before it reaches the database.
-    core::ClosureTable table(q, xAxis, second, yAxis, values);
-    ctx.addRecord("closure_tables", {{"name", name},
-                                     {"quantity", q},
-                                     {"second_variable", second},
-                                     {"solid_fractions", xAxis},
-                                     {"seconds", yAxis},
-                                     {"values", values},
-                                     {"uncertainties", errors},
-                                     {"correlations", correlations},
-                                     {"filters", filters}});
+    core::ClosureTable table(q, xAxis, second, yAxis, third, zAxis, values);
+    json record = {{"name", name},
+                   {"quantity", q},
+                   {"second_variable", second},
+                   {"solid_fractions", xAxis},
+                   {"seconds", yAxis},
+                   {"values", values},
+                   {"uncertainties", errors},
+                   {"correlations", correlations},
+                   {"filters", filters}};
+    if (!third.empty()) {
+      record["third_variable"] = third;
+      record["thirds"] = zAxis;
+    }
+    ctx.addRecord("closure_tables", record);
     for (std::size_t k = 0; k < node.size(); ++k) {
       csv << name << ',' << q << ',' << xAxis[k % xAxis.size()] << ','
-          << (second.empty() ? 0.0 : yAxis[k / xAxis.size()]) << ',' << values[k] << ',' << errors[k] << '\n';
+          << (second.empty() ? 0.0 : yAxis[(k / xAxis.size()) % ny]);
+      if (!third.empty()) csv << ',' << zAxis[k / (xAxis.size() * ny)];
+      csv << ',' << values[k] << ',' << errors[k] << '\n';
     }
     quantities.push_back(q);
   }
