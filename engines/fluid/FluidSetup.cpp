@@ -73,7 +73,7 @@ core::data::GridGeometry FluidSetup::geometry() const {
   return g;
 }
 
-std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, double packedFraction) const {
+std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, const PackedFraction& packedFraction) const {
   std::vector<SetupProblem> out;
   auto add = [&out](std::string pointer, std::string message) {
     out.push_back({std::move(pointer), std::move(message)});
@@ -168,12 +168,17 @@ std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, double 
       add(at + "/solids_inflow", "a " + b.kind + " lets no solids in: feed them through a velocity_inlet");
     const std::vector<PhaseInflow> phases = inflow(b, side, solidsPhases);
     double solids = 0.0;
-    for (std::size_t m = 1; m < phases.size(); ++m) solids += phases[m].fraction;
-    if (solids > packedFraction) {
+    std::vector<double> fractions;
+    for (std::size_t m = 1; m < phases.size(); ++m) {
+      solids += phases[m].fraction;
+      fractions.push_back(phases[m].fraction);
+    }
+    if (const double packed = packedFraction(fractions); solids > packed) {
       add(at + "/solids_fractions", "the solids fractions add up to " + core::humanNumber(solids) +
-                                        ", above the packed solids fraction " + core::humanNumber(packedFraction) +
-                                        " (eps_s,max: raise packed_solids_fraction, whose default is 1 - "
-                                        "critical_void_fraction, or feed less)");
+                                        ", above the packed solids fraction " + core::humanNumber(packed) +
+                                        " (eps_s,max of this feed's composition: packed_solids_fraction, by default 1 - "
+                                        "critical_void_fraction, or under a packing_limit by composition from the "
+                                        "phases' max_packing; feed less)");
     }
     if (*kind == BoundaryKind::VelocityInlet && fixedStep) {
       for (std::size_t m = 0; m < phases.size(); ++m) {

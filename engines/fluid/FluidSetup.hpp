@@ -8,8 +8,10 @@
 // each rule once, here.
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -54,12 +56,20 @@ struct FluidSetup {
   // Cells of lengths / cells from the origin.
   [[nodiscard]] core::data::GridGeometry geometry() const;
 
+  // The most solids a state of these solids fractions (one per phase) may hold: eps_s,max, one
+  // value for every composition, or each composition's own (a packing limit by composition).
+  using PackedFraction = std::function<double(std::span<const double> solidsFractions)>;
+
   // Every reason this set-up cannot run `solidsPhases` solids phases packing at most
-  // `packedFraction`: a grid without cells or extent, the time step's limits, a patch on a side the
+  // `packedFraction` of an inflow's composition: a grid without cells or extent, the time step's limits, a patch on a side the
   // grid lacks, off its side or off the cell faces, with from without to, with fraction or speed
   // lists of another length than the phases, with more solids than packed, an inlet faster than
   // the Courant limit of a fixed step (dt_min = dt_max), patches that overlap. Empty when it can run.
-  [[nodiscard]] std::vector<SetupProblem> problems(std::size_t solidsPhases, double packedFraction) const;
+  [[nodiscard]] std::vector<SetupProblem> problems(std::size_t solidsPhases, const PackedFraction& packedFraction) const;
+  // The same with one packed fraction for every composition.
+  [[nodiscard]] std::vector<SetupProblem> problems(std::size_t solidsPhases, double packedFraction) const {
+    return problems(solidsPhases, [packedFraction](std::span<const double>) { return packedFraction; });
+  }
 
   // The patches in the grid's terms: cell ranges and each phase's inflow (the gas first), normal
   // velocities pointing into the domain. Assumes problems() is empty.

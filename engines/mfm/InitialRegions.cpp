@@ -128,7 +128,8 @@ std::optional<core::engine::SetupProblem> emptyRegionProblem(const InitialRegion
 }  // namespace
 
 std::vector<core::engine::SetupProblem> InitialState::problems(const core::data::GridGeometry& domain,
-                                                               std::size_t solidsPhases, double packedFraction) const {
+                                                               std::size_t solidsPhases,
+                                                               const fluid::FluidSetup::PackedFraction& packedFraction) const {
   std::vector<core::engine::SetupProblem> out;
   for (std::size_t k = 0; k < regions.size(); ++k) {
     const InitialRegion& r = regions[k];
@@ -139,10 +140,11 @@ std::vector<core::engine::SetupProblem> InitialState::problems(const core::data:
     } else {
       double solids = 0.0;
       for (const double f : r.solidsFractions) solids += f;
-      if (solids > packedFraction + 1e-12) {
+      if (const double packed = packedFraction(r.solidsFractions); solids > packed + 1e-12) {
         out.push_back({at + "/solids_fractions",
                        "the solids fractions add up to " + core::humanNumber(solids) +
-                           ", above the packed solids fraction eps_s,max = " + core::humanNumber(packedFraction)});
+                           ", above the packed solids fraction of this composition eps_s,max = " +
+                           core::humanNumber(packed)});
       }
     }
     // Inside the domain along every axis, to round-off: a box past a side would start the run

@@ -14,6 +14,7 @@
 #include "core/Types.hpp"
 #include "core/data/FieldFrame.hpp"
 #include "core/engine/SetupProblem.hpp"
+#include "engines/fluid/FluidSetup.hpp"
 #include "engines/mfm/MultiFluidEngine.hpp"
 
 namespace grainbridge::mfm {
@@ -36,8 +37,14 @@ struct InitialState {
   // above the packed fraction, a box partly outside the domain (a 2D grid's z against its depth),
   // a box that holds no cell centre (lo above hi, lo = hi, or between two centres).
   // Empty when the run can start.
+  [[nodiscard]] std::vector<core::engine::SetupProblem> problems(
+      const core::data::GridGeometry& domain, std::size_t solidsPhases,
+      const fluid::FluidSetup::PackedFraction& packedFraction) const;
+  // The same with one packed fraction for every composition.
   [[nodiscard]] std::vector<core::engine::SetupProblem> problems(const core::data::GridGeometry& domain,
-                                                                 std::size_t solidsPhases, double packedFraction) const;
+                                                                 std::size_t solidsPhases, double packedFraction) const {
+    return problems(domain, solidsPhases, [packedFraction](std::span<const double>) { return packedFraction; });
+  }
 };
 
 // The JSON form uses the `mfm` stage's keys: regions (lo, hi, solids_fractions, gas_velocity,

@@ -121,7 +121,7 @@ void from_json(const json& p, MultiFluidSetup& s) {
   settings.fractionSolve = fluid::linearSolveFromJson(p, "fraction");
   s.interval = p.at("output_interval");
   // The patches in the grid's terms, when the fluid set-up can make them (problems() says why not).
-  if (s.fluid.problems(M, packed).empty()) s.patches = s.fluid.patches(M);
+  if (s.fluid.problems(M, s.packedFraction()).empty()) s.patches = s.fluid.patches(M);
 }
 
 std::vector<SetupProblem> MultiFluidSetup::problems() const {
@@ -191,8 +191,29 @@ std::vector<SetupProblem> MultiFluidSetup::problems() const {
   }
   // Boundaries (sides, jets on cell faces, inflow states, a fixed step's CFL limit) and the time
   // step, checked by the fluid set-up.
-  for (auto& why : fluid.problems(M, settings.packedFraction)) found.push_back(std::move(why));
+  for (auto& why : fluid.problems(M, packedFraction())) found.push_back(std::move(why));
   return found;
+}
+
+fluid::FluidSetup::PackedFraction MultiFluidSetup::packedFraction() const {
+  const double packed = settings.packedFraction;
+  if (model.packingLimit == closures::PackingLimit::Fixed || model.solids.size() < 2) {
+    return [packed](std::span<const double>) { return packed; };
+  }
+  std::vector<double> diameters, maxPackings;
+  for (const auto& phase : model.solids) {
+    diameters.push_back(phase.diameter);
+    maxPackings.push_back(phase.maxPacking);
+  }
+  std::shared_ptr<const closures::MixturePacking> packing;
+  try {
+    packing = std::make_shared<closures::MixturePacking>(model.packingLimit, model.plastic.params.criticalVoidFraction,
+                                                         std::move(diameters), std::move(maxPackings));
+  } catch (const Error&) {
+    // The packing's own keys are at fault (problems() says which): the one packed fraction.
+    return [packed](std::span<const double>) { return packed; };
+  }
+  return [packing](std::span<const double> fractions) { return 1.0 - packing->criticalVoidFraction(fractions); };
 }
 
 std::vector<SetupProblem> useClosureTables(MultiFluidSetup& s, const std::vector<core::LoadedClosureTable>& tables) {

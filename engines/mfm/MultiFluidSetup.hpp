@@ -61,6 +61,11 @@ struct MultiFluidSetup {
   // Every reason the engine cannot start, at the pointer of the `mfm` key at fault; empty when it
   // can. The closure tables and the rheology are checked when they are read (below).
   [[nodiscard]] std::vector<SetupProblem> problems() const;
+  // eps_s,max of a state of these solids fractions: 1 - eps_g* of its composition under a packing
+  // limit by composition (MixturePacking), else the one packed fraction (Eq. 3.68's eps_p).
+  // What a feed or an initial region may hold; the one packed fraction where the packing's keys are
+  // at fault (problems() names them).
+  [[nodiscard]] fluid::FluidSetup::PackedFraction packedFraction() const;
 };
 
 // The set-up from the `mfm` stage's resolved params (SI); assumes each key passed its schema.

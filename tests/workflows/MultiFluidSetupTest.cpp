@@ -9,6 +9,8 @@
 
 #include "core/json/Diagnostics.hpp"
 #include "core/units/UnitSystem.hpp"
+#include "engines/closures/MixturePacking.hpp"
+#include "engines/mfm/InitialRegions.hpp"
 #include "engines/mfm/MultiFluidModel.hpp"
 #include "engines/mfm/MultiFluidSetup.hpp"
 #include "tests/support/Cli.hpp"
@@ -132,4 +134,30 @@ TEST(MultiFluidSetup, APackingLimitByCompositionRefusesOneFixedPackedFractionAnd
                                       {"mixture_kinetic_theory", "per_phase"}})
                              .get<mfm::MultiFluidSetup>();
   EXPECT_EQ(pointersOf(algebraic.problems()), std::vector<std::string>{"/mixture_kinetic_theory"});
+}
+
+// What a feed or an initial region may hold follows the packing limit: under one by composition a
+// 50/50 Goldschmidt state packs denser than either phase alone (Yu-Standish: eps_g* about 0.385
+// against 0.4 at max_packing 0.6), so a region of 0.61 starts there and is refused under the fixed
+// limit (1 - 0.417), naming its composition's eps_s,max.
+TEST(MultiFluidSetup, AFeedOrRegionMayHoldWhatItsCompositionPacks) {
+  const json dense = {{"regions", {{{"lo", {0, 0, 0}}, {"hi", {0.15, 0.15, 0.015}}, {"solids_fractions", {0.305, 0.305}}}}}};
+  json byComposition = dense;
+  byComposition["packing_limit"] = "yu_standish";
+  const json mixedParams = resolvedBed(byComposition);
+  const auto mixed = mixedParams.get<mfm::MultiFluidSetup>();
+  ASSERT_TRUE(mixed.problems().empty()) << pointersOf(mixed.problems()).front();
+  const auto packedOf = mixed.packedFraction();
+  const std::vector<double> half{0.3, 0.3}, pure{0.6, 0.0};
+  const closures::MixturePacking packing(closures::PackingLimit::YuStandish, 0.417, {1.52e-3, 2.49e-3}, {0.6, 0.6});
+  EXPECT_DOUBLE_EQ(packedOf(half), 1.0 - packing.criticalVoidFraction(half));
+  EXPECT_GT(packedOf(half), 0.61);
+  EXPECT_DOUBLE_EQ(packedOf(pure), 0.6);  // one phase alone: its max_packing
+  EXPECT_TRUE(mixedParams.get<mfm::InitialState>().problems(mixed.geometry, 2, packedOf).empty());
+  // The fixed limit: one eps_s,max, 1 - critical_void_fraction, for every composition.
+  const json fixedParams = resolvedBed(dense);
+  const auto fixed = fixedParams.get<mfm::MultiFluidSetup>();
+  EXPECT_DOUBLE_EQ(fixed.packedFraction()(half), 1.0 - 0.417);
+  const auto refused = fixedParams.get<mfm::InitialState>().problems(fixed.geometry, 2, fixed.packedFraction());
+  EXPECT_EQ(pointersOf(refused), std::vector<std::string>{"/regions/0/solids_fractions"});
 }

@@ -70,7 +70,7 @@ MfmSetup makeMfmSetup(const json& p, const std::vector<core::LoadedClosureTable>
   s.schedule = readSchedule(p, problems);
   const std::size_t M = s.engine.model.solids.size();
   s.initial = p.get<mfm::InitialState>();
-  append(problems, s.initial.problems(s.engine.geometry, M, s.engine.settings.packedFraction));
+  append(problems, s.initial.problems(s.engine.geometry, M, s.engine.packedFraction()));
 
   // Pressure taps, heights along gravity. A 2D grid's vertical lies in x-y: gravity out of the
   // plane would act on no solved velocity, and would make the grid's depth the taps' "height".
