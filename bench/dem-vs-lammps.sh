@@ -9,20 +9,22 @@
 # Builds nothing: it uses build-release/bin/grainbridge (scripts/quickstart.sh builds it) or
 # $GRAINBRIDGE. Installs Debian's lammps package if missing (bench/lammps/run-lammps-reference.sh).
 #
-# Then a dilute sheared box, closure-sweep style (bench/lammps/in.shear-gas): 2,000 spheres at
-# solid fraction 0.15 in a periodic cube, no gravity, the same contact law, sheared at rate 1
-# (d = m = 1 units) for 20,000 steps: LAMMPS with fix deform xy erate, remap v; grainbridge with
-# its Lees-Edwards boundaries (shear_rate). Both read the same LAMMPS-prepared gas.
+# Then two dilute sheared boxes, closure-sweep style (bench/lammps/in.shear-gas): 2,000 spheres in
+# a periodic cube, no gravity, the same contact law, sheared at rate 1 (d = m = 1 units) for
+# 20,000 steps: LAMMPS with fix deform xy erate, remap v; grainbridge with its Lees-Edwards
+# boundaries (shear_rate). Both read the same LAMMPS-prepared gas. One at solid fraction 0.15
+# with friction 0.5, one at 0.05 frictionless (mu 0), as the closure loop's dilute boxes (issue 59).
 #
-# Usage: bench/dem-vs-lammps.sh [--runs N] [--scaling]
+# Usage: bench/dem-vs-lammps.sh [--runs N] [--scaling]     (N: 5 by default; issue 33 found 3 too few)
 #   --scaling  also times 5,000 (n 25, nz 8) and 80,000 (n 50, nz 32) beds, settled the same way,
 #              and says for each engine whether its rate is flat: rate(80k) >= 0.85 x rate(5k).
-# Last two lines: `dilute sheared box: ratio grainbridge/lammps = Y`, then
-#                 `ratio grainbridge/lammps = X`   (particle-steps per second, the 20,000 bed)
+# Last three lines: `dilute frictionless box (phi 0.05): ratio grainbridge/lammps = Z`,
+#                   `dilute sheared box: ratio grainbridge/lammps = Y` (phi 0.15, mu 0.5), then
+#                   `ratio grainbridge/lammps = X`   (particle-steps per second, the 20,000 bed)
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-runs=3
+runs=5
 scaling=0
 while (($#)); do
   case "$1" in
@@ -97,23 +99,26 @@ JSON
 
 # time_gas: prepare (or find) the sheared gas's start, time both engines on it `runs` times,
 # interleaved, and leave the medians in $work/gas.{gb,lmp}.
+# time_gas PHI MU TAG: time both engines on the 2,000-sphere gas at solid fraction PHI and
+# friction MU, `runs` times, interleaved; medians in $work/TAG.{gb,lmp}.
 time_gas() {
-  local lmp="" c datafile L r log lr gr line glog
+  local phi=$1 mu=$2 tag=$3 lmp="" c datafile L r log lr gr line glog
   # The names run-lammps-reference.sh looks for; the dense bed, timed first, installed the package.
   for c in lmp lmp_serial lmp_mpi lmp_stable; do
     if command -v "$c" > /dev/null 2>&1; then lmp=$(command -v "$c"); break; fi
   done
   [[ -n "$lmp" ]] || { echo "no LAMMPS binary (lmp, lmp_serial, lmp_mpi, lmp_stable)" >&2; exit 1; }
-  datafile="$repo/bench/lammps/.cache/gas-n2000-phi0.15.data"
-  mkdir -p "$(dirname "$datafile")" "$work/gas"
+  datafile="$repo/bench/lammps/.cache/gas-n2000-phi$phi.data"
+  mkdir -p "$(dirname "$datafile")" "$work/$tag"
   if [[ ! -s "$datafile" ]]; then
-    (cd "$work/gas" && OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+    (cd "$work/$tag" && OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
       "$lmp" -in "$repo/bench/lammps/in.shear-gas" -var prepare 1 -var datafile "$datafile.partial" \
-      -screen none -log prepare.log) || { echo "preparing the gas failed: $work/gas/prepare.log" >&2; exit 1; }
+      -var phi "$phi" -screen none -log prepare.log) ||
+      { echo "preparing the gas failed: $work/$tag/prepare.log" >&2; exit 1; }
     mv "$datafile.partial" "$datafile"
   fi
   L=$(awk '/xlo xhi/ {print $2; exit}' "$datafile")
-  cat > "$work/gas/bench.json" <<JSON
+  cat > "$work/$tag/bench.json" <<JSON
 {
   "name": "bench-sheared-gas",
   "stages": {
@@ -124,32 +129,33 @@ time_gas() {
       "species": [{"name": "grain", "diameter": 1, "density": 1.909859317102744}],
       "lammps_data": "$datafile",
       "lammps_types": [{"type": 1, "species": "grain"}],
-      "contact": {"kn": 2e5, "kt": 57142.857142857145, "gamma_n": $gn, "gamma_t": $gt, "mu": 0.5}}}
+      "contact": {"kn": 2e5, "kt": 57142.857142857145, "gamma_n": $gn, "gamma_t": $gt, "mu": $mu}}}
   }
 }
 JSON
-  : > "$work/gas.gb.rates"; : > "$work/gas.lmp.rates"
-  echo "dilute sheared box, 2000 spheres at solid fraction 0.15: $datafile"
+  : > "$work/$tag.gb.rates"; : > "$work/$tag.lmp.rates"
+  echo "dilute sheared box, 2000 spheres at solid fraction $phi, friction $mu: $datafile"
   for ((r = 1; r <= runs; r++)); do
-    log="$work/gas/timed-$r.log"
-    (cd "$work/gas" && OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 taskset -c "$core" \
-      "$lmp" -in "$repo/bench/lammps/in.shear-gas" -var datafile "$datafile" -screen none -log "$log") ||
+    log="$work/$tag/timed-$r.log"
+    (cd "$work/$tag" && OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 taskset -c "$core" \
+      "$lmp" -in "$repo/bench/lammps/in.shear-gas" -var datafile "$datafile" -var phi "$phi" -var mu "$mu" \
+      -screen none -log "$log") ||
       { echo "LAMMPS sheared gas failed: $log" >&2; exit 1; }
     # "Loop time of 2.9 on 1 procs for 20000 steps with 2000 atoms"
     lr=$(awk '/^Loop time of/ {printf "%.6g", $12 * $9 / $4; exit}' "$log")
-    echo "$lr" >> "$work/gas.lmp.rates"
+    echo "$lr" >> "$work/$tag.lmp.rates"
     # The whole log first: grep -m1 in the pipe would close it early, and pipefail would see
     # grainbridge die of SIGPIPE.
-    glog=$(cd "$work/gas" && OMP_NUM_THREADS=1 taskset -c "$core" "$gb" run bench.json --force 2>&1) ||
+    glog=$(cd "$work/$tag" && OMP_NUM_THREADS=1 taskset -c "$core" "$gb" run bench.json --force 2>&1) ||
       { echo "$glog" >&2; echo "grainbridge sheared gas failed" >&2; exit 1; }
     line=$(grep -m1 'particle-steps/s' <<<"$glog") || { echo "$glog" >&2; exit 1; }
     gr=$(sed -E 's/.*s: ([0-9.e+]+) particle-steps\/s.*/\1/' <<<"$line")
-    echo "$gr" >> "$work/gas.gb.rates"
+    echo "$gr" >> "$work/$tag.gb.rates"
     echo "  run $r: lammps $lr particle-steps/s, grainbridge $gr particle-steps/s"
   done
-  median < "$work/gas.lmp.rates" > "$work/gas.lmp"
-  median < "$work/gas.gb.rates" > "$work/gas.gb"
-  echo "  lammps median: $(cat "$work/gas.lmp") particle-steps/s; grainbridge median: $(cat "$work/gas.gb") particle-steps/s"
+  median < "$work/$tag.lmp.rates" > "$work/$tag.lmp"
+  median < "$work/$tag.gb.rates" > "$work/$tag.gb"
+  echo "  lammps median: $(cat "$work/$tag.lmp") particle-steps/s; grainbridge median: $(cat "$work/$tag.gb") particle-steps/s"
 }
 
 echo "machine: $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
@@ -175,6 +181,9 @@ if ((scaling)); then
     }'
   done
 fi
-time_gas
+time_gas 0.15 0.5 gas
+time_gas 0.05 0 gas005
+awk -v g="$(cat "$work/gas005.gb")" -v l="$(cat "$work/gas005.lmp")" \
+  'BEGIN {printf "dilute frictionless box (phi 0.05): ratio grainbridge/lammps = %.3f\n", g / l}'
 awk -v g="$(cat "$work/gas.gb")" -v l="$(cat "$work/gas.lmp")" 'BEGIN {printf "dilute sheared box: ratio grainbridge/lammps = %.3f\n", g / l}'
 awk -v g="$(cat "$work/25-32.gb")" -v l="$(cat "$work/25-32.lmp")" 'BEGIN {printf "ratio grainbridge/lammps = %.3f\n", g / l}'
