@@ -297,6 +297,12 @@ void DemStage::checkParams(const json& p, const std::string& ptr, core::json::Di
     const std::string where = ptr + "/compression";
     if (p.contains("preparation")) d.add(where, "compression and a preparation exclude each other");
     if (fromFile) d.add(where, "compression starts from inserted grains, not from lammps_data or initial_frame");
+    if (!(p["compression"].at("duration").get<double>() < p.at("duration").get<double>())) {
+      d.add(where + "/duration", "the compression takes " +
+                                     core::humanNumber(p["compression"].at("duration").get<double>()) +
+                                     " s of a run of " + core::humanNumber(p.at("duration").get<double>()) +
+                                     " s: it must end before the run does, or no frame is of the held box");
+    }
     const double from = p["compression"].at("from_solid_fraction");
     const double held = speciesSolidFraction(p);
     if (!(from > 0.0)) {
