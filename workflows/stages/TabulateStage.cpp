@@ -232,7 +232,7 @@ void TabulateStage::run(StageContext& ctx) const {
       std::ostringstream msg;
       msg << "tabulate: no closure point at " << state(k) << ": the table needs every combination of the "
           << xAxis.size() << " solid fractions"
-          << (second.empty() ? "" : ", " + std::to_string(yAxis.size()) + " " + second + "s")
+          << (second.empty() ? "" : (third.empty() ? " and " : ", ") + std::to_string(yAxis.size()) + " " + second + "s")
           << (third.empty() ? "" : " and " + std::to_string(zAxis.size()) + " " + third + "s");
       throw Error(msg.str());
     }
