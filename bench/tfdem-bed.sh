@@ -3,7 +3,9 @@
 # bench/tfdem-goldschmidt.sh): its `bed` stage alone, settled for --settle seconds without the gas
 # (not timed), then --duration simulated seconds with the gas (timed: the stage's own timing of
 # its run phase), on one core, no frames. Prints particle-steps per second and gas steps per
-# second, and last the wall time per simulated second.
+# second, then the settling's own timing (the same bed's DEM without the gas: issue 59) and
+# `tfdem_over_dem = X` (wall time per simulated second with the gas over without), and last the
+# wall time per simulated second.
 #
 # Builds nothing: it uses build-release/bin/grainbridge (scripts/quickstart.sh builds it) or
 # $GRAINBRIDGE.
@@ -61,9 +63,9 @@ duration=$(cat "$work/bench.json.duration")
 (cd "$work" && taskset -c "$core" "$gb" run bench.json > run.log 2>&1) || { cat "$work/run.log" >&2; exit 1; }
 # The run phase's line: "bed: <DEM steps> DEM steps of <particles> particles in <T> s: <rate> ...",
 # and the stage's "bed: gas step <s> s = <n> DEM steps".
-python3 - "$work/run.log" "$duration" "$work/bench.json" <<'PY'
-import json, re, sys
-log, duration = open(sys.argv[1]).read(), float(sys.argv[2])
+python3 - "$work/run.log" "$duration" "$settle" <<'PY'
+import re, sys
+log, duration, settle = open(sys.argv[1]).read(), float(sys.argv[2]), float(sys.argv[3])
 m = re.search(r"bed: (\d+) DEM steps of (\d+) particles in ([0-9.]+) s: ([0-9.e+]+) particle-steps/s, ([0-9.]+) gas iterations", log)
 g = re.search(r"bed: gas step \S+ s = (\d+) DEM steps", log)
 if not m or not g:
@@ -75,5 +77,13 @@ print(f"simulated: {duration:g} s; {steps} gas steps of {substeps} DEM steps of 
       f"{iterations:g} gas iterations per gas step")
 print(f"particle-steps per second: {dem_steps * particles / seconds:.4g}")
 print(f"gas steps per second: {steps / seconds:.4g}")
+# The settling phase is the same bed's DEM without the gas: "bed: settling: <n> DEM steps of <p>
+# particles in <T> s". A settled bed is packed, the run's fluidized: the contacts differ.
+s = re.search(r"bed: settling: (\d+) DEM steps of (\d+) particles in ([0-9.]+) s", log)
+if s and settle > 0:
+    settle_seconds = float(s.group(3))
+    print(f"DEM without the gas (the settling, {settle:g} s): {int(s.group(1)) * int(s.group(2)) / settle_seconds:.4g} "
+          f"particle-steps per second, {settle_seconds / settle:.2f} wall s per simulated s")
+    print(f"tfdem_over_dem = {(seconds / duration) / (settle_seconds / settle):.3f}")
 print(f"wall_seconds_per_simulated_second = {seconds / duration:.2f}")
 PY

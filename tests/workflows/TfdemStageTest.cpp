@@ -91,6 +91,8 @@ TEST_F(TfdemStage, WritesParticleAndGasFramesSeriesAndSummary) {
   // The throughput counts DEM steps of each particle: 400 gas steps of 10 DEM steps, 60 particles
   // (not the gas steps of 600 "particles").
   EXPECT_NE(r.output.find("bed: 4000 DEM steps of 60 particles in "), std::string::npos) << r.output;
+  // The settling is timed too (bench/tfdem-bed.sh's DEM without the gas): 0.15 s of 1.5e-5 s steps.
+  EXPECT_NE(r.output.find("bed: settling: 10000 DEM steps of 60 particles in "), std::string::npos) << r.output;
   const json summary = json::parse(readText(bed / "manifest.json")).at("summary");
   EXPECT_EQ(summary.at("particles").get<int>(), 60);
   // The clock restarted after settling: the settled bed lies on the floor, a layer or two of

@@ -21,6 +21,9 @@ struct Phase {
   std::string name;  // "run", "preparation (shaking)": for logs and progress
   std::int64_t steps = 0;
   bool output = false;  // frames (the initial one included), series rows, throughput log
+  // The throughput line for a phase without output too, named by the phase (TF-DEM's settling:
+  // the same bed's DEM without the gas, which bench/tfdem-bed.sh sets against the run).
+  bool timed = false;
   std::function<void()> enter;
   std::function<void()> configure;
   std::function<void()> leave;

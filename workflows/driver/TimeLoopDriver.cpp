@@ -121,16 +121,18 @@ void TimeLoopDriver::runPhase(core::engine::SteppedEngine& engine, std::size_t i
     }
   }
   if (progress) progress->finish();
-  if (phase.output) {
+  if (phase.output || phase.timed) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
     // The engine's own steps, each over all its work items: a multi-fluid output interval is many
     // solver steps, a TF-DEM gas step `substeps` DEM steps of every particle.
     const std::int64_t steps = engine.workSteps() - workStart;
     const double rate = static_cast<double>(steps) * static_cast<double>(engine.workItems()) / seconds;
     const std::string note = engine.throughputNote();
-    spdlog::info("{}: {} {}s of {} {}s in {:.3f} s: {} {}-steps/s{}", ctx_.stage(), steps, engine.workStep(),
-                 engine.workItems(), engine.workItem(), seconds, core::humanNumber(rate, 4), engine.workItem(),
-                 note.empty() ? "" : ", " + note);
+    // A timed phase without output names itself: "bed: settling: 33333 DEM steps of ...".
+    spdlog::info("{}: {}{} {}s of {} {}s in {:.3f} s: {} {}-steps/s{}", ctx_.stage(),
+                 phase.output ? "" : phase.name + ": ", steps, engine.workStep(), engine.workItems(),
+                 engine.workItem(), seconds, core::humanNumber(rate, 4), engine.workItem(),
+                 phase.output ? (note.empty() ? "" : ", " + note) : "");
   }
   if (phase.leave) phase.leave();
 }

@@ -197,6 +197,7 @@ void TfdemStage::run(StageContext& ctx) const {
     driver::Phase settling;
     settling.name = "settling";
     settling.steps = setup.settleSteps;
+    settling.timed = true;
     settling.configure = [&e] { e.setGasActive(false); };
     settling.leave = [&e, &setup, &ctx] {
       e.setGasActive(true);
