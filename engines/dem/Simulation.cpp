@@ -105,9 +105,9 @@ void Simulation::validateSetup() {
     double volume = 0.0;
     for (std::size_t i = 0; i < p_.nOwned; ++i) volume += 4.0 / 3.0 * M_PI * std::pow(p_.radius[i], 3);
     const Vec3 length = setup_.hi - setup_.lo;
-    compressionStartHighY_ = setup_.hi[1];
-    compressionTargetHighY_ = setup_.lo[1] + volume / (length[0] * length[2] * setup_.compression.solidFraction);
-    if (!(compressionTargetHighY_ < compressionStartHighY_)) {
+    compressionStartLength_ = length[1];
+    compressionTargetLength_ = volume / (length[0] * length[2] * setup_.compression.solidFraction);
+    if (!(compressionTargetLength_ < compressionStartLength_)) {
       throw Error("DEM: compression to solid fraction " + std::to_string(setup_.compression.solidFraction) +
                   ": the particles already fill " + std::to_string(volume / length.prod()) +
                   " of the box as configured, and compression only shrinks it (a larger box_hi along y)");
@@ -294,12 +294,12 @@ void Simulation::controlPressure() {
 
 void Simulation::compress() {
   const auto& c = setup_.compression;
-  if (step_ % c.interval != 0 || setup_.hi[1] == compressionTargetHighY_) return;
+  // Held: the last change set hi = lo + the target length, the same sum to the bit.
+  if (step_ % c.interval != 0 || setup_.hi[1] == setup_.lo[1] + compressionTargetLength_) return;
   // Linear in time; the last change lands on the target exactly (a fixed-volume box from then on).
   const double s = std::min(1.0, time_ / c.duration);
-  const double high = s < 1.0 ? compressionStartHighY_ + s * (compressionTargetHighY_ - compressionStartHighY_)
-                              : compressionTargetHighY_;
-  const double length = high - setup_.lo[1];
+  const double length =
+      s < 1.0 ? compressionStartLength_ + s * (compressionTargetLength_ - compressionStartLength_) : compressionTargetLength_;
   resizeAlongY(length / (setup_.hi[1] - setup_.lo[1]), length,
                "compression: its solid fraction packs these particles into a slab too thin for this box; use more "
                "particles or a box_hi longer along x and z");

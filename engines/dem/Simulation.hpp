@@ -175,9 +175,9 @@ class Simulation {
   // constant between box changes (both 0 without pressure control: the plain formula).
   double shearOffsetBase_ = 0.0;
   double shearOffsetTime_ = 0.0;
-  // Compression: the box's upper y as configured (the schedule's start) and as it is to end.
-  double compressionStartHighY_ = 0.0;
-  double compressionTargetHighY_ = 0.0;
+  // Compression: the box's length along y as configured (the schedule's start) and as it is to end.
+  double compressionStartLength_ = 0.0;
+  double compressionTargetLength_ = 0.0;
   double cutoff_ = 0.0;
   double time_ = 0.0;
   double buildTime_ = 0.0;

@@ -139,13 +139,17 @@ std::vector<double> diametersOf(const std::vector<SolidsPhase>& solids) {
 
 }  // namespace
 
+closures::MixturePacking mixturePackingOf(const MultiFluidParams& params) {
+  return {params.packingLimit, params.plastic.params.criticalVoidFraction, diametersOf(params.solids),
+          maxPackingsOf(params.solids)};
+}
+
 MultiFluidModel::MultiFluidModel(MultiFluidParams params)
     : params_(std::move(params)),
       dissipationScale_(params_.solids.size() + 1, 1.0),
       diameters_(diametersOf(params_.solids)),
       wallEffective_(params_.solids.size() + 1),
-      packing_(params_.packingLimit, params_.plastic.params.criticalVoidFraction, diameters_,
-               maxPackingsOf(params_.solids)) {
+      packing_(mixturePackingOf(params_)) {
   if (params_.granularEnergy == GranularEnergyForm::Algebraic && (params_.rotation || params_.wall)) {
     throw Error(
         "multi-fluid model: the rotation model and Johnson-Jackson walls need the granular-energy equation "

@@ -146,6 +146,10 @@ struct MultiFluidParams {
   double temperatureFloor = 1e-10;
 };
 
+// The packing limit these params pack each cell by (MixturePacking.hpp): the model's, and what a
+// feed or an initial region is checked against. Throws grainbridge::Error as MixturePacking does.
+[[nodiscard]] closures::MixturePacking mixturePackingOf(const MultiFluidParams& params);
+
 class MultiFluidModel final : public fluid::FlowModel {
  public:
   // Throws grainbridge::Error naming a combination the model cannot run (the rotation model or

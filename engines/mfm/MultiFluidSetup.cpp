@@ -197,22 +197,14 @@ std::vector<SetupProblem> MultiFluidSetup::problems() const {
 
 fluid::FluidSetup::PackedFraction MultiFluidSetup::packedFraction() const {
   const double packed = settings.packedFraction;
-  if (model.packingLimit == closures::PackingLimit::Fixed || model.solids.size() < 2) {
-    return [packed](std::span<const double>) { return packed; };
-  }
-  std::vector<double> diameters, maxPackings;
-  for (const auto& phase : model.solids) {
-    diameters.push_back(phase.diameter);
-    maxPackings.push_back(phase.maxPacking);
-  }
+  const auto constant = [packed](std::span<const double>) { return packed; };
   std::shared_ptr<const closures::MixturePacking> packing;
   try {
-    packing = std::make_shared<closures::MixturePacking>(model.packingLimit, model.plastic.params.criticalVoidFraction,
-                                                         std::move(diameters), std::move(maxPackings));
+    packing = std::make_shared<const closures::MixturePacking>(mixturePackingOf(model));
   } catch (const Error&) {
-    // The packing's own keys are at fault (problems() says which): the one packed fraction.
-    return [packed](std::span<const double>) { return packed; };
+    return constant;  // the packing's own keys are at fault (problems() says which)
   }
+  if (!packing->byComposition()) return constant;  // fixed, or one solids phase
   return [packing](std::span<const double> fractions) { return 1.0 - packing->criticalVoidFraction(fractions); };
 }
 
