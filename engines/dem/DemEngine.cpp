@@ -53,6 +53,12 @@ std::string DemEngine::throughputNote() const {
   note.precision(3);
   note << 2.0 * static_cast<double>(sim_.contactCount()) / static_cast<double>(sim_.particles().nOwned)
        << " contacts per particle (2 x particle pairs / N, walls not counted)";
+  // As LAMMPS's "Neighbor list builds": how often the skin ran out (the first build included).
+  note << ", " << sim_.rebuilds() << " neighbour-list builds";
+  if (sim_.rebuilds() > 0 && sim_.stepCount() > 0) {
+    note.precision(1);
+    note << " (one per " << static_cast<double>(sim_.stepCount()) / static_cast<double>(sim_.rebuilds()) << " steps)";
+  }
   return note.str();
 }
 

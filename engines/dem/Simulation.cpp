@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/Error.hpp"
+#include "engines/dem/LeesEdwardsImage.hpp"
 
 namespace grainbridge::dem {
 
@@ -98,6 +99,8 @@ void Simulation::validateSetup() {
   // Verlet list holds 5.17 pairs per particle, the inner list 3.47, and 2.07 touch; an eighth of
   // the skin ran no faster.
   innerSkin_ = 0.25 * setup_.skin;
+  frictionless_ = std::all_of(setup_.pairMaterial.begin(), setup_.pairMaterial.end(),
+                              [](const PairMaterial& m) { return m.mu == 0.0; });
   wallForce_.assign(setup_.walls.size(), Vec3::Zero());
   if (setup_.compression.active()) {
     // The schedule runs from the configured box (a resumed run restores its current box after
@@ -177,9 +180,15 @@ std::optional<std::size_t> Simulation::indexOf(std::int64_t id) const {
 
 Energies Simulation::energies() const {
   Energies e;
+  const double offset = setup_.shearRate != 0.0 ? shearOffset(time_) : 0.0;
   for (std::size_t i = 0; i < p_.nOwned; ++i) {
     if (p_.isFrozen(i)) continue;
-    e.translational += 0.5 * p_.mass[i] * p_.v[i].squaredNorm();
+    Vec3 v = p_.v[i];
+    if (setup_.shearRate != 0.0) {
+      Vec3 x = p_.x[i];
+      toPrimaryImage(x, v, setup_.lo, setup_.hi, offset, setup_.shearRate);  // the frame's image
+    }
+    e.translational += 0.5 * p_.mass[i] * v.squaredNorm();
     e.rotational += 0.5 / p_.invInertia[i] * p_.omega[i].squaredNorm();
   }
   return e;
@@ -216,6 +225,11 @@ void Simulation::step(bool recordContacts) {
   const double reach2 = reach * reach;
   const double innerReach = rebuildReach(innerSkin_, innerBuildTime_);  // the same rule
   const double innerReach2 = innerReach * innerReach;
+  // The shear strain since each list's build (0 without shear: the plain displacement, bit for
+  // bit) and the height of zero streaming velocity (rebuildReach).
+  const double strain = setup_.shearRate * (time_ - buildTime_);
+  const double innerStrain = setup_.shearRate * (time_ - innerBuildTime_);
+  const double midY = 0.5 * (setup_.lo[1] + setup_.hi[1]);
   const auto& x0 = list_.referencePositions();
   bool movedTooFar = reach <= 0.0;
   bool innerMovedTooFar = innerReach <= 0.0;
@@ -237,8 +251,8 @@ void Simulation::step(bool recordContacts) {
     x[i] += dt * v[i];
     force[i].setZero();
     torque[i].setZero();
-    movedTooFar |= (x[i] - start[i]).squaredNorm() > reach2;
-    innerMovedTooFar |= (x[i] - innerStart[i]).squaredNorm() > innerReach2;
+    movedTooFar |= squaredPeculiarDisplacement(x[i], start[i], strain, midY) > reach2;
+    innerMovedTooFar |= squaredPeculiarDisplacement(x[i], innerStart[i], innerStrain, midY) > innerReach2;
   }
   if (movedTooFar) {
     rebuild(setup_.sortEveryRebuilds > 0 && rebuildsSinceSort_ >= setup_.sortEveryRebuilds);
@@ -347,11 +361,22 @@ void Simulation::buildInner() {
 }
 
 double Simulation::rebuildReach(double skin, double builtAt) const {
-  // The list holds every pair within a_i + a_j + skin at the build. Two particles close that
-  // gap by at most |dx_i| + |dx_j| <= 2 max|dx|. A ghost across the shearing boundary also moves
-  // with the offset drift, so a pair there closes it by up to 2 max|dx| + |drift|: rebuild once
-  // that could exceed the skin. Without shear the drift is 0 and this is the half-skin rule.
-  return 0.5 * (skin - std::abs(shearDrift(builtAt)));
+  // The list holds every pair of images within R_ij + skin at the build (R_ij = a_i + a_j).
+  // Without shear two particles close that gap by at most |dx_i| + |dx_j| <= 2 max|dx|: the
+  // half-skin rule. Under Lees-Edwards shear every image of a particle (its ghosts across the
+  // shearing boundary included: their offset drift is the streaming field's jump over L_y) moves
+  // as the affine shear F = I + s e_x e_y^T, s the strain since the build, plus its particle's
+  // peculiar displacement p = dx - s (y_0 - y_mid) e_x (squaredPeculiarDisplacement). A pair's separation
+  // is then r = F r_0 + p_i - p_j, so |r| >= sigma_min(F) |r_0| - 2 max|p|, with
+  // sigma_min = sqrt(1 + s^2/4) - |s|/2 the smallest stretch of F. An unlisted pair
+  // (|r_0| >= R_ij + skin) stays apart while 2 max|p| <= skin - (1 - sigma_min)(R_max + skin),
+  // R_max + skin being the interaction range. This replaces a rule on the whole displacement
+  // (streaming motion and offset drift included), which in the closure loop's dilute boxes
+  // rebuilt the list every 15-30 steps although neighbours stream together (issue 59); the
+  // peculiar motion and the shear's slow distortion of the neighbourhood are what can close a gap.
+  const double s = std::abs(setup_.shearRate * (time_ - builtAt));
+  const double shrink = 1.0 - 1.0 / (std::sqrt(1.0 + 0.25 * s * s) + 0.5 * s);  // 1 - sigma_min, no cancellation
+  return 0.5 * (skin - shrink * (cutoff_ - setup_.skin + skin));
 }
 
 void Simulation::wrapAndCheck() {
@@ -481,9 +506,14 @@ void Simulation::selectWallCandidates(bool clearOthers) {
     const Wall& wall = setup_.walls[w];
     auto& candidates = wallCandidates_[w];
     candidates.clear();
-    const bool fixed = wall.vibration.amplitude == 0.0;
     const Vec3 origin = wall.positionAt(buildTime_);
     const Vec3 k = wall.direction;
+    // Under shear the rebuild rule bounds only the displacement less the streaming motion along
+    // x (rebuildReach): a gap that the streaming motion changes (a plane not parallel to x, a
+    // cylinder not along x) is not bounded by it, so such a wall keeps every particle.
+    const bool streamingMovesGap =
+        setup_.shearRate != 0.0 && (wall.kind == Wall::Kind::Plane ? k[0] != 0.0 : (k[1] != 0.0 || k[2] != 0.0));
+    const bool fixed = wall.vibration.amplitude == 0.0 && !streamingMovesGap;
     for (std::size_t i = 0; i < p_.nOwned; ++i) {
       if (p_.isFrozen(i)) continue;
       const Vec3 rel = p_.x[i] - origin;
@@ -544,15 +574,27 @@ void Simulation::contactLoops(Evaluation evaluation) {
   using contact::History;
   switch (evaluation) {
     case Evaluation::Step:
-      pairForces<Law, false, History::Advance>();
+      if (frictionless_) {
+        pairForces<Law, false, History::Advance, true>();
+      } else {
+        pairForces<Law, false, History::Advance, false>();
+      }
       wallForces<Law, false, History::Advance>();
       break;
     case Evaluation::StepRecorded:
-      pairForces<Law, true, History::Advance>();
+      if (frictionless_) {
+        pairForces<Law, true, History::Advance, true>();
+      } else {
+        pairForces<Law, true, History::Advance, false>();
+      }
       wallForces<Law, true, History::Advance>();
       break;
     case Evaluation::Setup:
-      pairForces<Law, true, History::Keep>();
+      if (frictionless_) {
+        pairForces<Law, true, History::Keep, true>();
+      } else {
+        pairForces<Law, true, History::Keep, false>();
+      }
       wallForces<Law, true, History::Keep>();
       break;
   }
@@ -566,7 +608,7 @@ void Simulation::constrainToPlane(std::size_t i, int a) {
   p_.torque[i][a] = spin;
 }
 
-template <class Law, bool Record, contact::History H>
+template <class Law, bool Record, contact::History H, bool Frictionless>
 void Simulation::pairForces() {
   const double dt = setup_.dt;
   const int ns = setup_.species;
@@ -584,6 +626,11 @@ void Simulation::pairForces() {
   const std::size_t nOwned = p_.nOwned;
   std::size_t contacts = 0;  // a local: the member's every increment went through memory
   for (std::size_t i = 0; i < nOwned; ++i) {
+    const std::size_t first = inner.offset[i];
+    const std::size_t last = inner.offset[i + 1];
+    // Nothing to add: most particles of a dilute box list no pair of their own, and reading their
+    // state and adding a zero to their force and torque was a fifth of such a box's time.
+    if (first == last) continue;
     const Vec3 xi = x[i];
     const Vec3 vi = v[i];
     const Vec3 wi = omega[i];
@@ -593,16 +640,19 @@ void Simulation::pairForces() {
     Vec3 fi = Vec3::Zero();
     Vec3 ti = Vec3::Zero();
     // The inner list: the pairs it leaves out are apart (NeighborList::buildInner).
-    for (std::size_t k = inner.offset[i], end = inner.offset[i + 1]; k < end; ++k) {
+    for (std::size_t k = first; k < last; ++k) {
       const std::size_t j = inner.partner[k];
       const Vec3 r = xi - x[j];
       const double sumRadii = ai + radius[j];
       const double r2 = r.squaredNorm();
-      Vec3& ut = inner.history[inner.slot[k]];
       if (r2 >= sumRadii * sumRadii) {
         // Not touching: the history ends with the contact. Most listed pairs are apart and
-        // already zero; testing first spares the cache line a write every step.
-        if (!ut.isZero(0.0)) ut.setZero();
+        // already zero; testing first spares the cache line a write every step. A frictionless
+        // run's history is never set.
+        if constexpr (!Frictionless) {
+          Vec3& ut = inner.history[inner.slot[k]];
+          if (!ut.isZero(0.0)) ut.setZero();
+        }
         continue;
       }
       // 1 / r^2 beside |r|: nothing waits for a division after the square root
@@ -614,20 +664,29 @@ void Simulation::pairForces() {
       c.d = sumRadii;
       const double aj = radius[j];
       const Vec3 vij = vi - v[j];
-      c.vn = c.alongNormal(vij);                                 // Eq. 6.2
-      c.vt = vij - c.vn - (ai * wi + aj * omega[j]).cross(c.n);  // Eq. 6.3
+      c.vn = c.alongNormal(vij);  // Eq. 6.2
       c.meff = 1.0 / (invMi + invMass[j]);
-      const auto f = Law::evaluate(c, materials[static_cast<std::size_t>(si * ns + species[j])], dt, ut, H);
-      const Vec3 fn = f.normal();
-      const Vec3 ft = f.tangential();
-      const Vec3 total = fn + ft;
-      fi += total;
-      force[j] -= total;
-      // Torque with the lever arm to the contact point, a_i n from each centre (consistent with
-      // Eq. 6.3; Eq. 6.8's -1/2 r_ij x F_t is its equal-size form).
-      const Vec3 nxft = c.n.cross(ft);
-      ti -= ai * nxft;
-      torque[j] -= aj * nxft;
+      const PairMaterial& material = materials[static_cast<std::size_t>(si * ns + species[j])];
+      contact::ContactForce f;
+      if constexpr (Frictionless) {
+        f = Law::evaluateNormal(c, material);
+        const Vec3 fn = f.normal();
+        fi += fn;
+        force[j] -= fn;
+      } else {
+        c.vt = vij - c.vn - (ai * wi + aj * omega[j]).cross(c.n);  // Eq. 6.3
+        f = Law::evaluate(c, material, dt, inner.history[inner.slot[k]], H);
+        const Vec3 fn = f.normal();
+        const Vec3 ft = f.tangential();
+        const Vec3 total = fn + ft;
+        fi += total;
+        force[j] -= total;
+        // Torque with the lever arm to the contact point, a_i n from each centre (consistent with
+        // Eq. 6.3; Eq. 6.8's -1/2 r_ij x F_t is its equal-size form).
+        const Vec3 nxft = c.n.cross(ft);
+        ti -= ai * nxft;
+        torque[j] -= aj * nxft;
+      }
       ++contacts;
       if constexpr (Record) {
         auto& rc = recordedContacts_;
@@ -635,17 +694,21 @@ void Simulation::pairForces() {
         rc.j.push_back(p_.id[j]);
         rc.branch.push_back(r);
         rc.contactPoint.push_back(xi - ai * c.n);
-        rc.forceNormal.push_back(fn);
-        rc.forceTangential.push_back(ft);
+        rc.forceNormal.push_back(f.normal());
+        rc.forceTangential.push_back(f.tangential());
         rc.forceNormalElastic.push_back(f.normalElastic);
         rc.forceNormalDissipative.push_back(f.normalDissipative);
         rc.forceTangentialElastic.push_back(f.tangentialElastic);
         rc.forceTangentialDissipative.push_back(f.tangentialDissipative);
-        dissipation_ -= f.normalDissipative.dot(c.vn) + f.tangentialDissipative.dot(c.vt);
+        if constexpr (Frictionless) {
+          dissipation_ -= f.normalDissipative.dot(c.vn);  // c.vt is not computed
+        } else {
+          dissipation_ -= f.normalDissipative.dot(c.vn) + f.tangentialDissipative.dot(c.vt);
+        }
       }
     }
     force[i] += fi;
-    torque[i] += ti;
+    if constexpr (!Frictionless) torque[i] += ti;
   }
   contactCount_ += contacts;
 }
@@ -730,6 +793,11 @@ core::data::ParticleFrame Simulation::frame() const {
   f.position.assign(p_.x.begin(), p_.x.begin() + static_cast<std::ptrdiff_t>(n));
   f.velocity.assign(p_.v.begin(), p_.v.begin() + static_cast<std::ptrdiff_t>(n));
   f.angularVelocity.assign(p_.omega.begin(), p_.omega.begin() + static_cast<std::ptrdiff_t>(n));
+  if (setup_.shearRate != 0.0) {
+    for (std::size_t i = 0; i < n; ++i) {
+      toPrimaryImage(f.position[i], f.velocity[i], setup_.lo, setup_.hi, f.domain.leesEdwardsOffset, setup_.shearRate);
+    }
+  }
   f.contacts = recordedContacts_;
   f.wallContacts = recordedWallContacts_;
   return f;

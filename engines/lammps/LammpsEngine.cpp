@@ -18,6 +18,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/io/CheckpointFile.hpp"
+#include "engines/dem/LeesEdwardsImage.hpp"
 
 namespace grainbridge::lammps {
 
@@ -437,11 +438,12 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
     f.species.push_back((t - 1) % setup_.species);
     frozen_[k] = t > setup_.species ? 1 : 0;
     Vec3 position = row3(r + 2);
-    // LAMMPS keeps a sheared box's particles in its tilted cell; a frame holds them in the box
-    // (the same particle: x is periodic).
-    if (setup_.shearRate != 0.0) position[0] -= std::floor((position[0] - setup_.lo[0]) / length[0]) * length[0];
+    Vec3 velocity = row3(r + 5);
+    // LAMMPS keeps a sheared box's particles in its tilted cell, and one that crossed y since its
+    // last reneighbouring outside it; a frame holds the primary image, as grainbridge's engine's.
+    if (setup_.shearRate != 0.0) dem::toPrimaryImage(position, velocity, setup_.lo, setup_.hi, offset, setup_.shearRate);
     f.position.push_back(position);
-    f.velocity.push_back(row3(r + 5));
+    f.velocity.push_back(velocity);
     f.angularVelocity.push_back(row3(r + 8));
     f.radius.push_back(r[11]);
     f.mass.push_back(r[12]);

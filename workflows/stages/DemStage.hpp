@@ -23,7 +23,11 @@ class DemStage final : public StageType {
   // 7: the pair loop takes n, v_n and the history's projection from r_ij and 1 / r^2 (as LAMMPS),
   //    and Eq. 6.4's rescale from a series for small turns: the same equations, rounded
   //    differently in the last bits (a chaotic run then drifts from there)
-  [[nodiscard]] int implVersion() const override { return 7; }
+  // 8: the Lees-Edwards list rebuild counts the peculiar displacement and the shear's distortion
+  //    (rebuilds at other steps, so particles are wrapped and re-sorted at others: round-off);
+  //    frictionless pairs skip the tangential step (its force was 0 to round-off). Runs without
+  //    shear and with friction are unchanged to the bit.
+  [[nodiscard]] int implVersion() const override { return 8; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"final_coordination", "–"},
             {"final_contacts", "–"},

@@ -22,7 +22,9 @@ class TfdemStage final : public StageType {
   // 7: the summary records superficial_gas_velocity, which fluidization requires (as mfm 12)
   // 8: block-averaging errors never from a level of fewer than 4 blocks (issue 63)
   // 9: block errors extrapolated to the plateau (issue 63)
-  [[nodiscard]] int implVersion() const override { return 9; }
+  // 10: the DEM pair loop of dem impl 8: frictionless pairs skip the tangential step (last bits;
+  //     frictional beds are unchanged to the bit)
+  [[nodiscard]] int implVersion() const override { return 10; }
   [[nodiscard]] std::vector<ResultColumn> keyResults() const override {
     return {{"pressure_drop", "Pa"}, {"mean_height", "m"}, {"coordination", "–"}, {"multi_contact_ratio", "–"}};
   }

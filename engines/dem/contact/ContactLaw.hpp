@@ -33,6 +33,20 @@ struct ContactLaw {
     return out;
   }
 
+  // A contact of friction mu = 0: the cap |F_t| <= mu |F_n| of Eq. 6.6 leaves no tangential force,
+  // and none is computed (evaluate would give F_t = 0 to round-off, after the whole tangential
+  // step: a third of a frictionless sheared box's pair loop). Nothing to remember either: a
+  // frictionless contact's history stays zero.
+  [[gnu::always_inline]] static ContactForce evaluateNormal(const ContactKinematics& c, const PairMaterial& m) {
+    const double f = Normal::scale(c.delta, c.d);
+    ContactForce out;
+    out.normalElastic = (f * m.kn * c.delta) * c.n;
+    out.normalDissipative = Damping::normal(c, m, f);
+    out.tangentialElastic.setZero();
+    out.tangentialDissipative.setZero();
+    return out;
+  }
+
   // The normal force alone (head-on collisions, Conversions.hpp).
   static Vec3 normalForce(const ContactKinematics& c, const PairMaterial& m) {
     const double f = Normal::scale(c.delta, c.d);

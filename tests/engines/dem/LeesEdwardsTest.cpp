@@ -12,6 +12,7 @@
 #include "engines/dem/Checkpoint.hpp"
 #include "engines/dem/DomainStress.hpp"
 #include "engines/dem/Insertion.hpp"
+#include "engines/dem/LatticeInsertion.hpp"
 #include "tests/engines/dem/DemTestSupport.hpp"
 #include "tests/support/ValidationNote.hpp"
 #include "tests/support/ValidationRecord.hpp"
@@ -222,4 +223,155 @@ TEST(LeesEdwards, ResumedFromItsCheckpointFileContinuesBitForBit) {
   resumed.run(5000);
   ASSERT_EQ(resumed.particles().nOwned, uninterrupted.particles().nOwned);
   EXPECT_EQ(differingParticles(uninterrupted, resumed), 0u);
+}
+
+namespace {
+
+// Touching pairs of the Lees-Edwards box [0, side]^3 at the offset `offset`, by brute force over
+// nearest images (the image above is displaced by the offset along x).
+std::size_t touchingPairsSheared(const Particles& p, double side, double offset) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < p.nOwned; ++i) {
+    for (std::size_t j = i + 1; j < p.nOwned; ++j) {
+      Vec3 r = p.x[j] - p.x[i];
+      const double images = std::round(r[1] / side);
+      r[1] -= images * side;
+      r[0] -= images * offset;
+      r[0] -= side * std::round(r[0] / side);
+      r[2] -= side * std::round(r[2] / side);
+      const double reach = p.radius[i] + p.radius[j];
+      if (r.squaredNorm() < reach * reach) ++n;
+    }
+  }
+  return n;
+}
+
+}  // namespace
+
+// Two spheres streaming exactly with the profile (no peculiar motion) close their gap by the
+// shear alone: the list must be rebuilt for the shear's distortion of the neighbourhood
+// (rebuildReach's sigma_min), although neither moves relative to the streaming field. A 0.9
+// apart in y and 1.5 behind in x: 1.75 apart, beyond the 1 + 0.3 skin the list holds; they touch
+// after a strain of 1.18. Neither the offset drift nor the streaming motion forces a rebuild any
+// more, so the list is rebuilt a few times, not every 15 steps as a rule on the whole
+// displacement would (the offset alone drifts half the skin in 15 steps here).
+TEST(LeesEdwards, ShearAloneClosesAGapAndTheListIsRebuiltForIt) {
+  PairMaterial mat;
+  mat.kn = 1e4;
+  mat.kt = 0.0;
+  mat.mu = 0.0;
+  mat.gammaN = 0.0;
+  const double side = 10.0;
+  const SimulationSetup s = periodicCube(mat, side, 1e-3, 1.0);
+  const Vec3 a(3.0, 5.45, 5.0);
+  const Vec3 b(4.5, 4.55, 5.0);
+  Simulation sim(s, shearedUnitSpheres(s, {a, b}));
+  const std::int64_t startBuilds = sim.rebuilds();
+  bool touched = false;
+  for (int k = 0; k < 1300 && !touched; ++k) {
+    sim.step();
+    const auto& x = sim.particles().x;
+    const double gap = (x[*sim.indexOf(1)] - x[*sim.indexOf(0)]).norm();
+    if (gap < 1.0) {
+      touched = true;
+      EXPECT_EQ(sim.contactCount(), 1u) << "centres " << gap << " apart at step " << k + 1
+                                        << " but the contact is not in the list";
+      EXPECT_NEAR(sim.time(), (1.5 - std::sqrt(1.0 - 0.81)) / 0.9, 2e-3) << "they touch after a strain of 1.18";
+    } else {
+      ASSERT_EQ(sim.contactCount(), 0u) << "step " << k + 1;
+    }
+  }
+  EXPECT_TRUE(touched);
+  EXPECT_GE(sim.rebuilds() - startBuilds, 2) << "the shear's distortion alone must rebuild the list";
+  EXPECT_LE(sim.rebuilds() - startBuilds, 5) << "the streaming motion and the offset drift should not rebuild it";
+}
+
+// A hot sheared gas: at every step the contacts the force loop finds are every touching pair of
+// the Lees-Edwards images, over many list builds and a strain of 2 (the offset goes round the
+// box's length 2 times), while the list is rebuilt much less often than the offset drifts half
+// the skin.
+TEST(LeesEdwards, AShearedGasListsEveryTouchingPairAcrossItsImages) {
+  PairMaterial mat = frictionlessUnitMass(1e5 * 6.0 / M_PI, 0.9);
+  const int n = 250;
+  const double side = std::cbrt(n * M_PI / 6.0 / 0.3);
+  const double shearRate = 5.0;
+  const SimulationSetup s = periodicCube(mat, side, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, shearRate);
+  std::mt19937_64 rng(17);
+  Particles p = shearedUnitSpheres(s, randomCentres(s, n, 0.5, rng));
+  std::normal_distribution<double> thermal(0.0, 1.0);
+  for (std::size_t i = 0; i < p.nOwned; ++i) p.v[i] += Vec3(thermal(rng), thermal(rng), thermal(rng));
+  Simulation sim(s, std::move(p));
+  const std::int64_t steps = static_cast<std::int64_t>(std::ceil(2.0 / (shearRate * s.dt)));
+  std::size_t contacts = 0;
+  for (std::int64_t k = 0; k < steps; ++k) {
+    sim.step(/*recordContacts=*/true);
+    const std::size_t found = sim.frame().contacts.size();
+    ASSERT_EQ(found, touchingPairsSheared(sim.particles(), side, sim.shearOffset(sim.time()))) << "step " << k + 1;
+    contacts += found;
+  }
+  EXPECT_GT(contacts, static_cast<std::size_t>(steps)) << "a gas that collides";
+  const double stepsPerHalfSkinDrift = 0.15 / (shearRate * side * s.dt);
+  EXPECT_GT(static_cast<double>(steps) / static_cast<double>(sim.rebuilds()), 3.0 * stepsPerHalfSkinDrift)
+      << sim.rebuilds() << " list builds in " << steps << " steps";
+}
+
+// Between list builds a particle that crossed the shearing boundary sits outside the box as its
+// image, with the image's lab-frame velocity; the frame and the energies show the particle inside
+// the box (LeesEdwardsImage.hpp), so neither depends on when the list was last built.
+TEST(LeesEdwards, FramesAndEnergiesShowEveryParticleInsideTheBox) {
+  PairMaterial mat = frictionlessUnitMass(1e5 * 6.0 / M_PI, 0.9);
+  const int n = 250;
+  const double side = std::cbrt(n * M_PI / 6.0 / 0.1);
+  const SimulationSetup s = periodicCube(mat, side, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, 2.0);
+  std::mt19937_64 rng(23);
+  Particles p = shearedUnitSpheres(s, randomCentres(s, n, 0.5, rng));
+  std::normal_distribution<double> thermal(0.0, 1.0);
+  for (std::size_t i = 0; i < p.nOwned; ++i) p.v[i] += Vec3(thermal(rng), thermal(rng), thermal(rng));
+  Simulation sim(s, std::move(p));
+  int outside = 0;
+  for (int k = 0; k < 3000 && outside < 20; ++k) {
+    sim.step();
+    const auto& q = sim.particles();
+    bool someOutside = false;
+    for (std::size_t i = 0; i < q.nOwned; ++i) someOutside |= q.x[i][1] < 0.0 || q.x[i][1] >= side;
+    if (!someOutside) continue;
+    ++outside;
+    const auto f = sim.frame();
+    double kinetic = 0.0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      ASSERT_GE(f.position[i][1], 0.0);
+      ASSERT_LT(f.position[i][1], side);
+      ASSERT_GE(f.position[i][0], 0.0);
+      ASSERT_LT(f.position[i][0], side);
+      // The velocity about the streaming profile is the particle's, whichever image shows it.
+      const std::size_t j = *sim.indexOf(f.id[i]);
+      const double profileHere = s.shearRate * (f.position[i][1] - 0.5 * side);
+      const double profileThere = s.shearRate * (q.x[j][1] - 0.5 * side);
+      EXPECT_NEAR(f.velocity[i][0] - profileHere, q.v[j][0] - profileThere, 1e-12 * side * s.shearRate);
+      kinetic += 0.5 * f.mass[i] * f.velocity[i].squaredNorm();
+    }
+    EXPECT_NEAR(sim.energies().translational, kinetic, 1e-12 * kinetic);
+  }
+  EXPECT_GE(outside, 20) << "no step with a particle outside the box between builds";
+}
+
+// A sheared crystal (an fcc lattice of 108 spheres at solid fraction 0.68, every sphere touching
+// or nearly touching its twelve neighbours): persistent contacts across the shearing boundary,
+// every one of them found at every step over half a strain unit.
+TEST(LeesEdwards, AShearedCrystalListsEveryTouchingPair) {
+  PairMaterial mat = frictionlessUnitMass(1e5 * 6.0 / M_PI, 0.9);
+  const int n = 108;
+  const double side = std::cbrt(n * M_PI / 6.0 / 0.68);
+  const SimulationSetup s = periodicCube(mat, side, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, 1.0);
+  std::mt19937_64 rng(29);
+  Simulation sim(s, shearedUnitSpheres(s, fccLatticeSites(s.lo, s.hi, n, 1.0, rng)));
+  const std::int64_t steps = static_cast<std::int64_t>(std::ceil(0.5 / (s.shearRate * s.dt)));
+  std::size_t contacts = 0;
+  for (std::int64_t k = 0; k < steps; ++k) {
+    sim.step(/*recordContacts=*/true);
+    const std::size_t found = sim.frame().contacts.size();
+    ASSERT_EQ(found, touchingPairsSheared(sim.particles(), side, sim.shearOffset(sim.time()))) << "step " << k + 1;
+    contacts += found;
+  }
+  EXPECT_GT(contacts, static_cast<std::size_t>(steps) * n) << "a crystal in contact";
 }

@@ -428,3 +428,63 @@ TEST(TangentialHistory, ForcedRebuildAndResortKeepForcesPerId) {
     }
   }
 }
+
+namespace grainbridge::dem::testing {
+namespace {
+
+// An oblique collision of two spinning spheres with a tangential spring and dashpot, at friction
+// mu, run to separation; returns the final state and every recorded tangential force's largest
+// magnitude.
+struct Oblique {
+  Particles end;
+  double largestTangential = 0.0;
+  std::int64_t contactSteps = 0;
+};
+
+Oblique obliqueCollision(double mu) {
+  PairMaterial m = table61Particle();
+  m.gammaT = 20.0;  // a tangential dashpot too
+  m.mu = mu;
+  const SimulationSetup setup = openBox(m);
+  Particles p;
+  const double mass = sphereMass(1.0, 1.0);
+  p.addOwned(0, 0, 0.5, mass, Vec3(-0.505, 0.3, 0.0), Vec3(1.0, 0.0, 0.2), Vec3(0.0, 0.0, 5.0), false);
+  p.addOwned(1, 0, 0.5, mass, Vec3(0.505, -0.3, 0.0), Vec3(-1.0, 0.0, -0.2), Vec3(3.0, 0.0, -2.0), false);
+  Simulation sim(setup, std::move(p));
+  Oblique out;
+  for (int k = 0; k < 20000; ++k) {
+    sim.step(/*recordContacts=*/true);
+    const auto& f = sim.frame();
+    for (const Vec3& ft : f.contacts.forceTangential) out.largestTangential = std::max(out.largestTangential, ft.norm());
+    out.contactSteps += static_cast<std::int64_t>(f.contacts.i.size());
+    if (out.contactSteps > 0 && f.contacts.i.empty()) break;
+  }
+  out.end = sim.particles();
+  return out;
+}
+
+}  // namespace
+
+// With mu = 0 the Coulomb cap of Eq. 6.6 leaves no tangential force: the pair loop skips the
+// tangential step (ContactLaw::evaluateNormal). The spins come out exactly as they went in, no
+// tangential force is recorded, and the translation is that of a vanishing friction (1e-300,
+// the full tangential step, whose force is capped to 0 up to round-off) to round-off.
+TEST(TangentialHistory, AFrictionlessContactHasNoTangentialForceAndMatchesAVanishingFriction) {
+  const Oblique frictionless = obliqueCollision(0.0);
+  const Oblique vanishing = obliqueCollision(1e-300);
+  ASSERT_GT(frictionless.contactSteps, 10);
+  EXPECT_EQ(frictionless.contactSteps, vanishing.contactSteps);
+  EXPECT_EQ(frictionless.largestTangential, 0.0);
+  EXPECT_LT(vanishing.largestTangential, 1e-12) << "capped at 1e-300 |F_n|, up to round-off";
+  EXPECT_EQ(frictionless.end.omega[0], Vec3(0.0, 0.0, 5.0));
+  EXPECT_EQ(frictionless.end.omega[1], Vec3(3.0, 0.0, -2.0));
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_LT((frictionless.end.v[i] - vanishing.end.v[i]).norm(), 1e-12 * vanishing.end.v[i].norm()) << i;
+    EXPECT_LT((frictionless.end.x[i] - vanishing.end.x[i]).norm(), 1e-12) << i;
+  }
+  // The collision did something: the normal relative velocity was reversed.
+  const Vec3 n = (frictionless.end.x[0] - frictionless.end.x[1]).normalized();
+  EXPECT_GT((frictionless.end.v[0] - frictionless.end.v[1]).dot(n), 0.0);
+}
+
+}  // namespace grainbridge::dem::testing
