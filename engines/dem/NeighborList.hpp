@@ -105,6 +105,7 @@ class NeighborList {
   std::vector<std::uint32_t> cellStart_;
   std::vector<std::uint32_t> cellItems_;
   std::vector<std::uint32_t> cellOf_;
+  std::vector<std::uint32_t> candidates_;  // one particle's candidates, in cell order
 };
 
 }  // namespace grainbridge::dem
