@@ -53,11 +53,12 @@ std::string DemEngine::throughputNote() const {
   note.precision(3);
   note << 2.0 * static_cast<double>(sim_.contactCount()) / static_cast<double>(sim_.particles().nOwned)
        << " contacts per particle (2 x particle pairs / N, walls not counted)";
-  // As LAMMPS's "Neighbor list builds": how often the skin ran out (the first build included).
-  note << ", " << sim_.rebuilds() << " neighbour-list builds";
-  if (sim_.rebuilds() > 0 && sim_.stepCount() > 0) {
+  // As LAMMPS's "Neighbor list builds": how often the skin ran out, over the steps this engine has
+  // taken (a preparation's included, a resumed run's earlier ones not; the first build counted).
+  note << ", " << sim_.rebuilds() << " neighbour-list builds in " << sim_.stepsTaken() << " steps";
+  if (sim_.stepsTaken() > 0) {
     note.precision(1);
-    note << " (one per " << static_cast<double>(sim_.stepCount()) / static_cast<double>(sim_.rebuilds()) << " steps)";
+    note << " (one per " << static_cast<double>(sim_.stepsTaken()) / static_cast<double>(sim_.rebuilds()) << ")";
   }
   return note.str();
 }

@@ -82,8 +82,7 @@ void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, dou
   // 3. Pairs: for each owned particle, the 27 surrounding cells; test r^2 < (a_i + a_j + skin)^2.
   offset_.assign(p.nOwned + 1, 0);
   partner_.clear();
-  std::vector<std::uint32_t>& candidates = candidates_;
-  candidates.clear();
+  candidates_.clear();
   for (std::size_t i = 0; i < p.nOwned; ++i) {
     const Vec3i ci = cellCoord(p.x[i]);
     const Vec3& xi = p.x[i];
@@ -99,7 +98,8 @@ void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, dou
           const int cx = ci[0] + dx;
           if (cx < 0 || cx >= cells[0]) continue;
           const std::size_t c = cellIndex(Vec3i(cx, cy, cz));
-          candidates.insert(candidates.end(), cellItems_.begin() + cellStart_[c], cellItems_.begin() + cellStart_[c + 1]);
+          candidates_.insert(candidates_.end(), cellItems_.begin() + cellStart_[c],
+                             cellItems_.begin() + cellStart_[c + 1]);
         }
       }
     }
@@ -109,10 +109,10 @@ void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, dou
     // Every candidate is written and the count moves by the test; the pairs and their order are
     // those of a loop that pushed the kept ones.
     const std::size_t first = partner_.size();
-    partner_.resize(first + candidates.size());
+    partner_.resize(first + candidates_.size());
     std::size_t kept = first;
     const std::int64_t idI = p.id[i];
-    for (const std::uint32_t j : candidates) {
+    for (const std::uint32_t j : candidates_) {
       const bool after = j < p.nOwned ? j > i : p.id[j] > idI;  // each pair once
       const bool bothFrozen = iFrozen && p.isFrozen(j);
       const double reach = reachI + p.radius[j];
@@ -121,7 +121,7 @@ void NeighborList::build(const Particles& p, const Vec3& lo, const Vec3& hi, dou
       kept += static_cast<std::size_t>(after & near & !bothFrozen);
     }
     partner_.resize(kept);
-    candidates.clear();
+    candidates_.clear();
     offset_[i + 1] = partner_.size();
     // Ascending partner order makes the force sum independent of cell layout details.
     std::sort(partner_.begin() + static_cast<std::ptrdiff_t>(offset_[i]), partner_.end());

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <unordered_map>
 
 #include "core/Error.hpp"
 #include "engines/dem/LeesEdwardsImage.hpp"
@@ -221,6 +222,7 @@ void Simulation::step(bool recordContacts) {
   // the cache.
   time_ += dt;
   ++step_;
+  ++stepsTaken_;
   const double reach = rebuildReach(setup_.skin, buildTime_);
   const double reach2 = reach * reach;
   const double innerReach = rebuildReach(innerSkin_, innerBuildTime_);  // the same rule
@@ -312,8 +314,8 @@ void Simulation::compress() {
   if (step_ % c.interval != 0 || setup_.hi[1] == setup_.lo[1] + compressionTargetLength_) return;
   // Linear in time; the last change lands on the target exactly (a fixed-volume box from then on).
   const double s = std::min(1.0, time_ / c.duration);
-  const double length =
-      s < 1.0 ? compressionStartLength_ + s * (compressionTargetLength_ - compressionStartLength_) : compressionTargetLength_;
+  const double length = s < 1.0 ? compressionStartLength_ + s * (compressionTargetLength_ - compressionStartLength_)
+                                : compressionTargetLength_;
   resizeAlongY(length / (setup_.hi[1] - setup_.lo[1]), length,
                "compression: its solid fraction packs these particles into a slab too thin for this box; use more "
                "particles or a box_hi longer along x and z");
@@ -574,30 +576,25 @@ void Simulation::contactLoops(Evaluation evaluation) {
   using contact::History;
   switch (evaluation) {
     case Evaluation::Step:
-      if (frictionless_) {
-        pairForces<Law, false, History::Advance, true>();
-      } else {
-        pairForces<Law, false, History::Advance, false>();
-      }
-      wallForces<Law, false, History::Advance>();
+      contactsOf<Law, false, History::Advance>();
       break;
     case Evaluation::StepRecorded:
-      if (frictionless_) {
-        pairForces<Law, true, History::Advance, true>();
-      } else {
-        pairForces<Law, true, History::Advance, false>();
-      }
-      wallForces<Law, true, History::Advance>();
+      contactsOf<Law, true, History::Advance>();
       break;
     case Evaluation::Setup:
-      if (frictionless_) {
-        pairForces<Law, true, History::Keep, true>();
-      } else {
-        pairForces<Law, true, History::Keep, false>();
-      }
-      wallForces<Law, true, History::Keep>();
+      contactsOf<Law, true, History::Keep>();
       break;
   }
+}
+
+template <class Law, bool Record, contact::History H>
+void Simulation::contactsOf() {
+  if (frictionless_) {
+    pairForces<Law, Record, H, true>();
+  } else {
+    pairForces<Law, Record, H, false>();
+  }
+  wallForces<Law, Record, H>();
 }
 
 void Simulation::constrainToPlane(std::size_t i, int a) {
@@ -793,13 +790,27 @@ core::data::ParticleFrame Simulation::frame() const {
   f.position.assign(p_.x.begin(), p_.x.begin() + static_cast<std::ptrdiff_t>(n));
   f.velocity.assign(p_.v.begin(), p_.v.begin() + static_cast<std::ptrdiff_t>(n));
   f.angularVelocity.assign(p_.omega.begin(), p_.omega.begin() + static_cast<std::ptrdiff_t>(n));
-  if (setup_.shearRate != 0.0) {
-    for (std::size_t i = 0; i < n; ++i) {
-      toPrimaryImage(f.position[i], f.velocity[i], setup_.lo, setup_.hi, f.domain.leesEdwardsOffset, setup_.shearRate);
-    }
-  }
   f.contacts = recordedContacts_;
   f.wallContacts = recordedWallContacts_;
+  if (setup_.shearRate != 0.0) {
+    // Each particle as its primary image; the contact points it recorded (x_i - a_i n, at its
+    // position as the engine holds it) move with it, so that extract's r_i - c stays a lever arm.
+    std::unordered_map<std::int64_t, Vec3> moved;  // id -> shift, for the particles shown as another image
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 held = f.position[i];
+      toPrimaryImage(f.position[i], f.velocity[i], setup_.lo, setup_.hi, f.domain.leesEdwardsOffset, setup_.shearRate);
+      if (f.position[i] != held) moved.emplace(f.id[i], f.position[i] - held);
+    }
+    if (!moved.empty()) {
+      for (std::size_t k = 0; k < f.contacts.size(); ++k) {
+        if (const auto it = moved.find(f.contacts.i[k]); it != moved.end()) f.contacts.contactPoint[k] += it->second;
+      }
+      for (std::size_t k = 0; k < f.wallContacts.size(); ++k) {
+        if (const auto it = moved.find(f.wallContacts.particle[k]); it != moved.end())
+          f.wallContacts.point[k] += it->second;
+      }
+    }
+  }
   return f;
 }
 

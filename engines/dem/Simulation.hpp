@@ -57,6 +57,9 @@ class Simulation {
 
   [[nodiscard]] double time() const { return time_; }
   [[nodiscard]] std::int64_t stepCount() const { return step_; }
+  // Steps this object has taken (a preparation's included, a resumed run's earlier ones not): the
+  // window rebuilds() counts its list builds over.
+  [[nodiscard]] std::int64_t stepsTaken() const { return stepsTaken_; }
   [[nodiscard]] const Particles& particles() const { return p_; }
   Particles& mutableParticles() { return p_; }
   [[nodiscard]] const SimulationSetup& setup() const { return setup_; }
@@ -153,6 +156,9 @@ class Simulation {
   void contactForces(Evaluation evaluation, bool ownedCleared = false);
   template <class Law>
   void contactLoops(Evaluation evaluation);
+  // One evaluation's pair and wall loops, the pair loop's frictionless form when every mu is 0.
+  template <class Law, bool Record, contact::History H>
+  void contactsOf();
   // After the contacts: ghost forces to their owners, body forces, the plane of a 2-D bed, then
   // then(i) for each owned particle in the same pass.
   template <class Then>
@@ -200,6 +206,7 @@ class Simulation {
   double innerBuildTime_ = 0.0;
   bool frictionless_ = false;  // every pair material's mu is 0 (pairForces' Frictionless)
   std::int64_t step_ = 0;
+  std::int64_t stepsTaken_ = 0;
   std::int64_t rebuildsSinceSort_ = 0;
   std::size_t contactCount_ = 0;
   double dissipation_ = 0.0;

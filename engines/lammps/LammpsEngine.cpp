@@ -441,7 +441,8 @@ const core::data::ParticleFrame& LammpsEngine::frame() {
     Vec3 velocity = row3(r + 5);
     // LAMMPS keeps a sheared box's particles in its tilted cell, and one that crossed y since its
     // last reneighbouring outside it; a frame holds the primary image, as grainbridge's engine's.
-    if (setup_.shearRate != 0.0) dem::toPrimaryImage(position, velocity, setup_.lo, setup_.hi, offset, setup_.shearRate);
+    if (setup_.shearRate != 0.0)
+      dem::toPrimaryImage(position, velocity, setup_.lo, setup_.hi, offset, setup_.shearRate);
     f.position.push_back(position);
     f.velocity.push_back(velocity);
     f.angularVelocity.push_back(row3(r + 8));

@@ -160,7 +160,7 @@ TEST(LeesEdwards, RebuildCountsTheOffsetDriftWithBothDisplacements) {
   const double travel = 0.149;  // per particle and for the offset, over t = 1
   // The offset drifts gammadot L_y t = travel.
   const SimulationSetup s = periodicCube(mat, 10.0, 1e-3, travel / 10.0);
-  const double gap = 0.93;      // each component of the separation from A to B's upper image
+  const double gap = 0.93;  // each component of the separation from A to B's upper image
   const Vec3 towardB = Vec3(-1.0, 1.0, 0.0).normalized();
   const Vec3 a(5.0, 9.6, 5.0);
   const Vec3 bImage = a + Vec3(-gap, gap, 0.0);  // |A B'| = 1.315 > 1 + skin: not listed
@@ -256,11 +256,7 @@ std::size_t touchingPairsSheared(const Particles& p, double side, double offset)
 // more, so the list is rebuilt a few times, not every 15 steps as a rule on the whole
 // displacement would (the offset alone drifts half the skin in 15 steps here).
 TEST(LeesEdwards, ShearAloneClosesAGapAndTheListIsRebuiltForIt) {
-  PairMaterial mat;
-  mat.kn = 1e4;
-  mat.kt = 0.0;
-  mat.mu = 0.0;
-  mat.gammaN = 0.0;
+  const PairMaterial mat = frictionlessUnitMass(1e4, 1.0);  // elastic (gamma_n = 0), no tangential spring
   const double side = 10.0;
   const SimulationSetup s = periodicCube(mat, side, 1e-3, 1.0);
   const Vec3 a(3.0, 5.45, 5.0);
@@ -286,51 +282,68 @@ TEST(LeesEdwards, ShearAloneClosesAGapAndTheListIsRebuiltForIt) {
   EXPECT_LE(sim.rebuilds() - startBuilds, 5) << "the streaming motion and the offset drift should not rebuild it";
 }
 
-// A hot sheared gas: at every step the contacts the force loop finds are every touching pair of
-// the Lees-Edwards images, over many list builds and a strain of 2 (the offset goes round the
-// box's length 2 times), while the list is rebuilt much less often than the offset drifts half
-// the skin.
-TEST(LeesEdwards, AShearedGasListsEveryTouchingPairAcrossItsImages) {
-  PairMaterial mat = frictionlessUnitMass(1e5 * 6.0 / M_PI, 0.9);
-  const int n = 250;
-  const double side = std::cbrt(n * M_PI / 6.0 / 0.3);
-  const double shearRate = 5.0;
-  const SimulationSetup s = periodicCube(mat, side, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, shearRate);
-  std::mt19937_64 rng(17);
+namespace {
+
+// The cube of n unit spheres (d = m = 1) at solid fraction phi, periodic, frictionless with
+// e = 0.9 and k* = k_n / (rho d^3 gammadot^2) = 1e5 at unit rate, dt = t_c / 50, sheared at `rate`.
+SimulationSetup unitSphereShearBox(int n, double phi, double rate) {
+  const PairMaterial mat = frictionlessUnitMass(1e5 * 6.0 / M_PI, 0.9);
+  const double side = std::cbrt(n * M_PI / 6.0 / phi);
+  return periodicCube(mat, side, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, rate);
+}
+
+// n spheres at random in the box of `s`, on its streaming profile plus Maxwellian fluctuations of
+// unit temperature: hot enough to collide across the shearing boundary within a strain unit.
+Particles hotShearedGas(const SimulationSetup& s, int n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
   Particles p = shearedUnitSpheres(s, randomCentres(s, n, 0.5, rng));
   std::normal_distribution<double> thermal(0.0, 1.0);
   for (std::size_t i = 0; i < p.nOwned; ++i) p.v[i] += Vec3(thermal(rng), thermal(rng), thermal(rng));
-  Simulation sim(s, std::move(p));
-  const std::int64_t steps = static_cast<std::int64_t>(std::ceil(2.0 / (shearRate * s.dt)));
-  std::size_t contacts = 0;
+  return p;
+}
+
+// Runs `steps` recorded steps, asserting at each that the contacts the force loop found are
+// every touching pair of the Lees-Edwards images; adds them up in `contacts`.
+void expectEveryTouchingPairFound(Simulation& sim, std::int64_t steps, std::size_t& contacts) {
+  const double side = sim.boxHigh()[1] - sim.boxLow()[1];
   for (std::int64_t k = 0; k < steps; ++k) {
     sim.step(/*recordContacts=*/true);
     const std::size_t found = sim.frame().contacts.size();
     ASSERT_EQ(found, touchingPairsSheared(sim.particles(), side, sim.shearOffset(sim.time()))) << "step " << k + 1;
     contacts += found;
   }
+}
+
+}  // namespace
+
+// A hot sheared gas: at every step the contacts the force loop finds are every touching pair of
+// the Lees-Edwards images, over many list builds and a strain of 2 (the offset goes round the
+// box's length 2 times), while the list is rebuilt much less often than the offset drifts half
+// the skin.
+TEST(LeesEdwards, AShearedGasListsEveryTouchingPairAcrossItsImages) {
+  const SimulationSetup s = unitSphereShearBox(250, 0.3, 5.0);
+  Simulation sim(s, hotShearedGas(s, 250, 17));
+  const std::int64_t steps = static_cast<std::int64_t>(std::ceil(2.0 / (s.shearRate * s.dt)));
+  std::size_t contacts = 0;
+  expectEveryTouchingPairFound(sim, steps, contacts);
   EXPECT_GT(contacts, static_cast<std::size_t>(steps)) << "a gas that collides";
-  const double stepsPerHalfSkinDrift = 0.15 / (shearRate * side * s.dt);
+  const double stepsPerHalfSkinDrift = 0.15 / (s.shearRate * (s.hi[1] - s.lo[1]) * s.dt);
   EXPECT_GT(static_cast<double>(steps) / static_cast<double>(sim.rebuilds()), 3.0 * stepsPerHalfSkinDrift)
       << sim.rebuilds() << " list builds in " << steps << " steps";
 }
 
 // Between list builds a particle that crossed the shearing boundary sits outside the box as its
 // image, with the image's lab-frame velocity; the frame and the energies show the particle inside
-// the box (LeesEdwardsImage.hpp), so neither depends on when the list was last built.
+// the box (LeesEdwardsImage.hpp), so neither depends on when the list was last built, and the
+// contact points it recorded move with it (extract reads r_i - c as a lever arm).
 TEST(LeesEdwards, FramesAndEnergiesShowEveryParticleInsideTheBox) {
-  PairMaterial mat = frictionlessUnitMass(1e5 * 6.0 / M_PI, 0.9);
-  const int n = 250;
-  const double side = std::cbrt(n * M_PI / 6.0 / 0.1);
-  const SimulationSetup s = periodicCube(mat, side, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, 2.0);
-  std::mt19937_64 rng(23);
-  Particles p = shearedUnitSpheres(s, randomCentres(s, n, 0.5, rng));
-  std::normal_distribution<double> thermal(0.0, 1.0);
-  for (std::size_t i = 0; i < p.nOwned; ++i) p.v[i] += Vec3(thermal(rng), thermal(rng), thermal(rng));
-  Simulation sim(s, std::move(p));
+  const SimulationSetup s = unitSphereShearBox(250, 0.2, 2.0);
+  const double side = s.hi[1] - s.lo[1];
+  Simulation sim(s, hotShearedGas(s, 250, 23));
   int outside = 0;
-  for (int k = 0; k < 3000 && outside < 20; ++k) {
-    sim.step();
+  int shownContacts = 0;  // contacts of a particle the frame shows as another image
+  for (int k = 0; k < 20000 && (outside < 20 || shownContacts < 5); ++k) {
+    sim.step(/*recordContacts=*/true);
     const auto& q = sim.particles();
     bool someOutside = false;
     for (std::size_t i = 0; i < q.nOwned; ++i) someOutside |= q.x[i][1] < 0.0 || q.x[i][1] >= side;
@@ -351,27 +364,27 @@ TEST(LeesEdwards, FramesAndEnergiesShowEveryParticleInsideTheBox) {
       kinetic += 0.5 * f.mass[i] * f.velocity[i].squaredNorm();
     }
     EXPECT_NEAR(sim.energies().translational, kinetic, 1e-12 * kinetic);
+    for (std::size_t c = 0; c < f.contacts.size(); ++c) {
+      const std::size_t i = *sim.indexOf(f.contacts.i[c]);  // frames list the owned particles in order
+      if (f.position[i] != q.x[i]) ++shownContacts;
+      // The contact point x_i - a_i n lies a radius from the centre shown.
+      EXPECT_NEAR((f.position[i] - f.contacts.contactPoint[c]).norm(), 0.5, 1e-9) << "contact " << c;
+    }
   }
   EXPECT_GE(outside, 20) << "no step with a particle outside the box between builds";
+  EXPECT_GE(shownContacts, 5) << "no contact of a particle shown as another image";
 }
 
 // A sheared crystal (an fcc lattice of 108 spheres at solid fraction 0.68, every sphere touching
 // or nearly touching its twelve neighbours): persistent contacts across the shearing boundary,
 // every one of them found at every step over half a strain unit.
 TEST(LeesEdwards, AShearedCrystalListsEveryTouchingPair) {
-  PairMaterial mat = frictionlessUnitMass(1e5 * 6.0 / M_PI, 0.9);
   const int n = 108;
-  const double side = std::cbrt(n * M_PI / 6.0 / 0.68);
-  const SimulationSetup s = periodicCube(mat, side, linearContactTime(mat.kn, mat.gammaN, 0.5) / 50.0, 1.0);
+  const SimulationSetup s = unitSphereShearBox(n, 0.68, 1.0);
   std::mt19937_64 rng(29);
   Simulation sim(s, shearedUnitSpheres(s, fccLatticeSites(s.lo, s.hi, n, 1.0, rng)));
   const std::int64_t steps = static_cast<std::int64_t>(std::ceil(0.5 / (s.shearRate * s.dt)));
   std::size_t contacts = 0;
-  for (std::int64_t k = 0; k < steps; ++k) {
-    sim.step(/*recordContacts=*/true);
-    const std::size_t found = sim.frame().contacts.size();
-    ASSERT_EQ(found, touchingPairsSheared(sim.particles(), side, sim.shearOffset(sim.time()))) << "step " << k + 1;
-    contacts += found;
-  }
+  expectEveryTouchingPairFound(sim, steps, contacts);
   EXPECT_GT(contacts, static_cast<std::size_t>(steps) * n) << "a crystal in contact";
 }

@@ -455,7 +455,8 @@ Oblique obliqueCollision(double mu) {
   for (int k = 0; k < 20000; ++k) {
     sim.step(/*recordContacts=*/true);
     const auto& f = sim.frame();
-    for (const Vec3& ft : f.contacts.forceTangential) out.largestTangential = std::max(out.largestTangential, ft.norm());
+    for (const Vec3& ft : f.contacts.forceTangential)
+      out.largestTangential = std::max(out.largestTangential, ft.norm());
     out.contactSteps += static_cast<std::int64_t>(f.contacts.i.size());
     if (out.contactSteps > 0 && f.contacts.i.empty()) break;
   }
