@@ -11,19 +11,23 @@
 #
 # --bed binary runs configs/goldschmidt-binary.json's bed at 1.30 m/s instead (bench/mfm-binary.sh);
 # --bed combine runs configs/combine.json as shipped (bench/mfm-combine.sh).
+# --set KEY=VALUE sets one of the stage's params (repeatable; VALUE is JSON when it parses as
+# JSON, a string otherwise), e.g. --set pressure_solver=petsc (bench/mfm-petsc.sh).
 #
-# Usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary|combine]
+# Usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary|combine] [--set KEY=VALUE]...
 # Last line: wall_seconds_per_simulated_second = X
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 duration=10
 bed=mono
+settings=()
 while (($#)); do
   case "$1" in
     --duration) duration=$2; shift 2 ;;
     --bed) bed=$2; shift 2 ;;
-    *) echo "usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary|combine]" >&2; exit 2 ;;
+    --set) settings+=("$2"); shift 2 ;;
+    *) echo "usage: bench/mfm-goldschmidt.sh [--duration SECONDS] [--bed mono|binary|combine] [--set KEY=VALUE]..." >&2; exit 2 ;;
   esac
 done
 case "$bed" in
@@ -41,9 +45,10 @@ trap 'rm -rf "$work"' EXIT
 
 # The shipped config's bed (its mfm stage), one sweep point, the averaging window the last half of
 # the run; the Goldschmidt beds at the inflow above without rotation.
-python3 - "$repo/configs/$config.json" "$work/bench.json" "$duration" "$inflow" <<'PY'
+python3 - "$repo/configs/$config.json" "$work/bench.json" "$duration" "$inflow" ${settings[@]+"${settings[@]}"} <<'PY'
 import json, sys
 source, target, duration, inflow = sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4]
+settings = sys.argv[5:]
 config = json.load(open(source))
 stage = next(s for s in config["stages"].values() if s["type"] == "mfm")
 stage.pop("sweep", None)
@@ -55,6 +60,12 @@ params["duration"] = f"{duration} s"
 params["average_from"] = f"{duration / 2} s"
 params["frames"] = 0
 params["progress"] = False
+for setting in settings:
+    key, _, value = setting.partition("=")
+    try:
+        params[key] = json.loads(value)
+    except ValueError:
+        params[key] = value
 config["name"] = "bench-mfm-goldschmidt"
 config["stages"] = {"bed": stage}
 json.dump(config, open(target, "w"), indent=1)

@@ -10,6 +10,28 @@ find_package(OpenSSL REQUIRED COMPONENTS Crypto)
 find_package(Threads REQUIRED)
 # LAPACK's banded LU (dgbsv) solves the fluid engine's systems on grids narrow in one direction.
 find_package(LAPACK REQUIRED)
+# PETSc (Debian libpetsc-real-dev: Open MPI, hypre, MUMPS) solves the fluid engines' linear systems
+# with KSP where a stage asks for `<family>_solver: petsc` (issue 58). Optional, as LAMMPS is:
+# without it the build is complete, `petsc` is refused at `grainbridge check`, and `grainbridge
+# --version` says why. Found through its pkg-config file; the target takes its include folders and
+# libraries only (the .pc's other flags, -D_FORTIFY_SOURCE among them, are the build's business).
+option(GRAINBRIDGE_WITH_PETSC "solve the fluid systems through PETSc when it is found" ON)
+set(GRAINBRIDGE_PETSC_OFF_REASON "")
+if(GRAINBRIDGE_WITH_PETSC)
+  find_package(PkgConfig QUIET)
+  if(PkgConfig_FOUND)
+    pkg_check_modules(PETSC QUIET PETSc)
+  endif()
+  if(PETSC_FOUND)
+    add_library(PETSc::PETSc INTERFACE IMPORTED)
+    target_include_directories(PETSc::PETSc SYSTEM INTERFACE ${PETSC_INCLUDE_DIRS})
+    target_link_libraries(PETSc::PETSc INTERFACE ${PETSC_LINK_LIBRARIES} MPI::MPI_C)
+  else()
+    set(GRAINBRIDGE_PETSC_OFF_REASON "pkg-config found no PETSc (Debian: libpetsc-real-dev)")
+  endif()
+else()
+  set(GRAINBRIDGE_PETSC_OFF_REASON "GRAINBRIDGE_WITH_PETSC is OFF")
+endif()
 # LAMMPS's library (Debian liblammps-dev, with `lammps` for the /usr/bin/lmp its CMake package
 # checks) runs the dem stage's `engine` lammps (issue 32). Optional: without it the build is
 # complete, the engine is refused at `grainbridge check`, and `grainbridge --version` says why.

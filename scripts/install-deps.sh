@@ -21,6 +21,7 @@ base=(
   libopenmpi-dev openmpi-bin
   libcli11-dev libspdlog-dev libfmt-dev libssl-dev libudunits2-dev
   liblapack-dev libblas-dev
+  libpetsc-real-dev
   liblammps-dev lammps
   gnuplot-nox fonts-dejavu-core
 )

@@ -1,7 +1,9 @@
 #include "core/parallel/Communicator.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <utility>
+#include <vector>
 
 namespace grainbridge::core::parallel {
 
@@ -20,7 +22,27 @@ void initialize(int* argc, char*** argv) {
   MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
 }
 
+namespace {
+
+std::vector<void (*)()>& finalizeHooks() {
+  static std::vector<void (*)()> hooks;
+  return hooks;
+}
+
+}  // namespace
+
+void beforeFinalize(void (*hook)()) {
+  auto& hooks = finalizeHooks();
+  if (std::find(hooks.begin(), hooks.end(), hook) == hooks.end()) hooks.push_back(hook);
+}
+
 void finalize() {
+  auto& hooks = finalizeHooks();
+  while (!hooks.empty()) {
+    void (*hook)() = hooks.back();
+    hooks.pop_back();
+    hook();
+  }
   if (mpiActive()) MPI_Finalize();
 }
 

@@ -11,7 +11,11 @@ namespace grainbridge::core::parallel {
 bool launchedByMpiLauncher();
 // Initialises MPI if launched by a launcher; otherwise does nothing. Idempotent.
 void initialize(int* argc, char*** argv);
+// Runs the hooks registered by beforeFinalize (last first), then finalises MPI if it is active.
 void finalize();
+// A library that holds MPI resources (PETSc) registers its own finalisation here, to run before
+// MPI_Finalize; registering the same hook twice runs it once.
+void beforeFinalize(void (*hook)());
 bool mpiActive();
 int worldRank();  // 0 when MPI is not active
 int worldSize();  // 1 when MPI is not active

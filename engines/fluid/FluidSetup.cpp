@@ -6,6 +6,7 @@
 
 #include "core/json/Vec3Json.hpp"
 #include "core/text/NumberText.hpp"
+#include "engines/fluid/PetscKsp.hpp"
 #include "engines/fluid/StaggeredGrid.hpp"
 
 namespace grainbridge::fluid {
@@ -174,11 +175,12 @@ std::vector<SetupProblem> FluidSetup::problems(std::size_t solidsPhases, const P
       fractions.push_back(phases[m].fraction);
     }
     if (const double packed = packedFraction(fractions); solids > packed) {
-      add(at + "/solids_fractions", "the solids fractions add up to " + core::humanNumber(solids) +
-                                        ", above the packed solids fraction " + core::humanNumber(packed) +
-                                        " (eps_s,max of this feed's composition: packed_solids_fraction, by default 1 - "
-                                        "critical_void_fraction, or under a packing_limit by composition from the "
-                                        "phases' max_packing; feed less)");
+      add(at + "/solids_fractions",
+          "the solids fractions add up to " + core::humanNumber(solids) + ", above the packed solids fraction " +
+              core::humanNumber(packed) +
+              " (eps_s,max of this feed's composition: packed_solids_fraction, by default 1 - "
+              "critical_void_fraction, or under a packing_limit by composition from the "
+              "phases' max_packing; feed less)");
     }
     if (*kind == BoundaryKind::VelocityInlet && fixedStep) {
       for (std::size_t m = 0; m < phases.size(); ++m) {
@@ -284,8 +286,21 @@ LinearSolve linearSolveFromJson(const nlohmann::json& p, const std::string& fami
   const std::string name = p.at(family + "_solver").get<std::string>();
   if (name == "bicgstab") how.method = LinearSolve::Method::Iterative;
   if (name == "gauss_seidel") how.method = LinearSolve::Method::GaussSeidel;
+  if (name == "petsc") how.method = LinearSolve::Method::Petsc;
   how.tolerance = p.at(family + "_solver_tolerance");
+  // Optional in the object (a set-up written before issue 58 has none); the schema fills it in.
+  if (const auto options = p.find(family + "_petsc_options"); options != p.end())
+    how.petscOptions = options->get<std::string>();
   return how;
+}
+
+std::vector<SetupProblem> linearSolveProblems(const LinearSolve& how, const std::string& family) {
+  if (how.method != LinearSolve::Method::Petsc) return {};
+  if (!petscAvailable())
+    return {{"/" + family + "_solver",
+             "petsc: this build has no PETSc (" + petscBuildNote() + "); install libpetsc-real-dev and rebuild"}};
+  if (auto why = petscOptionsProblem(how.petscOptions)) return {{"/" + family + "_petsc_options", *why}};
+  return {};
 }
 
 }  // namespace grainbridge::fluid

@@ -39,7 +39,7 @@ struct PatchSetup {
   // Inlet: per solids phase, the granular temperature the inflow carries [m^2/s^2]; empty: the
   // interior's (zero gradient).
   std::vector<double> solidsTemperature;
-  double pressure = 101325.0;           // outlet: the pressure beyond the outlet face [Pa]
+  double pressure = 101325.0;  // outlet: the pressure beyond the outlet face [Pa]
 };
 
 struct FluidSetup {
@@ -61,11 +61,12 @@ struct FluidSetup {
   using PackedFraction = std::function<double(std::span<const double> solidsFractions)>;
 
   // Every reason this set-up cannot run `solidsPhases` solids phases packing at most
-  // `packedFraction` of an inflow's composition: a grid without cells or extent, the time step's limits, a patch on a side the
-  // grid lacks, off its side or off the cell faces, with from without to, with fraction or speed
-  // lists of another length than the phases, with more solids than packed, an inlet faster than
-  // the Courant limit of a fixed step (dt_min = dt_max), patches that overlap. Empty when it can run.
-  [[nodiscard]] std::vector<SetupProblem> problems(std::size_t solidsPhases, const PackedFraction& packedFraction) const;
+  // `packedFraction` of an inflow's composition: a grid without cells or extent, the time step's limits, a patch on a
+  // side the grid lacks, off its side or off the cell faces, with from without to, with fraction or speed lists of
+  // another length than the phases, with more solids than packed, an inlet faster than the Courant limit of a fixed
+  // step (dt_min = dt_max), patches that overlap. Empty when it can run.
+  [[nodiscard]] std::vector<SetupProblem> problems(std::size_t solidsPhases,
+                                                   const PackedFraction& packedFraction) const;
   // The same with one packed fraction for every composition.
   [[nodiscard]] std::vector<SetupProblem> problems(std::size_t solidsPhases, double packedFraction) const {
     return problems(solidsPhases, [packedFraction](std::span<const double>) { return packedFraction; });
@@ -77,9 +78,12 @@ struct FluidSetup {
 };
 
 // How one family of linear systems ("momentum", "pressure", "fraction") is solved, from the keys
-// `<family>_solver` (direct | bicgstab | gauss_seidel) and `<family>_solver_tolerance`; assumes
-// they were checked against their schema.
+// `<family>_solver` (direct | bicgstab | gauss_seidel | petsc), `<family>_solver_tolerance` and
+// `<family>_petsc_options`; assumes they were checked against their schema.
 [[nodiscard]] LinearSolve linearSolveFromJson(const nlohmann::json& params, const std::string& family);
+// What stops a family's solve: petsc in a build without PETSc, or options PETSc refuses (at the
+// key `/<family>_solver` or `/<family>_petsc_options`).
+[[nodiscard]] std::vector<SetupProblem> linearSolveProblems(const LinearSolve& how, const std::string& family);
 
 // The key a side is written with in a config ("x_low", ..., "z_high"), for a Side.
 [[nodiscard]] const char* sideKey(int side);

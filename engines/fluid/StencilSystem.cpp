@@ -1,7 +1,7 @@
 #include "engines/fluid/StencilSystem.hpp"
 
-#include <Eigen/Sparse>
 #include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/Error.hpp"
+#include "engines/fluid/PetscKsp.hpp"
 
 // LAPACK (Fortran interface): Cholesky factorisation and solve of a symmetric positive definite
 // band matrix; LU with partial pivoting of a band matrix, and the solve.
@@ -270,40 +271,43 @@ void StencilSystem::solve(std::vector<double>& phi, const LinearSolve& how) cons
     phi = start;  // not converged: the exact solve from where it began
   }
   if (how.method == LinearSolve::Method::Iterative && solveIterative(phi, how)) return;
+  if (how.method == LinearSolve::Method::Petsc && solvePetsc(phi, how)) return;
   // Not converged (a system far from diagonal dominance): the exact solve.
   Assembled system = assemble(phi);
   if (system.unknowns == 0) return;  // no unknown (a velocity component across a single cell): nothing to solve
   solveDirect(system, phi, how.method == LinearSolve::Method::Cholesky);
 }
 
-bool StencilSystem::solveIterative(std::vector<double>& phi, const LinearSolve& how) const {
+struct StencilSystem::Rows {
+  std::vector<int> rowOf, outer, inner;
+  std::vector<double> values;
+  Eigen::VectorXd rhs, guess;
+};
+
+int StencilSystem::compressedRows(const std::vector<double>& phi, Rows& rows) const {
   // The row-major matrix straight from the stencil, into buffers each thread keeps: a 3D grid
   // solves thousands of these per simulated second, and building them through triplets (a
   // temporary column-major copy, fresh allocations) cost as much as the solves. Each row holds
   // its entries by column, as setFromTriplets would leave them (the bottom, south and west
   // neighbours, the cell, then east, north, top: the padded order, which the rows keep), and the
   // right-hand side adds the known boundary values in slot order, as assemble() does.
-  thread_local std::vector<int> rowOf, outer, inner;
-  thread_local std::vector<double> values;
-  thread_local Eigen::VectorXd rhs, guess;
   const std::size_t n = ap_.size();
-  rowOf.assign(n, -1);
+  rows.rowOf.assign(n, -1);
   int unknowns = 0;
   for (std::size_t c = 0; c < n; ++c) {
-    if (active_[c] != 0) rowOf[c] = unknowns++;
+    if (active_[c] != 0) rows.rowOf[c] = unknowns++;
   }
-  if (unknowns == 0) return true;  // nothing to solve
-  outer.resize(static_cast<std::size_t>(unknowns) + 1);
-  inner.clear();
-  values.clear();
-  rhs.resize(unknowns);
-  guess.resize(unknowns);
+  rows.outer.resize(static_cast<std::size_t>(unknowns) + 1);
+  rows.inner.clear();
+  rows.values.clear();
+  rows.rhs.resize(unknowns);
+  rows.guess.resize(unknowns);
   constexpr std::array<int, 7> byColumn{Bottom, South, West, -1, East, North, Top};  // -1: the cell
   for (std::size_t c = 0; c < n; ++c) {
     if (active_[c] == 0) continue;
     if (ap_[c] == 0.0) throw Error("fluid: a_P is zero at padded cell " + std::to_string(c) + ": no equation there");
-    const int r = rowOf[c];
-    outer[static_cast<std::size_t>(r)] = static_cast<int>(inner.size());
+    const int r = rows.rowOf[c];
+    rows.outer[static_cast<std::size_t>(r)] = static_cast<int>(rows.inner.size());
     double known = b_[c];
     for (int nb = 0; nb < 6; ++nb) {
       std::size_t m = 0;
@@ -311,29 +315,50 @@ bool StencilSystem::solveIterative(std::vector<double>& phi, const LinearSolve& 
     }
     for (const int nb : byColumn) {
       if (nb < 0) {
-        inner.push_back(r);
-        values.push_back(ap_[c]);
+        rows.inner.push_back(r);
+        rows.values.push_back(ap_[c]);
         continue;
       }
       std::size_t m = 0;
       if (!neighbourOf(*grid_, c, nb, m) || active_[m] == 0) continue;
-      inner.push_back(rowOf[m]);
-      values.push_back(-anb_[static_cast<std::size_t>(nb)][c]);  // kept when zero, as assemble() does
+      rows.inner.push_back(rows.rowOf[m]);
+      rows.values.push_back(-anb_[static_cast<std::size_t>(nb)][c]);  // kept when zero, as assemble() does
     }
-    rhs[r] = known;
-    guess[r] = phi[c];
+    rows.rhs[r] = known;
+    rows.guess[r] = phi[c];
   }
-  outer[static_cast<std::size_t>(unknowns)] = static_cast<int>(inner.size());
+  rows.outer[static_cast<std::size_t>(unknowns)] = static_cast<int>(rows.inner.size());
+  return unknowns;
+}
+
+bool StencilSystem::solveIterative(std::vector<double>& phi, const LinearSolve& how) const {
+  thread_local Rows rows;
+  const int unknowns = compressedRows(phi, rows);
+  if (unknowns == 0) return true;  // nothing to solve
   const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> A(
-      unknowns, unknowns, static_cast<Eigen::Index>(inner.size()), outer.data(), inner.data(), values.data());
+      unknowns, unknowns, static_cast<Eigen::Index>(rows.inner.size()), rows.outer.data(), rows.inner.data(),
+      rows.values.data());
   Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::DiagonalPreconditioner<double>> solver;
   solver.setTolerance(how.tolerance);
   solver.setMaxIterations(how.maxIterations);
   solver.compute(A);
-  const Eigen::VectorXd x = solver.solveWithGuess(rhs, guess);
+  const Eigen::VectorXd x = solver.solveWithGuess(rows.rhs, rows.guess);
   if (solver.info() != Eigen::Success || !x.allFinite()) return false;
-  for (std::size_t c = 0; c < n; ++c) {
-    if (active_[c] != 0) phi[c] = x[rowOf[c]];
+  for (std::size_t c = 0; c < ap_.size(); ++c) {
+    if (active_[c] != 0) phi[c] = x[rows.rowOf[c]];
+  }
+  return true;
+}
+
+bool StencilSystem::solvePetsc(std::vector<double>& phi, const LinearSolve& how) const {
+  thread_local Rows rows;
+  const int unknowns = compressedRows(phi, rows);
+  if (unknowns == 0) return true;  // nothing to solve
+  const CompressedRows A{unknowns, rows.outer.data(), rows.inner.data(), rows.values.data()};
+  Eigen::VectorXd x = rows.guess;
+  if (!petscSolve(A, rows.rhs.data(), x.data(), how.tolerance, how.petscOptions) || !x.allFinite()) return false;
+  for (std::size_t c = 0; c < ap_.size(); ++c) {
+    if (active_[c] != 0) phi[c] = x[rows.rowOf[c]];
   }
   return true;
 }

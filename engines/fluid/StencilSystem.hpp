@@ -13,6 +13,7 @@
 #include <Eigen/SparseCore>
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "core/Error.hpp"
@@ -40,16 +41,19 @@ class SingularSystem : public Error {
 // - GaussSeidel: point Gauss-Seidel sweeps on the stencil itself (no matrix is assembled; MFiX's
 //   leq_sor with omega 1), until the root-mean-square residual falls to tolerance times that of
 //   the right-hand side.
-// The last two take the direct solve when they do not converge within maxIterations. For strongly
+// - Petsc: PETSc's KSP (engines/fluid/PetscKsp.hpp) with the options string `petscOptions`, to
+//   KSP's relative tolerance `tolerance` (issue 58).
+// The last three take the direct solve when they do not converge (within maxIterations). For strongly
 // diagonally dominant systems (momentum at a small step, where rho eps dV / dt dwarfs the
 // neighbour coefficients) they need a few iterations where the LU needs a band's worth of work per
 // row. An inner solve need not be exact: an outer iteration's convergence test reads the residual
 // before the solve.
 struct LinearSolve {
-  enum class Method { Direct, Cholesky, Iterative, GaussSeidel };
+  enum class Method { Direct, Cholesky, Iterative, GaussSeidel, Petsc };
   Method method = Method::Direct;
   double tolerance = 1e-8;
   int maxIterations = 100;
+  std::string petscOptions;  // Petsc: a PETSc options string ("-ksp_type gmres -pc_type hypre")
 };
 
 // Neighbour slots: 2 * axis for the low side (W, S, B), 2 * axis + 1 for the high side (E, N, T).
@@ -115,8 +119,14 @@ class StencilSystem {
   };
   [[nodiscard]] Assembled assemble(const std::vector<double>& phi) const;
   void solveDirect(Assembled& system, std::vector<double>& phi, bool symmetric) const;
+  // The active cells' equations as compressed rows, in buffers each thread keeps (StencilSystem.cpp).
+  struct Rows;
+  // Fills `rows` from the stencil and phi's boundary values; the number of unknowns.
+  int compressedRows(const std::vector<double>& phi, Rows& rows) const;
   // Jacobi-preconditioned BiCGSTAB from phi; false (phi unchanged) when it did not converge.
   bool solveIterative(std::vector<double>& phi, const LinearSolve& how) const;
+  // PETSc's KSP from phi; false (phi unchanged) when it did not converge.
+  bool solvePetsc(std::vector<double>& phi, const LinearSolve& how) const;
   // Gauss-Seidel sweeps; false (phi then holds the last sweep) when they did not converge.
   bool sweep(std::vector<double>& phi, const LinearSolve& how) const;
 

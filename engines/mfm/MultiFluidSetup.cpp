@@ -129,6 +129,11 @@ std::vector<SetupProblem> MultiFluidSetup::problems() const {
   auto problem = [&found](std::string where, std::string what) {
     found.push_back({std::move(where), std::move(what)});
   };
+  for (const auto& [how, family] :
+       {std::pair{&settings.momentumSolve, "momentum"}, std::pair{&settings.pressureSolve, "pressure"},
+        std::pair{&settings.fractionSolve, "fraction"}}) {
+    for (auto& why : fluid::linearSolveProblems(*how, family)) found.push_back(std::move(why));
+  }
   const std::size_t M = model.solids.size();
   if (auto why = closures::dragProblem(model.drag)) found.push_back(std::move(*why));
   if (table) {

@@ -77,6 +77,7 @@ std::vector<SetupProblem> TfdemSetup::problems() const {
   auto problem = [&found](std::string where, std::string what) {
     found.push_back({std::move(where), std::move(what)});
   };
+  for (auto& why : fluid::linearSolveProblems(solver.momentumSolve, "momentum")) found.push_back(std::move(why));
   for (std::size_t k = 0; k < fluid.boundaries.size(); ++k) {
     const auto& b = fluid.boundaries[k];
     for (const auto& [key, list] :

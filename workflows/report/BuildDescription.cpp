@@ -3,6 +3,7 @@
 #include "core/BuildInfo.hpp"
 #include "core/Version.hpp"
 #include "db/Database.hpp"
+#include "engines/fluid/PetscKsp.hpp"
 #include "engines/lammps/LammpsInput.hpp"
 
 namespace grainbridge::workflows::report {
@@ -18,8 +19,10 @@ std::string librariesDescription() {
 }
 
 std::string enginesDescription() {
-  // dem, fluid (mfm) and tfdem are always built; engine lammps only where liblammps was usable.
-  return "Engines: dem, mfm, tfdem; lammps: " + lammps::lammpsBuildNote();
+  // dem, fluid (mfm) and tfdem are always built; engine lammps only where liblammps was usable,
+  // the fluid solver petsc only where PETSc was found.
+  return "Engines: dem, mfm, tfdem; lammps: " + lammps::lammpsBuildNote() +
+         "; fluid solver petsc: " + fluid::petscBuildNote();
 }
 
 }  // namespace grainbridge::workflows::report

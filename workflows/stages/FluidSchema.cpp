@@ -57,12 +57,20 @@ std::shared_ptr<const ParamSchema> boundarySchema() {
 }
 
 void addLinearSolveParams(ParamSchema& s, const std::string& family, const std::string& method, double tolerance,
-                          const std::string& doc) {
-  s.add(ParamSpec::string(family + "_solver").defaultValue(method).options({"direct", "bicgstab", "gauss_seidel"}).doc(doc))
+                          const std::string& petscOptions, const std::string& doc) {
+  s.add(ParamSpec::string(family + "_solver")
+            .defaultValue(method)
+            .options({"direct", "bicgstab", "gauss_seidel", "petsc"})
+            .doc(doc + "; petsc: PETSc's KSP with " + family + "_petsc_options (the LU where it fails)"))
       .add(ParamSpec::number(family + "_solver_tolerance")
                .defaultValue(tolerance)
                .positive()
-               .doc("bicgstab, gauss_seidel: each " + family + " solve's residual norm over its right-hand side's"));
+               .doc("bicgstab, gauss_seidel, petsc: each " + family +
+                    " solve's residual norm over its right-hand side's (petsc: KSP's -ksp_rtol)"))
+      .add(ParamSpec::string(family + "_petsc_options")
+               .defaultValue(petscOptions)
+               .doc("petsc: PETSc options for the " + family +
+                    " solves (-ksp_type, -pc_type, ...), in their own database; checked at load"));
 }
 
 std::shared_ptr<const ParamSchema> tapSchema() {
@@ -83,9 +91,9 @@ std::vector<PressureTap> readTaps(const json& p, double height, std::vector<core
     const json& t = taps[k];
     PressureTap tap{t.at("name").get<std::string>(), t.at("low").get<double>(), t.at("high").get<double>()};
     if (!(tap.low < tap.high) || tap.low < 0.0 || tap.high > height * (1.0 + 1e-9)) {
-      problems.emplace_back("/pressure_taps/" + std::to_string(k) + "/high",
-                            "the taps must satisfy 0 <= low < high <= " + core::humanNumber(height) +
-                                " m (the domain's height)");
+      problems.emplace_back(
+          "/pressure_taps/" + std::to_string(k) + "/high",
+          "the taps must satisfy 0 <= low < high <= " + core::humanNumber(height) + " m (the domain's height)");
     }
     out.push_back(std::move(tap));
   }

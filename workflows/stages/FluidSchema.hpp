@@ -23,12 +23,22 @@ std::shared_ptr<const params::ParamSchema> boundarySchema();
 std::shared_ptr<const params::ParamSchema> tapSchema();
 
 // How one family of linear systems is solved (fluid::LinearSolve): `<family>_solver`, direct |
-// bicgstab | gauss_seidel (default `method`; `doc` says which systems and what the choice does),
-// and `<family>_solver_tolerance` (default `tolerance`), the iterative solves' residual norm over
-// the right-hand side's.
+// bicgstab | gauss_seidel | petsc (default `method`; `doc` says which systems and what the choice
+// does), `<family>_solver_tolerance` (default `tolerance`), the iterative solves' residual norm
+// over the right-hand side's (petsc: KSP's rtol), and `<family>_petsc_options` (default
+// `petscOptions`), the PETSc options string of petsc.
 void addLinearSolveParams(params::ParamSchema& s, const std::string& family, const std::string& method,
-                          double tolerance, const std::string& doc);
-// fluid::linearSolveFromJson reads the two keys back.
+                          double tolerance, const std::string& petscOptions, const std::string& doc);
+// fluid::linearSolveFromJson reads the three keys back.
+
+// The default `<family>_petsc_options` (issue 58): right preconditioning, so that KSP's relative
+// tolerance is on the true residual as the other iterative solvers' is. Momentum and the fraction
+// correction (non-symmetric, diagonally dominant at small steps): BiCGSTAB with block Jacobi (ILU(0)
+// on one rank). The pressure correction (elliptic): GMRES with hypre's BoomerAMG.
+inline constexpr const char* kPetscMomentumOptions = "-ksp_type bcgs -ksp_pc_side right -pc_type bjacobi";
+inline constexpr const char* kPetscPressureOptions =
+    "-ksp_type gmres -ksp_pc_side right -pc_type hypre -pc_hypre_type boomeramg";
+inline constexpr const char* kPetscFractionOptions = "-ksp_type bcgs -ksp_pc_side right -pc_type bjacobi";
 
 struct PressureTap {
   std::string name;

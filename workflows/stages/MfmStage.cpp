@@ -267,14 +267,14 @@ MfmStage::MfmStage() {
       .add(ParamSpec::number("courant").defaultValue(0.5).positive().doc("largest |v| dt / dx"))
       .add(
           ParamSpec::number("tolerance").defaultValue(1e-4).positive().doc("normalised residuals of a converged step"));
-  addLinearSolveParams(schema_, "momentum", "direct", 1e-6,
+  addLinearSolveParams(schema_, "momentum", "direct", 1e-6, kPetscMomentumOptions,
                        "every phase's momentum systems: the band LU, or Jacobi-preconditioned BiCGSTAB or Gauss-Seidel "
                        "sweeps to momentum_solver_tolerance (the LU where they fail); iterative on 3D grids, whose "
                        "band (nx ny) makes the LU slow");
-  addLinearSolveParams(schema_, "pressure", "direct", 1e-8,
+  addLinearSolveParams(schema_, "pressure", "direct", 1e-8, kPetscPressureOptions,
                        "the gas pressure correction: the band LU, or BiCGSTAB or Gauss-Seidel to "
                        "pressure_solver_tolerance");
-  addLinearSolveParams(schema_, "fraction", "direct", 1e-10,
+  addLinearSolveParams(schema_, "fraction", "direct", 1e-10, kPetscFractionOptions,
                        "each solids phase's fraction correction (Eq. 3.69) and closing continuity solve: the LU, or "
                        "BiCGSTAB or Gauss-Seidel to fraction_solver_tolerance, whose closing solve is then finished in "
                        "flux form so the mass balance stays exact (the LU where that would leave more than a "
@@ -320,8 +320,9 @@ void MfmStage::checkParams(const json& p, const std::string& ptr, core::json::Di
   // A spread needs two samples of one kind (report/ClosureSpread); refuse what would fail bed_compare.
   if (asksForClosureSamples(p) && p.at("closure_samples").get<int>() < 2 &&
       p.at("closure_samples_per_quantity").get<int>() < 2) {
-    d.add(ptr + tableErrorsNeededBy(p), "one closure sample gives no spread: ask for at least 2 joint samples "
-                                        "(closure_samples) or 2 per quantity (closure_samples_per_quantity)");
+    d.add(ptr + tableErrorsNeededBy(p),
+          "one closure sample gives no spread: ask for at least 2 joint samples "
+          "(closure_samples) or 2 per quantity (closure_samples_per_quantity)");
   }
 }
 
@@ -353,8 +354,8 @@ std::vector<ClosureTableRef> MfmStage::closureTables(const json& p) const {
   return refs;
 }
 
-void MfmStage::checkTableGrains(const json& p, const std::string& ptr, const ClosureTableRef& ref,
-                                const Grains& grains, core::json::Diagnostics& d) const {
+void MfmStage::checkTableGrains(const json& p, const std::string& ptr, const ClosureTableRef& ref, const Grains& grains,
+                                core::json::Diagnostics& d) const {
   if (ref.quantity != core::kRheologyQuantity) return;
   if (const auto why = rheologyGrainsProblem(p, grains); !why.empty()) d.add(ptr + ref.pointer, why);
 }
@@ -450,7 +451,8 @@ void MfmStage::run(StageContext& ctx) const {
     addAverage(summary, "mean_height", mixture);
   }
   // The colour key of comparing stages: the closure the solids ran with.
-  summary["closure"] = setup.engine.model.closure.kind() == "table" ? std::string("table") : p.at("kinetic_model").get<std::string>();
+  summary["closure"] =
+      setup.engine.model.closure.kind() == "table" ? std::string("table") : p.at("kinetic_model").get<std::string>();
   const auto& stats = engine->engine().statistics();
   summary["solver_steps"] = stats.steps;
   summary["retries"] = stats.retries;

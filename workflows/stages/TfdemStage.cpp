@@ -78,7 +78,7 @@ TfdemStage::TfdemStage() {
       // on the jet, 6 at MFiX's 0.8), and each momentum system is dominated by its transient term,
       // so Gauss-Seidel sweeps solve it for a fraction of the band LU's work (docs/tfdem.md).
       .add(ParamSpec::number("pressure_relaxation").defaultValue(1.0).min(0.0, false).max(1.0).doc("omega_P"));
-  addLinearSolveParams(schema_, "momentum", "gauss_seidel", 1e-6,
+  addLinearSolveParams(schema_, "momentum", "gauss_seidel", 1e-6, kPetscMomentumOptions,
                        "the gas momentum systems: Gauss-Seidel sweeps or Jacobi-preconditioned BiCGSTAB to "
                        "momentum_solver_tolerance (the band LU where they fail), or the band LU");
   schema_
@@ -106,7 +106,8 @@ TfdemStage::TfdemStage() {
   addSpeciesParams(schema_);
   schema_.add(ParamSpec::object("wall", contactSchema()).doc("the walls' contact coefficients (default: contact)"));
   addContactModelParams(schema_);
-  schema_.add(ParamSpec::quantity("dt", Dimension::timeDim())
+  schema_
+      .add(ParamSpec::quantity("dt", Dimension::timeDim())
                .required()
                .positive()
                .doc("DEM time step (at most t_c/10; about t_c/50 recommended)"))
@@ -202,9 +203,9 @@ void TfdemStage::run(StageContext& ctx) const {
     settling.leave = [&e, &setup, &ctx] {
       e.setGasActive(true);
       e.restartClock();
-      spdlog::info("{}: settled; mean particle height {} m", ctx.stage(),
-                   core::humanNumber(tfdem::meanParticleHeight(e.simulation().particles(), setup.vertical,
-                                                               setup.bottom), 4));
+      spdlog::info(
+          "{}: settled; mean particle height {} m", ctx.stage(),
+          core::humanNumber(tfdem::meanParticleHeight(e.simulation().particles(), setup.vertical, setup.bottom), 4));
     };
     loop.addPhase(std::move(settling));
   }
@@ -293,9 +294,8 @@ std::optional<PlannedOutput> TfdemStage::plannedOutput(const json& p) const {
   PlannedOutput out;
   out.particleFrames = true;
   const TfdemStageSetup setup = makeTfdemSetup(p);  // the run's own step count
-  out.lastFrameTime = p.at("frames").get<std::int64_t>() > 0
-                          ? static_cast<double>(setup.steps) * setup.engine.fluidDt()
-                          : 0.0;
+  out.lastFrameTime =
+      p.at("frames").get<std::int64_t>() > 0 ? static_cast<double>(setup.steps) * setup.engine.fluidDt() : 0.0;
   out.leesEdwardsShearRate = 0.0;
   std::int64_t count = 0;
   for (const auto& s : p.at("species")) count += s.at("count").get<std::int64_t>();
