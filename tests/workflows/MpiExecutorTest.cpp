@@ -94,4 +94,48 @@ TEST(MpiExecutor, BadConfigMakesEveryRankExitTwo) {
   EXPECT_FALSE(fs::exists(work.path() / "results"));
 }
 
+// The fluid solver petsc under the MPI executor (issue 58): each worker rank initialises PETSc on
+// its own (PETSC_COMM_WORLD = MPI_COMM_SELF: the ranks reach their first solve at different times,
+// so nothing collective may happen there), and every rank finalises it before MPI. Two instances of
+// the Goldschmidt smoke bed on two worker ranks at once: the run ends cleanly, and each instance's
+// summary is the serial run's to the bit (KSP on one rank is deterministic).
+TEST(MpiExecutor, PetscSolvesOnWorkerRanksAsItDoesSerially) {
+  TempDir serial;
+  TempDir parallel;
+  nlohmann::json config = nlohmann::json::parse(readText(sourceDir() / "configs/goldschmidt-mono-smoke.json"));
+  config["stages"].erase("heights");
+  auto& params = config["stages"]["bed"]["params"];
+  params["duration"] = "0.03 s";
+  params["average_from"] = "0.01 s";
+  params["frames"] = 1;
+  for (const char* family : {"momentum", "pressure", "fraction"}) params[std::string(family) + "_solver"] = "petsc";
+  writeText(serial.path() / "wf.json", config.dump(2));
+  writeText(parallel.path() / "wf.json", config.dump(2));
+  auto s = runGrainbridge(serial.path(), "run wf.json");
+  ASSERT_EQ(s.exitCode, 0) << s.output;
+  auto p =
+      runCommand("cd '" + parallel.path().string() +
+                 "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
+                 "mpirun -np 3 --oversubscribe " +
+                 grainbridgeBinary() + " run wf.json");
+  ASSERT_EQ(p.exitCode, 0) << p.output;
+  const auto summaries = [](const fs::path& dbFile) {
+    auto database = db::Database::openReadOnly(dbFile);
+    auto st = database.prepare("SELECT summary_json, rank FROM runs WHERE stage = 'bed' ORDER BY key");
+    std::vector<std::pair<std::string, long long>> out;
+    while (st.step()) out.emplace_back(st.columnText(0), st.columnInt64(1));
+    return out;
+  };
+  const auto a = summaries(serial.path() / "results/goldschmidt-mono-smoke/grainbridge.sqlite");
+  const auto b = summaries(parallel.path() / "results/goldschmidt-mono-smoke/grainbridge.sqlite");
+  ASSERT_EQ(a.size(), 2u);
+  ASSERT_EQ(b.size(), 2u);
+  std::set<long long> workers;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].first, b[k].first);
+    workers.insert(b[k].second);
+  }
+  EXPECT_FALSE(workers.contains(0));  // rank 0 schedules
+}
+
 }  // namespace
