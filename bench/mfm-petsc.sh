@@ -2,8 +2,8 @@
 # The fluid solver petsc on one rank against the solvers a config ships with (issue 58): the bed
 # of bench/mfm-goldschmidt.sh (--bed mono: the 2D Goldschmidt bed, whose band LU is 15 wide; --bed
 # combine: configs/combine.json, 3D, 40 x 8 x 10, BiCGSTAB for momentum and pressure) run three
-# times in one invocation on one core: as shipped, with `pressure_solver` petsc (GMRES with hypre's
-# BoomerAMG: the default pressure_petsc_options), and with every family petsc. Prints each run's
+# times in one invocation on one core: as shipped, with `pressure_solver` petsc (the default
+# pressure_petsc_options: BiCGSTAB with block Jacobi), and with every family petsc. Prints each run's
 # wall time per simulated second and, last, `petsc_pressure_over_shipped = X` (X < 1: PETSc's
 # pressure solve is the faster).
 #

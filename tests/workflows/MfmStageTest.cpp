@@ -642,8 +642,8 @@ TEST(MfmStage, APressureOutletLetsItsSolidsBackflowIntoAnEmptyInterior) {
 }
 
 // `<family>_solver: petsc` (issue 58) on one rank: the Goldschmidt smoke bed's first 0.1 s with
-// every family through PETSc's KSP (the default options: BiCGSTAB with block Jacobi for momentum
-// and the fraction correction, GMRES with BoomerAMG for the pressure) against the band LU. KSP
+// every family through PETSc's KSP (the default options: BiCGSTAB with block Jacobi, ILU(0) on one
+// rank) against the band LU. KSP
 // stops at a relative residual of the family's tolerance (1e-6 momentum, 1e-8 pressure, 1e-10
 // fraction), and an outer iteration stops at normalised residuals of 1e-4, so the runs differ by
 // what those tolerances leave, not by round-off: measured 4e-7 of the bed's height (the same 130

@@ -31,13 +31,13 @@ void addLinearSolveParams(params::ParamSchema& s, const std::string& family, con
                           double tolerance, const std::string& petscOptions, const std::string& doc);
 // fluid::linearSolveFromJson reads the three keys back.
 
-// The default `<family>_petsc_options` (issue 58): right preconditioning, so that KSP's relative
-// tolerance is on the true residual as the other iterative solvers' is. Momentum and the fraction
-// correction (non-symmetric, diagonally dominant at small steps): BiCGSTAB with block Jacobi (ILU(0)
-// on one rank). The pressure correction (elliptic): GMRES with hypre's BoomerAMG.
+// The default `<family>_petsc_options` (issue 58): BiCGSTAB with block Jacobi (ILU(0) within each
+// rank's block), right-preconditioned so that KSP's relative tolerance is on the true residual as
+// the other iterative solvers' is. Measured on one rank (bench/README "Multi-fluid through PETSc
+// on one rank"), it was the fastest for the pressure correction too: hypre's BoomerAMG, set up
+// again at every solve, cost more than it saved on 3,200 and on 72,000 cells.
 inline constexpr const char* kPetscMomentumOptions = "-ksp_type bcgs -ksp_pc_side right -pc_type bjacobi";
-inline constexpr const char* kPetscPressureOptions =
-    "-ksp_type gmres -ksp_pc_side right -pc_type hypre -pc_hypre_type boomeramg";
+inline constexpr const char* kPetscPressureOptions = "-ksp_type bcgs -ksp_pc_side right -pc_type bjacobi";
 inline constexpr const char* kPetscFractionOptions = "-ksp_type bcgs -ksp_pc_side right -pc_type bjacobi";
 
 struct PressureTap {
