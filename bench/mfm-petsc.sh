@@ -3,7 +3,7 @@
 # of bench/mfm-goldschmidt.sh (--bed mono: the 2D Goldschmidt bed, whose band LU is 15 wide; --bed
 # combine: configs/combine.json, 3D, 40 x 8 x 10, BiCGSTAB for momentum and pressure) run three
 # times in one invocation on one core: as shipped, with `pressure_solver` petsc (the default
-# pressure_petsc_options: BiCGSTAB with block Jacobi), and with every family petsc. Prints each run's
+# pressure_petsc_options: BiCGSTAB with point Jacobi), and with every family petsc. Prints each run's
 # wall time per simulated second and, last, `petsc_pressure_over_shipped = X` (X < 1: PETSc's
 # pressure solve is the faster).
 #

@@ -267,14 +267,14 @@ MfmStage::MfmStage() {
       .add(ParamSpec::number("courant").defaultValue(0.5).positive().doc("largest |v| dt / dx"))
       .add(
           ParamSpec::number("tolerance").defaultValue(1e-4).positive().doc("normalised residuals of a converged step"));
-  addLinearSolveParams(schema_, "momentum", "direct", 1e-6, kPetscMomentumOptions,
+  addLinearSolveParams(schema_, "momentum", "direct", 1e-6, kPetscOptions,
                        "every phase's momentum systems: the band LU, or Jacobi-preconditioned BiCGSTAB or Gauss-Seidel "
                        "sweeps to momentum_solver_tolerance (the LU where they fail); iterative on 3D grids, whose "
                        "band (nx ny) makes the LU slow");
-  addLinearSolveParams(schema_, "pressure", "direct", 1e-8, kPetscPressureOptions,
+  addLinearSolveParams(schema_, "pressure", "direct", 1e-8, kPetscOptions,
                        "the gas pressure correction: the band LU, or BiCGSTAB or Gauss-Seidel to "
                        "pressure_solver_tolerance");
-  addLinearSolveParams(schema_, "fraction", "direct", 1e-10, kPetscFractionOptions,
+  addLinearSolveParams(schema_, "fraction", "direct", 1e-10, kPetscOptions,
                        "each solids phase's fraction correction (Eq. 3.69) and closing continuity solve: the LU, or "
                        "BiCGSTAB or Gauss-Seidel to fraction_solver_tolerance, whose closing solve is then finished in "
                        "flux form so the mass balance stays exact (the LU where that would leave more than a "

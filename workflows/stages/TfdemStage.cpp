@@ -78,7 +78,7 @@ TfdemStage::TfdemStage() {
       // on the jet, 6 at MFiX's 0.8), and each momentum system is dominated by its transient term,
       // so Gauss-Seidel sweeps solve it for a fraction of the band LU's work (docs/tfdem.md).
       .add(ParamSpec::number("pressure_relaxation").defaultValue(1.0).min(0.0, false).max(1.0).doc("omega_P"));
-  addLinearSolveParams(schema_, "momentum", "gauss_seidel", 1e-6, kPetscMomentumOptions,
+  addLinearSolveParams(schema_, "momentum", "gauss_seidel", 1e-6, kPetscOptions,
                        "the gas momentum systems: Gauss-Seidel sweeps or Jacobi-preconditioned BiCGSTAB to "
                        "momentum_solver_tolerance (the band LU where they fail), or the band LU");
   schema_
