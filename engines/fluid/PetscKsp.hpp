@@ -3,8 +3,10 @@
 // `<family>_solver: petsc` with `<family>_petsc_options`, a PETSc options string such as
 // "-ksp_type gmres -ksp_pc_side right -pc_type hypre". Each options string is read into its own
 // options database, so the families (momentum, pressure, fraction) never see each other's options,
-// and nothing comes from the command line, PETSC_OPTIONS or ~/.petscrc: a workflow config says all
-// of it. One rank for now: the matrix is PETSc's sequential AIJ on MPI_COMM_SELF.
+// and no solver option comes from the command line, PETSC_OPTIONS or ~/.petscrc: a workflow config
+// says all of it. PETSC_OPTIONS still reaches PETSc's global options, which is how a user profiles
+// the solves: PETSC_OPTIONS="-log_view :log.txt" grainbridge run ... One rank for now: the matrix is
+// PETSc's sequential AIJ on MPI_COMM_SELF.
 //
 // PETSc is initialised at the first use, with PETSC_COMM_WORLD = MPI_COMM_SELF (each rank on its
 // own: the ranks of a multi-instance run reach their first solve at different times) and without
