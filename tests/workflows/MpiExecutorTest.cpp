@@ -25,6 +25,14 @@ const char* kWorkflow = R"({
   }
 })";
 
+// `grainbridge <args>` in `dir` under mpirun with `ranks` ranks (as root in CI, more ranks than
+// cores).
+CommandResult runUnderMpirun(const fs::path& dir, int ranks, const std::string& args) {
+  return runCommand("cd '" + dir.string() +
+                    "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np " +
+                    std::to_string(ranks) + " --oversubscribe " + grainbridgeBinary() + " " + args);
+}
+
 // Rows of every table as sorted text, with per-process columns left out.
 std::multiset<std::string> rows(const fs::path& dbFile) {
   auto database = db::Database::openReadOnly(dbFile);
@@ -56,11 +64,7 @@ TEST(MpiExecutor, TwoRanksGiveTheSameRowsAsSerial) {
   writeText(parallel.path() / "wf.json", kWorkflow);
   auto s = runGrainbridge(serial.path(), "run wf.json");
   ASSERT_EQ(s.exitCode, 0) << s.output;
-  auto p =
-      runCommand("cd '" + parallel.path().string() +
-                 "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-                 "mpirun -np 2 --oversubscribe " +
-                 grainbridgeBinary() + " run wf.json");
+  auto p = runUnderMpirun(parallel.path(), 2, "run wf.json");
   ASSERT_EQ(p.exitCode, 0) << p.output;
 
   const auto a = rows(serial.path() / "results/wf/grainbridge.sqlite");
@@ -76,10 +80,7 @@ TEST(MpiExecutor, TwoRanksGiveTheSameRowsAsSerial) {
   EXPECT_EQ(st.columnInt64(0), 0);
 
   // A second MPI run finds everything cached.
-  auto again =
-      runCommand("cd '" + parallel.path().string() +
-                 "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 --oversubscribe " +
-                 grainbridgeBinary() + " run wf.json");
+  auto again = runUnderMpirun(parallel.path(), 2, "run wf.json");
   ASSERT_EQ(again.exitCode, 0) << again.output;
   EXPECT_NE(again.output.find("nothing to do"), std::string::npos) << again.output;
 }
@@ -87,9 +88,7 @@ TEST(MpiExecutor, TwoRanksGiveTheSameRowsAsSerial) {
 TEST(MpiExecutor, BadConfigMakesEveryRankExitTwo) {
   TempDir work;
   writeText(work.path() / "wf.json", R"({"name": "wf", "stages": {"g": {"type": "nope"}}})");
-  auto r = runCommand("cd '" + work.path().string() +
-                      "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 --oversubscribe " +
-                      grainbridgeBinary() + " run wf.json");
+  auto r = runUnderMpirun(work.path(), 2, "run wf.json");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_FALSE(fs::exists(work.path() / "results"));
 }
@@ -113,11 +112,7 @@ TEST(MpiExecutor, PetscSolvesOnWorkerRanksAsItDoesSerially) {
   writeText(parallel.path() / "wf.json", config.dump(2));
   auto s = runGrainbridge(serial.path(), "run wf.json");
   ASSERT_EQ(s.exitCode, 0) << s.output;
-  auto p =
-      runCommand("cd '" + parallel.path().string() +
-                 "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-                 "mpirun -np 3 --oversubscribe " +
-                 grainbridgeBinary() + " run wf.json");
+  auto p = runUnderMpirun(parallel.path(), 3, "run wf.json");
   ASSERT_EQ(p.exitCode, 0) << p.output;
   const auto summaries = [](const fs::path& dbFile) {
     auto database = db::Database::openReadOnly(dbFile);
